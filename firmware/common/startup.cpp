@@ -1,0 +1,67 @@
+// Shared C++ runtime start: .data copy, .bss zeroing, static constructors, main(), and the exit
+// status through semihosting. Also measures the stack high-water mark by painting the stack.
+// Symbols come from firmware/common/{cortex_m,riscv}.ld.
+#include "common/runtime.hpp"
+#include "semihost/semihost.hpp"
+
+extern "C" {
+extern uint32_t __data_start__[];
+extern uint32_t __data_end__[];
+extern uint32_t __data_load__[];
+extern uint32_t __bss_start__[];
+extern uint32_t __bss_end__[];
+extern uint32_t __stack_bottom__[];
+extern uint32_t __stack_top__[];
+extern void (*const __init_array_start[])();
+extern void (*const __init_array_end[])();
+}
+
+int main();
+
+namespace {
+
+constexpr uint32_t kStackPaint = 0x5AC3A55Cu;
+constexpr uintptr_t kPaintMargin = 64;  // bytes below the current sp left unpainted (our own frame)
+
+void paint_stack() {
+    uint32_t here = 0;
+    const uintptr_t limit = (reinterpret_cast<uintptr_t>(&here) - kPaintMargin) & ~uintptr_t{3};
+    for (uint32_t* p = __stack_bottom__; reinterpret_cast<uintptr_t>(p) < limit; ++p) *p = kStackPaint;
+}
+
+uint32_t stack_used_bytes() {
+    const uint32_t* p = __stack_bottom__;
+    while (p < __stack_top__ && *p == kStackPaint) ++p;
+    return static_cast<uint32_t>(reinterpret_cast<uintptr_t>(__stack_top__) - reinterpret_cast<uintptr_t>(p));
+}
+
+}  // namespace
+
+extern "C" void hider_reset() {
+    const uint32_t* src = __data_load__;
+    for (uint32_t* dst = __data_start__; dst < __data_end__; ++dst, ++src) *dst = *src;
+    for (uint32_t* dst = __bss_start__; dst < __bss_end__; ++dst) *dst = 0;
+    paint_stack();
+    for (auto* ctor = __init_array_start; ctor < __init_array_end; ++ctor) (*ctor)();
+
+    const int status = main();
+
+    namespace sh = hider::semihost;
+    sh::print("hider: stack high-water ");
+    sh::print_u32(stack_used_bytes());
+    sh::print(" of ");
+    sh::print_u32(static_cast<uint32_t>(reinterpret_cast<uintptr_t>(__stack_top__) -
+                                        reinterpret_cast<uintptr_t>(__stack_bottom__)));
+    sh::print(" bytes\n");
+    sh::exit(status);
+}
+
+extern "C" void hider_fault(uint32_t cause, uint32_t pc) {
+    namespace sh = hider::semihost;
+    sh::print("hider: unexpected exception/trap, cause ");
+    sh::print_hex32(cause);
+    sh::print(" pc ");
+    sh::print_hex32(pc);
+    sh::print("\n");
+    sh::exit(3);
+}

@@ -1,0 +1,86 @@
+// The few freestanding helpers lib/ needs instead of the C++ standard library: Span, BoundedList,
+// min/max/swap/clamp, is_same, and HIDER_ASSERT. Only <stdint.h>, <stddef.h>, <limits.h> are allowed.
+#pragma once
+#include <stddef.h>
+#include <stdint.h>
+#include <limits.h>
+
+static_assert((-3 >> 1) == -2, "lib/ relies on arithmetic right shift of negative values");
+static_assert(sizeof(int32_t) == 4 && sizeof(int64_t) == 8, "lib/ needs exact-width integers");
+
+/// Hook called when HIDER_ASSERT fails on a device build; firmware may override the weak default.
+extern "C" void hider_assert_fail(const char* file, int line);
+
+#if defined(HIDER_ENABLE_ASSERTS)
+#define HIDER_ASSERT(cond) ((cond) ? (void)0 : hider_assert_fail(__FILE__, __LINE__))
+#else
+#define HIDER_ASSERT(cond) ((void)0)
+#endif
+
+namespace hider {
+
+template <class T> constexpr T min(T a, T b) { return b < a ? b : a; }
+template <class T> constexpr T max(T a, T b) { return a < b ? b : a; }
+template <class T> constexpr T clamp(T v, T lo, T hi) { return v < lo ? lo : (hi < v ? hi : v); }
+template <class T> constexpr void swap(T& a, T& b) { T t = a; a = b; b = t; }
+template <class T> constexpr T abs_value(T v) { return v < 0 ? -v : v; }
+
+template <class A, class B> struct IsSame { static constexpr bool value = false; };
+template <class A> struct IsSame<A, A> { static constexpr bool value = true; };
+
+/// Non-owning view of `size` contiguous elements (pointer + size). Borrowed, never freed.
+template <class T>
+class Span {
+public:
+    constexpr Span() = default;
+    constexpr Span(T* data, size_t size) : data_(data), size_(size) {}
+    template <size_t N> constexpr Span(T (&array)[N]) : data_(array), size_(N) {}
+    /// A Span<const T> views the same elements as a Span<T>.
+    template <class U, class = decltype(static_cast<T*>(static_cast<U*>(nullptr)))>
+    constexpr Span(Span<U> other) : data_(other.data()), size_(other.size()) {}
+
+    constexpr T* data() const { return data_; }
+    constexpr size_t size() const { return size_; }
+    constexpr bool empty() const { return size_ == 0; }
+    constexpr T& operator[](size_t i) const { return data_[i]; }
+    constexpr T* begin() const { return data_; }
+    constexpr T* end() const { return data_ + size_; }
+
+private:
+    T* data_ = nullptr;
+    size_t size_ = 0;
+};
+
+/// Caller-owned storage of fixed capacity that lib/ fills: pointer + capacity + size, so functions
+/// take it without a template on the capacity. Pushing into a full list fails and counts the drop.
+template <class T>
+class BoundedList {
+public:
+    constexpr BoundedList() = default;
+    constexpr BoundedList(T* storage, size_t capacity) : data_(storage), capacity_(capacity) {}
+    template <size_t N> constexpr BoundedList(T (&array)[N]) : data_(array), capacity_(N) {}
+
+    /// Appends `v`; returns false (and counts a drop) when full.
+    bool push_back(const T& v) {
+        if (size_ == capacity_) { ++dropped_; return false; }
+        data_[size_++] = v;
+        if (size_ > high_water_) high_water_ = size_;
+        return true;
+    }
+    void clear() { size_ = 0; dropped_ = 0; }
+    size_t size() const { return size_; }
+    size_t capacity() const { return capacity_; }
+    size_t dropped() const { return dropped_; }
+    size_t high_water() const { return high_water_; }
+    T& operator[](size_t i) const { return data_[i]; }
+    T* data() const { return data_; }
+
+private:
+    T* data_ = nullptr;
+    size_t capacity_ = 0;
+    size_t size_ = 0;
+    size_t dropped_ = 0;
+    size_t high_water_ = 0;
+};
+
+}  // namespace hider

@@ -1,0 +1,141 @@
+// Fixed-point numbers: Fixed<F> is a signed Q(31-F).F value in an int32_t, plus the exact integer
+// helpers the pipeline is built from. Rounding rules (the only ones in lib/, see CONVENTIONS.md):
+//   * products (operator*, mul, mul_shift) floor: 64-bit product, then arithmetic shift (toward -inf);
+//   * quotients (div, recip, div_round) round to nearest, ties away from zero, and saturate;
+//   * isqrt floors.
+#pragma once
+#include <hider/base.hpp>
+
+namespace hider {
+
+/// Exact 32x32 -> 64-bit signed product. The single place a target-specific multiply would go.
+constexpr int64_t mul_wide(int32_t a, int32_t b) { return static_cast<int64_t>(a) * b; }
+
+/// floor(a * b / 2^shift) for 0 <= shift < 63, computed exactly in 64 bits.
+constexpr int64_t mul_shift(int32_t a, int32_t b, int shift) { return mul_wide(a, b) >> shift; }
+
+/// n / d rounded to nearest, ties away from zero; d == 0 saturates to the sign of n (0 / 0 = 0).
+/// The result is exact for every int64 pair except INT64_MIN / -1, which saturates to INT64_MAX.
+constexpr int64_t div_round(int64_t n, int64_t d) {
+    if (d == 0) return n > 0 ? INT64_MAX : (n < 0 ? INT64_MIN : 0);
+    if (d == -1 && n == INT64_MIN) return INT64_MAX;
+    const uint64_t un = n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
+    const uint64_t ud = d < 0 ? 0 - static_cast<uint64_t>(d) : static_cast<uint64_t>(d);
+    uint64_t q = un / ud;
+    const uint64_t r = un - q * ud;
+    if (r >= ud - r) ++q;  // r >= d/2 without overflow: ties go away from zero
+    const bool negative = (n < 0) != (d < 0);
+    if (!negative) return q > static_cast<uint64_t>(INT64_MAX) ? INT64_MAX : static_cast<int64_t>(q);
+    return q > static_cast<uint64_t>(INT64_MAX) ? INT64_MIN : -static_cast<int64_t>(q);
+}
+
+/// floor(n / d) for d > 0 (exact; C++ '/' truncates toward zero instead).
+constexpr int64_t div_floor(int64_t n, int64_t d) {
+    const int64_t q = n / d;
+    return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+/// Saturates a 64-bit value into int32_t.
+constexpr int32_t saturate32(int64_t v) {
+    return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : static_cast<int32_t>(v));
+}
+
+/// Number of leading zero bits of a 64-bit value (64 for 0).
+constexpr int clz64(uint64_t v) {
+    int n = 0;
+    if (v == 0) return 64;
+    while ((v & (uint64_t{1} << 63)) == 0) { v <<= 1; ++n; }
+    return n;
+}
+
+/// floor(sqrt(v)) for any 64-bit unsigned v; bit-by-bit, 32 iterations.
+constexpr uint32_t isqrt64(uint64_t v) {
+    uint64_t root = 0;
+    uint64_t bit = uint64_t{1} << 62;
+    while (bit > v) bit >>= 2;
+    while (bit != 0) {
+        if (v >= root + bit) { v -= root + bit; root = (root >> 1) + bit; }
+        else { root >>= 1; }
+        bit >>= 2;
+    }
+    return static_cast<uint32_t>(root);
+}
+
+/// Signed fixed-point number with F fraction bits held in an int32_t (value = raw / 2^F).
+template <int F>
+class Fixed {
+    static_assert(F > 0 && F < 31, "fraction bits out of range");
+
+public:
+    static constexpr int kFracBits = F;
+    static constexpr int32_t kOne = int32_t{1} << F;
+
+    constexpr Fixed() = default;
+    static constexpr Fixed from_raw(int32_t r) { Fixed x; x.raw_ = r; return x; }
+    /// Precondition: i fits the format (|i| < 2^(31-F)).
+    static constexpr Fixed from_int(int32_t i) { return from_raw(i * kOne); }
+    /// num / den rounded to nearest (ties away from zero), saturating.
+    static constexpr Fixed from_ratio(int64_t num, int64_t den) {
+        return from_raw(saturate32(div_round(num * kOne, den)));
+    }
+    static constexpr Fixed max() { return from_raw(INT32_MAX); }
+    static constexpr Fixed min() { return from_raw(INT32_MIN); }
+
+    constexpr int32_t raw() const { return raw_; }
+    /// Largest integer <= value.
+    constexpr int32_t floor_int() const { return raw_ >> F; }
+    /// Nearest integer, ties toward +inf.
+    constexpr int32_t round_int() const { return static_cast<int32_t>((int64_t{raw_} + (kOne >> 1)) >> F); }
+
+    friend constexpr Fixed operator+(Fixed a, Fixed b) { return from_raw(a.raw_ + b.raw_); }
+    friend constexpr Fixed operator-(Fixed a, Fixed b) { return from_raw(a.raw_ - b.raw_); }
+    friend constexpr Fixed operator-(Fixed a) { return from_raw(-a.raw_); }
+    /// Product, floored (toward -inf). Precondition: the result fits the format.
+    friend constexpr Fixed operator*(Fixed a, Fixed b) {
+        return from_raw(static_cast<int32_t>(mul_shift(a.raw_, b.raw_, F)));
+    }
+    constexpr Fixed& operator+=(Fixed b) { raw_ += b.raw_; return *this; }
+    constexpr Fixed& operator-=(Fixed b) { raw_ -= b.raw_; return *this; }
+    friend constexpr bool operator==(Fixed a, Fixed b) { return a.raw_ == b.raw_; }
+    friend constexpr bool operator!=(Fixed a, Fixed b) { return a.raw_ != b.raw_; }
+    friend constexpr bool operator<(Fixed a, Fixed b) { return a.raw_ < b.raw_; }
+    friend constexpr bool operator<=(Fixed a, Fixed b) { return a.raw_ <= b.raw_; }
+    friend constexpr bool operator>(Fixed a, Fixed b) { return a.raw_ > b.raw_; }
+    friend constexpr bool operator>=(Fixed a, Fixed b) { return a.raw_ >= b.raw_; }
+
+private:
+    int32_t raw_ = 0;
+};
+
+using Q16 = Fixed<16>;  ///< world and view coordinates, distances
+using Q30 = Fixed<30>;  ///< unit vectors, rotation matrices, sin/cos
+
+/// Product a * b, floored; the named form of operator*.
+template <int F> constexpr Fixed<F> mul(Fixed<F> a, Fixed<F> b) { return a * b; }
+
+/// Quotient a / b rounded to nearest (ties away from zero); b == 0 or overflow saturates.
+template <int F> constexpr Fixed<F> div(Fixed<F> a, Fixed<F> b) {
+    return Fixed<F>::from_raw(saturate32(div_round(int64_t{a.raw()} * Fixed<F>::kOne, b.raw())));
+}
+
+/// 1 / a rounded to nearest; a == 0 or overflow saturates.
+template <int F> constexpr Fixed<F> recip(Fixed<F> a) {
+    return Fixed<F>::from_raw(saturate32(div_round(int64_t{Fixed<F>::kOne} * Fixed<F>::kOne, a.raw())));
+}
+
+/// floor(sqrt(a)) in the same format; a < 0 gives 0.
+template <int F> constexpr Fixed<F> isqrt(Fixed<F> a) {
+    if (a.raw() <= 0) return Fixed<F>::from_raw(0);
+    return Fixed<F>::from_raw(static_cast<int32_t>(isqrt64(static_cast<uint64_t>(a.raw()) << F)));
+}
+
+/// Converts between formats: more fraction bits multiply exactly (saturating), fewer floor.
+template <int G, int F> constexpr Fixed<G> fixed_cast(Fixed<F> a) {
+    if constexpr (G >= F) {
+        return Fixed<G>::from_raw(saturate32(int64_t{a.raw()} * (int64_t{1} << (G - F))));
+    } else {
+        return Fixed<G>::from_raw(a.raw() >> (F - G));
+    }
+}
+
+}  // namespace hider

@@ -1,0 +1,101 @@
+// Rigid transforms: a Q30 rotation matrix plus a Q16 translation (no scale: meshes are baked into
+// world units). Rotation about the axes from Angle, composition, and gluLookAt's view transform.
+#pragma once
+#include <hider/angle.hpp>
+#include <hider/status.hpp>
+#include <hider/vec.hpp>
+
+namespace hider {
+
+/// 3x3 matrix of Q30 entries, row-major; used for rotations.
+struct Mat3 {
+    Q30 m[3][3];
+    static constexpr Mat3 identity() {
+        const Q30 o = Q30::from_raw(Q30::kOne), z = Q30::from_raw(0);
+        return {{{o, z, z}, {z, o, z}, {z, z, o}}};
+    }
+};
+
+/// p' = rot * p + trans. Precondition for apply(): |p| components < 2^13 units, result < 2^15.
+struct Transform {
+    Mat3 rot = Mat3::identity();
+    Vec3q16 trans{};
+};
+
+namespace detail {
+/// Row r of a Q30 matrix times a Q16 vector, plus a Q16 offset; one floor at the end.
+constexpr Q16 row_dot(const Q30 (&row)[3], Vec3q16 p, Q16 offset) {
+    const int64_t acc = mul_wide(row[0].raw(), p.x.raw()) + mul_wide(row[1].raw(), p.y.raw()) +
+                        mul_wide(row[2].raw(), p.z.raw()) + int64_t{offset.raw()} * Q30::kOne;
+    return Q16::from_raw(static_cast<int32_t>(acc >> 30));
+}
+}  // namespace detail
+
+/// Applies t to point p (rotation then translation), floored once per component.
+constexpr Vec3q16 apply(const Transform& t, Vec3q16 p) {
+    return {detail::row_dot(t.rot.m[0], p, t.trans.x), detail::row_dot(t.rot.m[1], p, t.trans.y),
+            detail::row_dot(t.rot.m[2], p, t.trans.z)};
+}
+
+/// Matrix product a * b (Q30, floored per entry).
+constexpr Mat3 mul(const Mat3& a, const Mat3& b) {
+    Mat3 r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            int64_t acc = 0;
+            for (int k = 0; k < 3; ++k) acc += mul_wide(a.m[i][k].raw(), b.m[k][j].raw());
+            r.m[i][j] = Q30::from_raw(static_cast<int32_t>(acc >> 30));
+        }
+    return r;
+}
+
+/// a after b: (a * b)(p) = a(b(p)).
+constexpr Transform compose(const Transform& a, const Transform& b) {
+    return {mul(a.rot, b.rot), apply(a, b.trans)};
+}
+
+/// Rotation by `angle` about the x, y or z axis (right-handed, counter-clockwise looking down the axis).
+constexpr Mat3 rotation_x(Angle a) {
+    const Q30 c = cos(a), s = sin(a), o = Q30::from_raw(Q30::kOne), z = Q30::from_raw(0);
+    return {{{o, z, z}, {z, c, -s}, {z, s, c}}};
+}
+constexpr Mat3 rotation_y(Angle a) {
+    const Q30 c = cos(a), s = sin(a), o = Q30::from_raw(Q30::kOne), z = Q30::from_raw(0);
+    return {{{c, z, s}, {z, o, z}, {-s, z, c}}};
+}
+constexpr Mat3 rotation_z(Angle a) {
+    const Q30 c = cos(a), s = sin(a), o = Q30::from_raw(Q30::kOne), z = Q30::from_raw(0);
+    return {{{c, -s, z}, {s, c, z}, {z, z, o}}};
+}
+
+/// Smallest sin(angle between view direction and up) look_at accepts: 2^-12 (about 0.014 degrees).
+constexpr int32_t kMinUpSinQ30 = int32_t{1} << 18;
+
+/// gluLookAt: the world-to-view transform with the eye at the origin looking down -Z, up
+/// re-orthogonalised as GLU does (f = norm(target - eye), s = norm(f x up), u = s x f).
+/// Returns invalid_argument if target == eye, up is zero, or up is (nearly) parallel to the view.
+inline Status look_at(Vec3q16 eye, Vec3q16 target, Vec3q16 up, Transform& out) {
+    Vec3q30 f{}, upn{}, s{};
+    const Vec3q16 d = target - eye;
+    if (!normalize({d.x.raw(), d.y.raw(), d.z.raw()}, f)) return Status::invalid_argument;
+    if (!normalize({up.x.raw(), up.y.raw(), up.z.raw()}, upn)) return Status::invalid_argument;
+    const Vec3i64 side{mul_wide(f.y.raw(), upn.z.raw()) - mul_wide(f.z.raw(), upn.y.raw()),
+                       mul_wide(f.z.raw(), upn.x.raw()) - mul_wide(f.x.raw(), upn.z.raw()),
+                       mul_wide(f.x.raw(), upn.y.raw()) - mul_wide(f.y.raw(), upn.x.raw())};
+    const int64_t sin_q60 = max(abs_value(side.x), max(abs_value(side.y), abs_value(side.z)));
+    if (sin_q60 < (int64_t{kMinUpSinQ30} << 30)) return Status::invalid_argument;
+    if (!normalize(side, s)) return Status::invalid_argument;
+    const Vec3i64 upo{mul_wide(s.y.raw(), f.z.raw()) - mul_wide(s.z.raw(), f.y.raw()),
+                      mul_wide(s.z.raw(), f.x.raw()) - mul_wide(s.x.raw(), f.z.raw()),
+                      mul_wide(s.x.raw(), f.y.raw()) - mul_wide(s.y.raw(), f.x.raw())};
+    Vec3q30 u{};
+    if (!normalize(upo, u)) return Status::invalid_argument;
+    out.rot = {{{s.x, s.y, s.z}, {u.x, u.y, u.z}, {-f.x, -f.y, -f.z}}};
+    const Q16 zero = Q16::from_raw(0);
+    const Vec3q16 neg_eye{-eye.x, -eye.y, -eye.z};
+    out.trans = {detail::row_dot(out.rot.m[0], neg_eye, zero), detail::row_dot(out.rot.m[1], neg_eye, zero),
+                 detail::row_dot(out.rot.m[2], neg_eye, zero)};
+    return Status::ok;
+}
+
+}  // namespace hider

@@ -1,0 +1,71 @@
+// A triangle mesh as lib/ draws it: world-space Q16 positions, triangles of uint16 indices, and per
+// triangle an optional unit normal (Q14, for headlight shading) and face id. Baked data is checked
+// once by validate(); the drawing code then trusts indices. Vertex projection fills a caller array.
+#pragma once
+#include <hider/view.hpp>
+
+namespace hider {
+
+struct Tri {
+    uint16_t v[3];
+};
+
+/// Borrowed views of the mesh arrays (const data in flash on a device).
+struct Mesh {
+    Span<const Vec3q16> positions;
+    Span<const Tri> tris;
+    Span<const Normal14> normals;  ///< one per triangle, or empty (faces then shade at full brightness)
+    Span<const uint32_t> ids;      ///< one per triangle, or empty (id = triangle index + 1)
+
+    uint32_t id(size_t tri) const { return ids.empty() ? static_cast<uint32_t>(tri + 1) : ids[tri]; }
+};
+
+/// Most vertices a mesh may index with uint16_t.
+constexpr size_t kMaxMeshVertices = 65536;
+
+/// Checks a mesh once (sizes, every index, every coordinate inside the world range).
+/// Returns bad_data for a wrong size or index, out_of_range for a coordinate. Cost: O(vertices + triangles).
+inline Status validate(const Mesh& m) {
+    if (m.positions.size() > kMaxMeshVertices) return Status::bad_data;
+    if (!m.normals.empty() && m.normals.size() != m.tris.size()) return Status::bad_data;
+    if (!m.ids.empty() && m.ids.size() != m.tris.size()) return Status::bad_data;
+    for (const Tri& t : m.tris)
+        for (uint16_t i : t.v)
+            if (i >= m.positions.size()) return Status::bad_data;
+    for (const Vec3q16& p : m.positions) {
+        const int32_t c[3] = {p.x.raw(), p.y.raw(), p.z.raw()};
+        for (int32_t e : c)
+            if (e <= -kWorldLimitRaw || e >= kWorldLimitRaw) return Status::out_of_range;
+    }
+    return Status::ok;
+}
+
+/// Smallest and largest depth among drawable projected vertices (for depth shading).
+struct DepthRange {
+    uint32_t min = kDepthFar, max = kDepthNear;
+};
+
+/// Transforms and projects every position into `out` (same index); vertices outside a clip plane get
+/// their `outside` bits and are clipped per triangle later. Returns invalid_argument if out is too
+/// small. Precondition: validate(mesh) == ok. Cost per vertex: 9 multiplies, 3 divisions.
+inline Status project_vertices(const View& view, Span<const Vec3q16> positions, Span<ScreenVertex> out,
+                               DepthRange* range = nullptr) {
+    if (out.size() < positions.size()) return Status::invalid_argument;
+    DepthRange r;
+    for (size_t i = 0; i < positions.size(); ++i) {
+        const ViewPoint p = to_view_point(view, positions[i]);
+        const uint8_t code = outcode(view, p);
+        if (code != 0) {
+            out[i] = ScreenVertex{};
+            out[i].outside = code;
+            continue;
+        }
+        out[i] = project(view, p);
+        r.min = min(r.min, out[i].z);
+        r.max = max(r.max, out[i].z);
+    }
+    if (range != nullptr) *range = r;
+    return Status::ok;
+}
+
+}  // namespace hider

@@ -1,0 +1,43 @@
+// Inner loops over one row span [x0, x1). Setup happens outside; the body is a load, a compare,
+// two stores and adds (STYLE.md s.6). Depth is a uint32 stepped by dz per pixel (wrapping add);
+// the buffer stores its top bits (DepthTraits). Smaller = nearer; ties keep what is there.
+#pragma once
+#include <hider/frame.hpp>
+
+namespace hider {
+
+/// Flat colour: the same pixel for every fragment of a triangle.
+template <class Pixel>
+struct FlatShader {
+    Pixel color;
+    Pixel operator()(uint32_t) const { return color; }
+};
+
+/// Depth-test span: writes colour and depth where the fragment is nearer. Returns pixels written
+/// when kCount (the count costs one add per written pixel; the default path does not count).
+template <bool kCount, class Depth, class Pixel, class Shader>
+inline uint32_t span_depth_test(Pixel* crow, Depth* zrow, int32_t x0, int32_t x1, uint32_t z_q32, uint32_t dz_q32,
+                                const Shader& shade) {
+    constexpr int kShift = DepthTraits<Depth>::kShift;
+    Depth* zp = zrow + x0;
+    Pixel* cp = crow + x0;
+    uint32_t written = 0;
+    for (int32_t n = x1 - x0; n > 0; --n, ++zp, ++cp, z_q32 += dz_q32) {
+        const Depth depth = static_cast<Depth>(z_q32 >> kShift);
+        if (depth < *zp) {
+            *zp = depth;
+            *cp = shade(z_q32);
+            if constexpr (kCount) ++written;
+        }
+    }
+    return written;
+}
+
+/// Painting span without a depth buffer (painter's algorithms): every pixel is written.
+template <class Pixel, class Shader>
+inline void span_paint(Pixel* crow, int32_t x0, int32_t x1, uint32_t z_q32, uint32_t dz_q32, const Shader& shade) {
+    Pixel* cp = crow + x0;
+    for (int32_t n = x1 - x0; n > 0; --n, ++cp, z_q32 += dz_q32) *cp = shade(z_q32);
+}
+
+}  // namespace hider

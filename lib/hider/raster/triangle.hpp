@@ -1,0 +1,178 @@
+// Triangle setup and exact row traversal. Screen coordinates are integers in 1/16 pixel, relative to
+// the frame centre (see CONVENTIONS.md); pixels are sampled at their centres with the top-left rule.
+// Coverage uses Pineda edge functions evaluated exactly in int32; each row's span ends are found by
+// walking the two active edges (no division per row). Depth is the plane through the three vertices,
+// stepped by dz/dx per pixel and dz/dy per row (Giesen, "Triangle rasterization in practice").
+#pragma once
+#include <hider/fixed.hpp>
+
+namespace hider {
+
+constexpr int kSubpixelBits = 4;                    ///< screen coordinates carry 4 fraction bits
+constexpr int32_t kSubpixel = 1 << kSubpixelBits;   ///< subpixels per pixel
+constexpr int32_t kCoordLimit = (1 << 14) - 1;      ///< |x|, |y| <= this keeps edge functions in int32
+constexpr int32_t kGuardBand = (1 << 14) - 64;      ///< clip planes sit here; rounding stays below the limit
+/// Depths are kept in [kDepthMargin, 2^32 - 1 - kDepthMargin] so plane-stepping error never wraps.
+constexpr uint32_t kDepthMargin = 4096;
+constexpr uint32_t kDepthNear = kDepthMargin;
+constexpr uint32_t kDepthFar = 0xFFFFFFFFu - kDepthMargin;
+
+/// A projected vertex: x, y in subpixels from the frame centre (y down), z in [kDepthNear, kDepthFar]
+/// (smaller = nearer, affine in screen space), and the clip planes it lies outside (0 = drawable).
+struct ScreenVertex {
+    int16_t x = 0;
+    int16_t y = 0;
+    uint32_t z = 0;
+    uint8_t outside = 0;
+};
+
+/// One triangle set up for traversal. setup() once; then spans(y_begin, y_end, fn) any number of
+/// times for any row ranges (bands) with identical results per row.
+class TriangleRaster {
+public:
+    /// Twice the signed area in subpixels^2 of (a, b, c); < 0 means counter-clockwise on the image.
+    static constexpr int32_t signed_area(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+        return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    }
+
+    /// Prepares (a, b, c) for a width x height frame. Returns false for zero area. Both windings are
+    /// accepted; front() tells which one it was. Cost: two 64-bit divisions.
+    bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t width, int32_t height) {
+        int32_t area = signed_area(a, b, c);
+        if (area == 0) return false;
+        front_ = area < 0;
+        const ScreenVertex* v[3] = {&a, &b, &c};
+        if (area < 0) { swap(v[1], v[2]); area = -area; }  // traverse clockwise on the image
+        for (int i = 0; i < 3; ++i) { x_[i] = v[i]->x; y_[i] = v[i]->y; }
+        width_ = width;
+        x_origin_ = kSubpixel / 2 - width * (kSubpixel / 2);
+        y_origin_ = kSubpixel / 2 - height * (kSubpixel / 2);
+        setup_depth(v, area);
+        // Rows: sort vertex indices by y.
+        int t = 0, m = 1, bt = 2;
+        if (y_[m] < y_[t]) swap(m, t);
+        if (y_[bt] < y_[m]) swap(bt, m);
+        if (y_[m] < y_[t]) swap(m, t);
+        top_ = t; mid_ = m; bottom_ = bt;
+        row_top_ = first_row_at_or_below(y_[t]);
+        row_mid_ = first_row_at_or_below(y_[m]);
+        row_bottom_ = first_row_at_or_below(y_[bt]);
+        return true;
+    }
+
+    bool front() const { return front_; }
+    int32_t first_row() const { return row_top_; }
+    int32_t end_row() const { return row_bottom_; }
+    uint32_t dzdx() const { return dzdx_; }
+
+    /// Calls fn(y, x0, x1, z) for each row y in [y_begin, y_end) with covered pixels [x0, x1) clipped
+    /// to [0, width); z is the depth at (x0, y). Returns the number of pixels covered.
+    template <class Fn>
+    uint32_t spans(int32_t y_begin, int32_t y_end, Fn&& fn) const {
+        uint32_t covered = 0;
+        const int32_t upper_end = min(row_mid_, y_end);
+        if (max(row_top_, y_begin) < upper_end)
+            covered += half(edge_index(top_, mid_), max(row_top_, y_begin), upper_end, fn);
+        const int32_t lower_end = min(row_bottom_, y_end);
+        if (max(row_mid_, y_begin) < lower_end)
+            covered += half(edge_index(mid_, bottom_), max(row_mid_, y_begin), lower_end, fn);
+        return covered;
+    }
+
+private:
+    /// Edge walker: e = edge function at the current pixel centre + top-left bias.
+    struct Walker {
+        int32_t px, e, step_x, step_y;
+    };
+
+    int32_t first_row_at_or_below(int32_t y_sub) const {
+        return static_cast<int32_t>(div_floor(int64_t{y_sub} - y_origin_ + kSubpixel - 1, kSubpixel));
+    }
+
+    /// Index i of the edge (v[i] -> v[i+1]) joining vertices p and q.
+    static int edge_index(int p, int q) { return (p + 1) % 3 == q ? p : q; }
+
+    void setup_depth(const ScreenVertex* const* v, int32_t area) {
+        const int64_t dx1 = x_[1] - x_[0], dy1 = y_[1] - y_[0];
+        const int64_t dx2 = x_[2] - x_[0], dy2 = y_[2] - y_[0];
+        const int64_t dz1 = int64_t{v[1]->z} - v[0]->z, dz2 = int64_t{v[2]->z} - v[0]->z;
+        // Plane through the vertices: z = z0 + p (x - x0) + q (y - y0); per pixel = 16 p, 16 q.
+        const int64_t px = div_round((dz1 * dy2 - dz2 * dy1) * kSubpixel, area);
+        const int64_t qy = div_round((dz2 * dx1 - dz1 * dx2) * kSubpixel, area);
+        dzdx_ = static_cast<uint32_t>(px);
+        dzdy_ = static_cast<uint32_t>(qy);
+        // Reference pixel: the one whose cell holds v0; its centre is within 8 subpixels of v0.
+        ref_px_ = static_cast<int32_t>(div_floor(int64_t{x_[0]} - x_origin_ + kSubpixel / 2, kSubpixel));
+        ref_py_ = static_cast<int32_t>(div_floor(int64_t{y_[0]} - y_origin_ + kSubpixel / 2, kSubpixel));
+        const int64_t ox = int64_t{ref_px_} * kSubpixel + x_origin_ - x_[0];
+        const int64_t oy = int64_t{ref_py_} * kSubpixel + y_origin_ - y_[0];
+        z_ref_ = v[0]->z + static_cast<uint32_t>(div_round(px * ox + qy * oy, kSubpixel));
+    }
+
+    /// Depth at pixel (px, py): exact modulo 2^32, equal to what stepping produces.
+    uint32_t depth_at(int32_t px, int32_t py) const {
+        return z_ref_ + dzdx_ * static_cast<uint32_t>(px - ref_px_) + dzdy_ * static_cast<uint32_t>(py - ref_py_);
+    }
+
+    Walker walker(int edge, int32_t py) const {
+        const int a = edge, b = (edge + 1) % 3;
+        const int32_t dx = x_[b] - x_[a], dy = y_[b] - y_[a];
+        const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;  // top-left rule
+        const int32_t yc = py * kSubpixel + y_origin_;
+        // e(px) = e0 + px * step_x, where e0 is the biased edge function at pixel 0 of this row.
+        const int32_t e0 = dx * (yc - y_[a]) - dy * (x_origin_ - x_[a]) + bias;
+        Walker w{0, 0, -dy * kSubpixel, dx * kSubpixel};
+        if (w.step_x > 0) {  // left edge: first px with e >= 0
+            w.px = static_cast<int32_t>(div_floor(-int64_t{e0} + w.step_x - 1, w.step_x));
+        } else {             // right edge: first px with e < 0
+            w.px = static_cast<int32_t>(div_floor(e0, -w.step_x)) + 1;
+        }
+        w.e = e0 + w.px * w.step_x;
+        return w;
+    }
+
+    template <class Fn>
+    uint32_t half(int short_edge, int32_t y_begin, int32_t y_end, Fn& fn) const {
+        const int long_edge = edge_index(top_, bottom_);
+        Walker w0 = walker(long_edge, y_begin), w1 = walker(short_edge, y_begin);
+        Walker& left = w0.step_x > 0 ? w0 : w1;
+        Walker& right = w0.step_x > 0 ? w1 : w0;
+        uint32_t z_left = depth_at(left.px, y_begin);
+        uint32_t z_col0 = depth_at(0, y_begin);
+        uint32_t covered = 0;
+        for (int32_t y = y_begin;;) {
+            const int32_t x0 = max(left.px, int32_t{0});
+            const int32_t x1 = min(right.px, width_);
+            if (x0 < x1) {
+                fn(y, x0, x1, left.px < 0 ? z_col0 : z_left);
+                covered += static_cast<uint32_t>(x1 - x0);
+            }
+            if (++y == y_end) break;
+            z_left += dzdy_;
+            z_col0 += dzdy_;
+            left.e += left.step_y;
+            if (left.e < 0) {
+                do { ++left.px; left.e += left.step_x; z_left += dzdx_; } while (left.e < 0);
+            } else {
+                while (left.e - left.step_x >= 0) { --left.px; left.e -= left.step_x; z_left -= dzdx_; }
+            }
+            right.e += right.step_y;
+            if (right.e >= 0) {
+                do { ++right.px; right.e += right.step_x; } while (right.e >= 0);
+            } else {
+                while (right.e - right.step_x < 0) { --right.px; right.e -= right.step_x; }
+            }
+        }
+        return covered;
+    }
+
+    int32_t x_[3] = {}, y_[3] = {};
+    int32_t width_ = 0, x_origin_ = 0, y_origin_ = 0;
+    int top_ = 0, mid_ = 0, bottom_ = 0;
+    int32_t row_top_ = 0, row_mid_ = 0, row_bottom_ = 0;
+    int32_t ref_px_ = 0, ref_py_ = 0;
+    uint32_t z_ref_ = 0, dzdx_ = 0, dzdy_ = 0;
+    bool front_ = false;
+};
+
+}  // namespace hider

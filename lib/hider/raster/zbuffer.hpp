@@ -1,0 +1,103 @@
+// The z-buffer renderer: per triangle trivial reject, clip (rare), cull by the exact sign of the
+// snapped screen area, flat shading, then TriangleRaster rows into span_depth_test. Works on any band
+// of rows; drawing every band of a frame gives exactly the bytes of drawing the whole frame.
+#pragma once
+#include <hider/mesh.hpp>
+#include <hider/raster/clip.hpp>
+#include <hider/raster/span.hpp>
+#include <hider/shade.hpp>
+
+namespace hider {
+
+namespace detail {
+
+/// Rows of the band in centre-relative subpixels, for a cheap reject before setup.
+struct BandBounds {
+    int32_t y_first, y_last, x_first, x_last;
+};
+template <class Frame>
+BandBounds band_bounds(const Frame& f) {
+    const int32_t ox = kSubpixel / 2 - f.width * (kSubpixel / 2), oy = kSubpixel / 2 - f.height * (kSubpixel / 2);
+    return {f.y0 * kSubpixel + oy, (f.y1 - 1) * kSubpixel + oy, ox, (f.width - 1) * kSubpixel + ox};
+}
+
+/// True when no pixel centre of the band can lie in the triangle's bounding box.
+inline bool outside_band(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const BandBounds& bb) {
+    const int32_t y_min = min(a.y, min(b.y, c.y)), y_max = max(a.y, max(b.y, c.y));
+    const int32_t x_min = min(a.x, min(b.x, c.x)), x_max = max(a.x, max(b.x, c.x));
+    return y_max < bb.y_first || y_min > bb.y_last || x_max < bb.x_first || x_min > bb.x_last;
+}
+
+/// Calls piece(a, b, c) for each drawable triangle of mesh triangle t: the triangle itself, or the fan
+/// of its clipped polygon. Counts outside/clipped triangles in `st`.
+template <class Piece>
+void for_each_piece(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, size_t t, FrameStats& st,
+                    Piece&& piece) {
+    const Tri& tri = mesh.tris[t];
+    const ScreenVertex& a = verts[tri.v[0]];
+    const ScreenVertex& b = verts[tri.v[1]];
+    const ScreenVertex& c = verts[tri.v[2]];
+    if ((a.outside & b.outside & c.outside) != 0) { ++st.triangles_outside; return; }
+    const uint8_t planes = a.outside | b.outside | c.outside;
+    if (planes == 0) { piece(a, b, c); return; }
+    ++st.triangles_clipped;
+    ClipPolygon poly;
+    clip_triangle(view, to_view_point(view, mesh.positions[tri.v[0]]), to_view_point(view, mesh.positions[tri.v[1]]),
+                  to_view_point(view, mesh.positions[tri.v[2]]), planes, poly);
+    if (poly.count < 3) return;
+    const ScreenVertex first = project(view, poly.v[0]);
+    ScreenVertex prev = project(view, poly.v[1]);
+    for (int i = 2; i < poly.count; ++i) {
+        const ScreenVertex next = project(view, poly.v[i]);
+        piece(first, prev, next);
+        prev = next;
+    }
+}
+
+}  // namespace detail
+
+/// Draws `mesh` into `frame` with the z-buffer. The caller cleared the band (clear()) and projected
+/// the vertices into `verts` with project_vertices() for the same view. Borrows everything for the call.
+/// Errors: invalid_argument when the frame is unusable, has no depth buffer, or its size differs from the view.
+template <bool kCount = false, class Format, class Depth>
+FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                        const FrameView<Format, Depth>& frame, const DrawOptions& opt) {
+    FrameStats st;
+    if (!frame.valid() || frame.depth == nullptr || frame.width != view.width || frame.height != view.height ||
+        verts.size() < mesh.positions.size()) {
+        st.status = Status::invalid_argument;
+        return st;
+    }
+    using Pixel = typename Format::Pixel;
+    const detail::BandBounds bb = detail::band_bounds(frame);
+    const FaceShading shading(view, opt);
+    for (size_t t = 0; t < mesh.tris.size(); ++t) {
+        ++st.triangles_in;
+        detail::for_each_piece(view, mesh, verts, t, st, [&](const ScreenVertex& a, const ScreenVertex& b,
+                                                             const ScreenVertex& c) {
+            if (detail::outside_band(a, b, c, bb)) return;
+            const int32_t area = TriangleRaster::signed_area(a, b, c);
+            if (area == 0) return;
+            if (opt.cull && area > 0) { ++st.triangles_culled; return; }
+            TriangleRaster tr;
+            tr.setup(a, b, c, frame.width, frame.height);
+            ++st.triangles_drawn;
+            const uint32_t dz = tr.dzdx();
+            const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
+            if (opt.shade == Shade::depth) {
+                const DepthShader<Format> shader(opt.depth_range);
+                st.fragments += tr.spans(y_begin, y_end, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) {
+                    st.pixels_written += span_depth_test<kCount>(frame.row(y), frame.depth_row(y), x0, x1, z, dz, shader);
+                });
+                return;
+            }
+            const FlatShader<Pixel> shader{Format::pack(shading.color(mesh, t, tr.front()))};
+            st.fragments += tr.spans(y_begin, y_end, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) {
+                st.pixels_written += span_depth_test<kCount>(frame.row(y), frame.depth_row(y), x0, x1, z, dz, shader);
+            });
+        });
+    }
+    return st;
+}
+
+}  // namespace hider

@@ -1,0 +1,66 @@
+// Flat shading per face: headlight (brightness = N.z of the unit face normal in view space, the
+// light sitting at the eye), the face id as a colour, or grey by depth (a per-pixel debug mode).
+#pragma once
+#include <hider/frame.hpp>
+#include <hider/mesh.hpp>
+
+namespace hider {
+
+enum class Shade : uint8_t {
+    headlight,  ///< base colour * max(N.z, 0); back faces (drawn when not culling) use -N.z
+    id,         ///< pixel = (id >> 16 & 255, id >> 8 & 255, id & 255)
+    depth,      ///< grey: 255 at DrawOptions::depth_range.min, 0 at .max
+};
+
+struct DrawOptions {
+    bool cull = true;               ///< drop faces that run clockwise on the image
+    Shade shade = Shade::headlight;
+    Rgb base{255, 255, 255};        ///< surface colour for headlight shading
+    DepthRange depth_range{};       ///< for Shade::depth (from project_vertices)
+};
+
+/// Per-frame constants of face shading; color() costs three multiplies per face.
+class FaceShading {
+public:
+    FaceShading(const View& view, const DrawOptions& opt) : opt_(opt) {
+        for (int j = 0; j < 3; ++j) view_z_[j] = view.to_view.rot.m[2][j].raw();
+    }
+
+    /// Colour of triangle t of `mesh`, seen from its front (true) or back side.
+    Rgb color(const Mesh& mesh, size_t t, bool front) const {
+        if (opt_.shade == Shade::id) {
+            const uint32_t id = mesh.id(t);
+            return {static_cast<uint8_t>(id >> 16), static_cast<uint8_t>(id >> 8), static_cast<uint8_t>(id)};
+        }
+        if (mesh.normals.empty()) return opt_.base;
+        const Normal14& n = mesh.normals[t];
+        const int64_t nz_q44 = mul_wide(view_z_[0], n.x) + mul_wide(view_z_[1], n.y) + mul_wide(view_z_[2], n.z);
+        int64_t b_q30 = nz_q44 >> 14;
+        if (!front) b_q30 = -b_q30;
+        b_q30 = clamp<int64_t>(b_q30, 0, int64_t{1} << 30);
+        auto scale = [b_q30](uint8_t c) { return static_cast<uint8_t>((c * b_q30 + (int64_t{1} << 29)) >> 30); };
+        return {scale(opt_.base.r), scale(opt_.base.g), scale(opt_.base.b)};
+    }
+
+private:
+    DrawOptions opt_;
+    int32_t view_z_[3];  // third row of the view rotation, Q30: N_view.z = row . N
+};
+
+/// Per-pixel grey from depth over the frame's depth range (a multiply per pixel; debug view only).
+template <class Format>
+struct DepthShader {
+    explicit DepthShader(DepthRange r) : zmin(r.min) {
+        const uint32_t span = r.max > r.min ? (r.max - r.min) >> 8 : 1;
+        scale = (uint32_t{255} << 16) / (span == 0 ? 1 : span);
+    }
+    typename Format::Pixel operator()(uint32_t z) const {
+        const uint32_t d = z > zmin ? (z - zmin) >> 8 : 0;
+        const uint64_t g = min<uint64_t>((uint64_t{d} * scale) >> 16, 255);
+        const uint8_t grey = static_cast<uint8_t>(255 - g);
+        return Format::pack({grey, grey, grey});
+    }
+    uint32_t zmin = 0, scale = 0;
+};
+
+}  // namespace hider

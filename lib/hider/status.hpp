@@ -1,0 +1,52 @@
+// Status values returned by lib/ entry points (no exceptions) and the per-frame statistics.
+#pragma once
+#include <hider/base.hpp>
+
+namespace hider {
+
+enum class Status : uint8_t {
+    ok = 0,
+    capacity_exceeded,  ///< a fixed pool filled; output is valid but incomplete
+    invalid_argument,   ///< caller broke a documented precondition (checked at API entry)
+    bad_data,           ///< baked asset or input data failed validation
+    out_of_range,       ///< a coordinate lies outside the documented fixed-point range
+};
+
+/// Short lowercase name of a status, for messages.
+constexpr const char* status_name(Status s) {
+    switch (s) {
+        case Status::ok: return "ok";
+        case Status::capacity_exceeded: return "capacity exceeded";
+        case Status::invalid_argument: return "invalid argument";
+        case Status::bad_data: return "bad data";
+        case Status::out_of_range: return "out of range";
+    }
+    return "unknown";
+}
+
+/// What one draw call did. Counters saturate instead of wrapping.
+struct [[nodiscard]] FrameStats {
+    Status status = Status::ok;
+    uint32_t triangles_in = 0;       ///< triangles looked at
+    uint32_t triangles_drawn = 0;    ///< triangles (or clipped pieces) that reached the rasterizer
+    uint32_t triangles_culled = 0;   ///< back faces removed
+    uint32_t triangles_clipped = 0;  ///< triangles that needed near/far/guard clipping
+    uint32_t triangles_outside = 0;  ///< wholly outside one clip plane
+    uint32_t fragments = 0;          ///< pixel centres covered (depth-tested or painted)
+    uint32_t pixels_written = 0;     ///< colour writes (only counted when the variant counts them)
+
+    constexpr bool ok() const { return status == Status::ok; }
+    /// Adds another call's counts (a band of the same frame); the first non-ok status wins.
+    void merge(const FrameStats& o) {
+        if (status == Status::ok) status = o.status;
+        triangles_in += o.triangles_in;
+        triangles_drawn += o.triangles_drawn;
+        triangles_culled += o.triangles_culled;
+        triangles_clipped += o.triangles_clipped;
+        triangles_outside += o.triangles_outside;
+        fragments += o.fragments;
+        pixels_written += o.pixels_written;
+    }
+};
+
+}  // namespace hider

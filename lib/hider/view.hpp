@@ -1,0 +1,133 @@
+// Camera and projection: world -> view (gluLookAt), the clip tests against near, far and the x/y guard
+// band in homogeneous view space, and projection of a view-space point to a ScreenVertex.
+// Units: positions Q16; w = -z_view (distance along the view axis); screen in 1/16 pixel from the centre.
+// Depth z = kDepthNear + (kDepthFar - kDepthNear) (1 - n/w) / (1 - n/f): affine in screen space (1/w).
+#pragma once
+#include <hider/frame.hpp>
+#include <hider/mat.hpp>
+#include <hider/raster/triangle.hpp>
+
+namespace hider {
+
+/// |coordinate| of a world position, eye or target must stay below this (2^13 units).
+constexpr int32_t kWorldLimitRaw = int32_t{1} << 29;
+/// The near plane may not be closer than 1/256 unit.
+constexpr int32_t kMinNearRaw = 256;
+
+/// gluLookAt + gluPerspective inputs (aspect = width / height of the frame).
+struct Camera {
+    Vec3q16 eye{}, target{}, up{};
+    Angle fovy{};  ///< vertical field of view, in [0.5, 179.5] degrees
+    Q16 near{}, far{};
+};
+
+/// Everything per frame that vertex projection and triangle setup need. Build with make_view().
+struct View {
+    Transform to_view{};        ///< model/world -> view space
+    int32_t width = 0, height = 0;
+    int32_t k_q8 = 0;           ///< subpixels per unit of x_view / w, Q8: X = x k / w
+    int32_t near_raw = 0, far_raw = 0;
+    uint32_t near_over_far_q31 = 0;
+    uint64_t depth_scale_q31 = 0;  ///< (kDepthFar - kDepthNear) / (1 - n/f), Q31
+};
+
+/// A point in view space, raw Q16: x right, y up, w = -z_view (positive in front of the eye).
+struct ViewPoint {
+    int32_t x, y, w;
+};
+
+/// Clip planes (bits of ScreenVertex::outside).
+enum ClipPlane : uint8_t {
+    kClipNear = 1, kClipFar = 2, kClipLeft = 4, kClipRight = 8, kClipTop = 16, kClipBottom = 32,
+};
+constexpr int kClipPlaneCount = 6;
+
+/// Checks the camera and frame size and builds the view. Errors: invalid_argument (size, fov,
+/// near/far order, eye == target, up parallel to the view), out_of_range (eye/target outside the world range).
+inline Status make_view(const Camera& cam, int32_t width, int32_t height, View& out) {
+    if (width < 1 || height < 1 || width > kMaxFrameSide || height > kMaxFrameSide) return Status::invalid_argument;
+    const uint32_t half_degree = 0x00B60B61u;  // 2^32 / 720
+    if (cam.fovy.bam() < half_degree || cam.fovy.bam() > 0x80000000u - half_degree) return Status::invalid_argument;
+    if (cam.near.raw() < kMinNearRaw || cam.far.raw() <= cam.near.raw()) return Status::invalid_argument;
+    const Vec3q16 pts[2] = {cam.eye, cam.target};
+    for (const Vec3q16& p : pts) {
+        const int32_t c[3] = {p.x.raw(), p.y.raw(), p.z.raw()};
+        for (int32_t e : c)
+            if (e <= -kWorldLimitRaw || e >= kWorldLimitRaw) return Status::out_of_range;
+    }
+    View v;
+    const Status s = look_at(cam.eye, cam.target, cam.up, v.to_view);
+    if (s != Status::ok) return s;
+    v.width = width;
+    v.height = height;
+    const Angle half_fov = Angle::from_bam(cam.fovy.bam() / 2);
+    // k = (H / 2) * cot(fovy / 2) * 16 subpixels, in Q8.
+    v.k_q8 = saturate32(div_round(int64_t{height} * (kSubpixel / 2) * 256 * cos(half_fov).raw(), sin(half_fov).raw()));
+    v.near_raw = cam.near.raw();
+    v.far_raw = cam.far.raw();
+    v.near_over_far_q31 = static_cast<uint32_t>((uint64_t{static_cast<uint32_t>(v.near_raw)} << 31) /
+                                                static_cast<uint32_t>(v.far_raw));
+    const uint64_t range = kDepthFar - kDepthNear;
+    v.depth_scale_q31 = (range << 31) / ((uint64_t{1} << 31) - v.near_over_far_q31);
+    out = v;
+    return Status::ok;
+}
+
+/// The same view with a model transform applied first (model -> world -> view).
+inline View with_model(const View& v, const Transform& model) {
+    View r = v;
+    r.to_view = compose(v.to_view, model);
+    return r;
+}
+
+/// View-space position of p. Precondition: |p| components below kWorldLimitRaw.
+inline ViewPoint to_view_point(const View& v, Vec3q16 p) {
+    const Vec3q16 q = apply(v.to_view, p);
+    return {q.x.raw(), q.y.raw(), -q.z.raw()};
+}
+
+/// Signed distance of p to clip plane `plane` (one bit), >= 0 inside; exact in int64.
+inline int64_t clip_distance(const View& v, const ViewPoint& p, uint8_t plane) {
+    const int64_t guard = int64_t{p.w} * (int64_t{kGuardBand} * 256);  // |X| <= G  <=>  |x k| <= G w 256
+    switch (plane) {
+        case kClipNear: return int64_t{p.w} - v.near_raw;
+        case kClipFar: return int64_t{v.far_raw} - p.w;
+        case kClipLeft: return guard + mul_wide(p.x, v.k_q8);
+        case kClipRight: return guard - mul_wide(p.x, v.k_q8);
+        case kClipTop: return guard - mul_wide(p.y, v.k_q8);
+        default: return guard + mul_wide(p.y, v.k_q8);
+    }
+}
+
+/// The set of clip planes p lies outside of (0 = inside the view volume and the guard band).
+inline uint8_t outcode(const View& v, const ViewPoint& p) {
+    uint8_t code = 0;
+    if (p.w < v.near_raw) code |= kClipNear;
+    if (p.w > v.far_raw) code |= kClipFar;
+    const int64_t guard = int64_t{p.w} * (int64_t{kGuardBand} * 256);
+    const int64_t xk = mul_wide(p.x, v.k_q8), yk = mul_wide(p.y, v.k_q8);
+    if (xk < -guard) code |= kClipLeft;
+    if (xk > guard) code |= kClipRight;
+    if (yk > guard) code |= kClipTop;
+    if (yk < -guard) code |= kClipBottom;
+    return code;
+}
+
+/// Projects a point inside (or, after clipping, on) the view volume; coordinates are clamped to the
+/// guard band and depth to [kDepthNear, kDepthFar], so rounding at clip planes never overflows.
+inline ScreenVertex project(const View& v, const ViewPoint& p) {
+    const int64_t w = max(p.w, int32_t{1});
+    const int64_t den = w * 256;
+    ScreenVertex s;
+    s.x = static_cast<int16_t>(clamp<int64_t>(div_round(mul_wide(p.x, v.k_q8), den), -kCoordLimit, kCoordLimit));
+    s.y = static_cast<int16_t>(clamp<int64_t>(div_round(-mul_wide(p.y, v.k_q8), den), -kCoordLimit, kCoordLimit));
+    // u = n / w in Q31, then z = near + scale (1 - u) / (1 - n/f).
+    uint64_t u = (uint64_t{static_cast<uint32_t>(v.near_raw)} << 31) / static_cast<uint64_t>(w);
+    u = clamp<uint64_t>(u, v.near_over_far_q31, uint64_t{1} << 31);
+    const uint64_t z = kDepthNear + ((((uint64_t{1} << 31) - u) * v.depth_scale_q31 + (uint64_t{1} << 30)) >> 31);
+    s.z = static_cast<uint32_t>(min<uint64_t>(z, kDepthFar));
+    s.outside = 0;
+    return s;
+}
+
+}  // namespace hider

@@ -1,0 +1,42 @@
+// Host port: binary PPM (P6) output from a frame view in any pixel format, and RGB888 conversion.
+#pragma once
+#include <hider/frame.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hider::port {
+
+/// Appends the band's rows as RGB888 bytes (row 0 first) to `out`.
+template <class Format, class Depth>
+void append_rgb888(const FrameView<Format, Depth>& f, std::vector<uint8_t>& out) {
+    for (int32_t y = f.y0; y < f.y1; ++y) {
+        const typename Format::Pixel* p = f.row(y);
+        for (int32_t x = 0; x < f.width; ++x) {
+            const Rgb c = Format::unpack(p[x]);
+            out.push_back(c.r);
+            out.push_back(c.g);
+            out.push_back(c.b);
+        }
+    }
+}
+
+/// The bytes of a P6 file: "P6\n<W> <H>\n255\n" then W*H*3 bytes of `rgb`.
+std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>& rgb);
+
+/// Writes a P6 file; on failure returns false and sets `error` to "path: reason".
+bool write_ppm(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, std::string& error);
+
+/// Writes a whole-frame view (y0 == 0, y1 == height) as P6.
+template <class Format, class Depth>
+bool write_ppm(const std::string& path, const FrameView<Format, Depth>& f, std::string& error) {
+    std::vector<uint8_t> rgb;
+    append_rgb888(f, rgb);
+    return write_ppm(path, f.width, f.height, rgb, error);
+}
+
+/// Reads a P6 file with maxval 255 (for golden comparisons). Returns false on any format error.
+bool read_ppm(const std::string& path, int& width, int& height, std::vector<uint8_t>& rgb);
+
+}  // namespace hider::port

@@ -1,0 +1,43 @@
+// Host driver shared by hider-render, hider-bench and the tests: runs lib/ on a Scene with one of the
+// algorithms, in one piece or band by band, and returns the frame as RGB888 bytes plus statistics.
+#pragma once
+#include <hider/raster/zbuffer.hpp>
+
+#include <string>
+#include <vector>
+
+#include "common/scene.hpp"
+
+namespace hider::tool {
+
+enum class Algo { zbuffer };
+enum class PixelFormat { rgb565, rgb888, grey8 };
+
+/// Names accepted by --algo, in order, comma-separated (for messages).
+std::string algo_names();
+bool parse_algo(const std::string& name, Algo& out);
+
+struct RenderOptions {
+    Algo algo = Algo::zbuffer;
+    Shade shade = Shade::headlight;
+    bool cull = true;
+    int depth_bits = 16;  ///< 16 or 32
+    int band_rows = 0;    ///< 0 = whole frame at once
+    PixelFormat format = PixelFormat::rgb565;
+    Rgb background{0, 0, 0};
+    Rgb base{255, 255, 255};
+};
+
+struct RenderResult {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgb;  ///< width * height * 3, row 0 first
+    FrameStats stats;
+};
+
+/// Renders `scene` with lib/ only. Returns false with a reason for unusable options.
+bool render(const Scene& scene, const RenderOptions& opt, RenderResult& out, std::string& error);
+
+/// Face id per pixel decoded from an RGB888 id render (0 = background).
+std::vector<uint32_t> decode_ids(const RenderResult& r);
+
+}  // namespace hider::tool

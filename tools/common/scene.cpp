@@ -1,0 +1,163 @@
+// Scene fitting: bounding box of model + eye + target into +-kFitHalfExtent world units, camera defaults
+// that frame the model, and conversion of every value to fixed point exactly once.
+#include "common/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace hider::tool {
+namespace {
+
+std::string fmt(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+double length(const Vec3d& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+/// Nearest Q16 to v; false if it does not fit int32.
+bool to_q16(double v, Q16& out) {
+    const double r = std::nearbyint(v * 65536.0);
+    if (!std::isfinite(r) || std::fabs(r) >= 2147483647.0) return false;
+    out = Q16::from_raw(static_cast<int32_t>(r));
+    return true;
+}
+
+}  // namespace
+
+bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std::string& error) {
+    if (model.vertices.empty() || model.faces.empty()) {
+        error = "empty model";
+        return false;
+    }
+    if (model.vertices.size() > kMaxMeshVertices) {
+        error = "model has " + std::to_string(model.vertices.size()) + " vertices; hider meshes hold at most " +
+                std::to_string(kMaxMeshVertices);
+        return false;
+    }
+    if (args.width < 1 || args.height < 1 || args.width > kMaxFrameSide || args.height > kMaxFrameSide) {
+        error = "frame size " + std::to_string(args.width) + "x" + std::to_string(args.height) +
+                " out of range (1.." + std::to_string(kMaxFrameSide) + " per side)";
+        return false;
+    }
+    if (!(args.fov_deg >= 0.5 && args.fov_deg <= 179.5)) {
+        error = "field of view " + fmt(args.fov_deg) + " degrees out of range (0.5..179.5)";
+        return false;
+    }
+    // Model bounding box and sphere.
+    Vec3d lo = model.vertices[0], hi = model.vertices[0];
+    for (const auto& v : model.vertices)
+        for (int i = 0; i < 3; ++i) { lo[i] = std::min(lo[i], v[i]); hi[i] = std::max(hi[i], v[i]); }
+    const Vec3d mid{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+    const double radius = length(sub(hi, lo)) / 2;
+    if (!std::isfinite(radius)) {
+        error = "model coordinates are too large to represent (bounding box is not finite)";
+        return false;
+    }
+    // Camera defaults frame the bounding sphere.
+    const double aspect = static_cast<double>(args.width) / args.height;
+    const double half_fov = args.fov_deg * M_PI / 360.0;
+    const double half_fov_x = std::atan(std::tan(half_fov) * aspect);
+    const double fit_angle = std::min(half_fov, half_fov_x);
+    const Vec3d target = args.target.value_or(mid);
+    const double r = radius > 0 ? radius : 1.0;
+    const Vec3d eye = args.eye.value_or(Vec3d{target[0], target[1], target[2] + 1.05 * r / std::sin(fit_angle)});
+    const Vec3d up = args.up.value_or(Vec3d{0, 1, 0});
+    const double dist = length(sub(eye, mid));
+    double far = args.far.value_or((dist + r) * 1.01);
+    double near = args.near.value_or(std::max((dist - r) * 0.99, far / 1000.0));
+    if (!(near > 0) || !std::isfinite(near)) {
+        error = "near plane must be > 0 (got " + fmt(near) + ")";
+        return false;
+    }
+    if (!(far > near) || !std::isfinite(far)) {
+        error = "far plane (" + fmt(far) + ") must be greater than near (" + fmt(near) + ")";
+        return false;
+    }
+    if (length(up) == 0) {
+        error = "up vector is zero";
+        return false;
+    }
+    if (length(sub(target, eye)) == 0) {
+        error = "eye and target coincide";
+        return false;
+    }
+    // Fit model + eye + target into the world cube.
+    Vec3d blo = lo, bhi = hi;
+    for (const Vec3d& p : {eye, target})
+        for (int i = 0; i < 3; ++i) { blo[i] = std::min(blo[i], p[i]); bhi[i] = std::max(bhi[i], p[i]); }
+    const Vec3d centre{(blo[0] + bhi[0]) / 2, (blo[1] + bhi[1]) / 2, (blo[2] + bhi[2]) / 2};
+    double half = 0;
+    for (int i = 0; i < 3; ++i) half = std::max(half, (bhi[i] - blo[i]) / 2);
+    if (!std::isfinite(half) || half <= 0 || !std::isfinite(kFitHalfExtent / half)) {
+        error = "scene cannot be represented in fixed point (extent " + fmt(half * 2) + ")";
+        return false;
+    }
+    const double scale = kFitHalfExtent / half;
+    // Far beyond the scene changes no visibility: clamp it to just past the farthest box corner.
+    double farthest = 0;
+    for (int c = 0; c < 8; ++c) {
+        const Vec3d corner{(c & 1) ? bhi[0] : blo[0], (c & 2) ? bhi[1] : blo[1], (c & 4) ? bhi[2] : blo[2]};
+        farthest = std::max(farthest, length(sub(corner, eye)));
+    }
+    far = std::min(far, farthest * 1.01);
+    if (!(far > near)) {
+        error = "near plane (" + fmt(near) + ") lies beyond the whole scene";
+        return false;
+    }
+    const double near_world = near * scale, far_world = far * scale;
+    const double min_near = kMinNearRaw / 65536.0;
+    if (near_world < min_near) {
+        error = "near plane " + fmt(near) + " is too small for a scene of extent " + fmt(half * 2) +
+                " (hider needs near >= " + fmt(min_near / scale) + ")";
+        return false;
+    }
+    Scene s;
+    s.width = args.width;
+    s.height = args.height;
+    s.centre = centre;
+    s.scale = scale;
+    auto fit = [&](const Vec3d& p, Vec3q16& q) {
+        return to_q16((p[0] - centre[0]) * scale, q.x) && to_q16((p[1] - centre[1]) * scale, q.y) &&
+               to_q16((p[2] - centre[2]) * scale, q.z);
+    };
+    s.positions.resize(model.vertices.size());
+    for (size_t i = 0; i < model.vertices.size(); ++i)
+        if (!fit(model.vertices[i], s.positions[i])) {
+            error = "vertex " + std::to_string(i + 1) + " cannot be represented in fixed point";
+            return false;
+        }
+    Camera& cam = s.camera;
+    const double up_len = length(up);
+    if (!fit(eye, cam.eye) || !fit(target, cam.target) || !to_q16(up[0] / up_len, cam.up.x) ||
+        !to_q16(up[1] / up_len, cam.up.y) || !to_q16(up[2] / up_len, cam.up.z) || !to_q16(near_world, cam.near) ||
+        !to_q16(far_world, cam.far)) {
+        error = "camera cannot be represented in fixed point";
+        return false;
+    }
+    cam.fovy = Angle::from_bam(static_cast<uint32_t>(std::llround(args.fov_deg / 360.0 * 4294967296.0)));
+    // Faces become fans (v0, vi, vi+1); every triangle keeps its face's id.
+    for (const ObjFace& f : model.faces) {
+        for (size_t i = 1; i + 1 < f.v.size(); ++i) {
+            const Tri t{{static_cast<uint16_t>(f.v[0]), static_cast<uint16_t>(f.v[i]), static_cast<uint16_t>(f.v[i + 1])}};
+            s.tris.push_back(t);
+            s.normals.push_back(face_normal(s.positions[t.v[0]], s.positions[t.v[1]], s.positions[t.v[2]]));
+            s.ids.push_back(f.id);
+        }
+    }
+    View probe;
+    const Status st = make_view(cam, s.width, s.height, probe);
+    if (st != Status::ok) {
+        error = st == Status::invalid_argument ? "up vector is parallel to the view direction"
+                                               : std::string("camera rejected: ") + status_name(st);
+        return false;
+    }
+    out = std::move(s);
+    return true;
+}
+
+}  // namespace hider::tool

@@ -1,0 +1,52 @@
+// Host boundary between doubles and lib/: fits an OBJ model and its camera into the fixed-point world
+// (by the bounding box of the model, eye and target, so units do not matter) and builds lib/ arrays.
+#pragma once
+#include <hider/mesh.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/obj.hpp"
+
+namespace hider::tool {
+
+using Vec3d = std::array<double, 3>;
+
+/// Camera as the user gives it, in model units; unset values get framing defaults.
+struct CameraArgs {
+    std::optional<Vec3d> eye, target, up;
+    double fov_deg = 60.0;  ///< vertical
+    std::optional<double> near, far;
+    int width = 320, height = 240;
+};
+
+/// Half the side of the cube the scene's bounding box is scaled into, in world units.
+constexpr double kFitHalfExtent = 512.0;
+
+/// A model and camera in lib/ form (fixed point), plus how model units map to world units.
+struct Scene {
+    std::vector<Vec3q16> positions;
+    std::vector<Tri> tris;
+    std::vector<Normal14> normals;
+    std::vector<uint32_t> ids;
+    Camera camera{};
+    int width = 320, height = 240;
+    Vec3d centre{};     ///< world = (model - centre) * scale
+    double scale = 1.0;
+
+    Mesh mesh() const {
+        return {{positions.data(), positions.size()}, {tris.data(), tris.size()}, {normals.data(), normals.size()},
+                {ids.data(), ids.size()}};
+    }
+};
+
+/// Converts a loaded OBJ model and camera arguments to a Scene. On failure returns false and sets
+/// `error` to a plain reason (the caller prefixes the file name).
+bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std::string& error);
+
+/// Exact double value of a Q16 world coordinate (for references that must see hider's own scene).
+inline double to_double(Q16 v) { return v.raw() / 65536.0; }
+
+}  // namespace hider::tool

@@ -1,0 +1,148 @@
+// hider-render: renders an OBJ model to a binary PPM with lib/ (the same code that runs on the chip).
+// Usage: see usage() below and README.md. Errors print "file:line: what" or a plain reason and exit 2.
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include "common/obj.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "host/ppm.hpp"
+
+namespace {
+
+using namespace hider;
+using namespace hider::tool;
+
+const char* kUsage =
+    "usage: hider-render MODEL.obj -o OUT.ppm [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
+    "                    [--fov DEG] [--near N] [--far F] [--shade headlight|id|depth] [--no-cull]\n"
+    "                    [--algo NAME] [--depth-bits 16|32] [--band ROWS] [--format rgb565|rgb888|grey8]\n"
+    "                    [--stats]\n";
+
+[[noreturn]] void fail(const std::string& msg) {
+    std::cerr << "hider-render: " << msg << "\n";
+    std::exit(2);
+}
+
+bool parse_double(const std::string& s, double& out) {
+    if (s.empty()) return false;
+    char* end = nullptr;
+    errno = 0;
+    out = std::strtod(s.c_str(), &end);
+    return end == s.c_str() + s.size() && errno == 0 && std::isfinite(out);
+}
+
+bool parse_int(const std::string& s, long& out) {
+    if (s.empty()) return false;
+    char* end = nullptr;
+    errno = 0;
+    out = std::strtol(s.c_str(), &end, 10);
+    return end == s.c_str() + s.size() && errno == 0;
+}
+
+Vec3d parse_vec(const std::string& opt, const std::string& s) {
+    Vec3d v{};
+    size_t start = 0;
+    for (int i = 0; i < 3; ++i) {
+        const size_t comma = s.find(',', start);
+        const bool last = i == 2;
+        if (last != (comma == std::string::npos)) fail(opt + " needs x,y,z (got '" + s + "')");
+        const std::string part = s.substr(start, last ? std::string::npos : comma - start);
+        if (!parse_double(part, v[i])) fail(opt + ": bad number '" + part + "'");
+        start = comma + 1;
+    }
+    return v;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string model_path, out_path;
+    CameraArgs cam;
+    RenderOptions opt;
+    bool stats = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) fail(a + " needs a value\n" + kUsage);
+            return argv[++i];
+        };
+        if (a == "-o") out_path = value();
+        else if (a == "--size") {
+            const std::string v = value();
+            const size_t x = v.find('x');
+            long w = 0, h = 0;
+            if (x == std::string::npos || !parse_int(v.substr(0, x), w) || !parse_int(v.substr(x + 1), h))
+                fail("--size needs WxH (got '" + v + "')");
+            if (w < 1 || h < 1 || w > kMaxFrameSide || h > kMaxFrameSide)
+                fail("--size " + v + " out of range (1.." + std::to_string(kMaxFrameSide) + " per side)");
+            cam.width = static_cast<int>(w);
+            cam.height = static_cast<int>(h);
+        } else if (a == "--eye") cam.eye = parse_vec(a, value());
+        else if (a == "--target") cam.target = parse_vec(a, value());
+        else if (a == "--up") cam.up = parse_vec(a, value());
+        else if (a == "--fov") {
+            const std::string v = value();
+            if (!parse_double(v, cam.fov_deg)) fail("--fov: bad number '" + v + "'");
+        } else if (a == "--near" || a == "--far") {
+            const std::string v = value();
+            double d = 0;
+            if (!parse_double(v, d)) fail(a + ": bad number '" + v + "'");
+            (a == "--near" ? cam.near : cam.far) = d;
+        } else if (a == "--shade") {
+            const std::string v = value();
+            if (v == "headlight") opt.shade = Shade::headlight;
+            else if (v == "id") opt.shade = Shade::id;
+            else if (v == "depth") opt.shade = Shade::depth;
+            else fail("unknown shade '" + v + "' (available: headlight, id, depth)");
+        } else if (a == "--no-cull") opt.cull = false;
+        else if (a == "--algo") {
+            const std::string v = value();
+            if (!parse_algo(v, opt.algo)) fail("unknown algo '" + v + "' (available: " + algo_names() + ")");
+        } else if (a == "--depth-bits") {
+            const std::string v = value();
+            if (v != "16" && v != "32") fail("--depth-bits must be 16 or 32 (got '" + v + "')");
+            opt.depth_bits = v == "16" ? 16 : 32;
+        } else if (a == "--band") {
+            const std::string v = value();
+            long rows = 0;
+            if (!parse_int(v, rows) || rows < 1 || rows > kMaxFrameSide) fail("--band needs a row count 1..1024 (got '" + v + "')");
+            opt.band_rows = static_cast<int>(rows);
+        } else if (a == "--format") {
+            const std::string v = value();
+            if (v == "rgb565") opt.format = PixelFormat::rgb565;
+            else if (v == "rgb888") opt.format = PixelFormat::rgb888;
+            else if (v == "grey8") opt.format = PixelFormat::grey8;
+            else fail("unknown format '" + v + "' (available: rgb565, rgb888, grey8)");
+        } else if (a == "--stats") stats = true;
+        else if (a == "-h" || a == "--help") { std::cout << kUsage; return 0; }
+        else if (!a.empty() && a[0] == '-') fail("unknown option '" + a + "'\n" + kUsage);
+        else if (model_path.empty()) model_path = a;
+        else fail("more than one model given ('" + model_path + "', '" + a + "')");
+    }
+    if (model_path.empty()) fail(std::string("no model given\n") + kUsage);
+    if (out_path.empty()) fail(std::string("no output given (-o OUT.ppm)\n") + kUsage);
+    if (opt.shade == Shade::id) opt.format = PixelFormat::rgb888;  // ids need all 24 bits
+
+    ObjModel model;
+    ObjError err;
+    if (!load_obj(model_path, model, err)) fail(format(err));
+    Scene scene;
+    std::string why;
+    if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
+    RenderResult result;
+    if (!render(scene, opt, result, why)) fail(why);
+    if (!port::write_ppm(out_path, result.width, result.height, result.rgb, why)) fail(why);
+    if (stats) {
+        const FrameStats& s = result.stats;
+        std::printf("triangles %u drawn %u culled %u clipped %u outside %u\n", s.triangles_in, s.triangles_drawn,
+                    s.triangles_culled, s.triangles_clipped, s.triangles_outside);
+        std::printf("fragments %u written %u overdraw %.2f\n", s.fragments, s.pixels_written,
+                    s.pixels_written == 0 ? 0.0 : static_cast<double>(s.fragments) / s.pixels_written);
+    }
+    return 0;
+}
