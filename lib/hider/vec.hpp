@@ -32,7 +32,7 @@ constexpr Vec3i64 cross_raw(Vec3q16 a, Vec3q16 b) {
             mul_wide(a.x.raw(), b.y.raw()) - mul_wide(a.y.raw(), b.x.raw())};
 }
 
-/// Scales v to unit length in Q30 (error <= 2 LSB per component). Returns false for the zero vector.
+/// Scales v to unit length in Q30 (error <= 3 LSB per component). Returns false for the zero vector.
 constexpr bool normalize(Vec3i64 v, Vec3q30& out) {
     const uint64_t ax = static_cast<uint64_t>(abs_value(v.x));
     const uint64_t ay = static_cast<uint64_t>(abs_value(v.y));

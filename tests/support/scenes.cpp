@@ -1,5 +1,5 @@
 // Hard-scene generators. Only +, -, *, / and sqrt (correctly rounded in IEEE 754) touch the random numbers, so a
-// seed gives bit-identical scenes on every conforming platform.
+// seed gives the same scene with any standard library (unless the compiler contracts a * b + c into FMA).
 #include "support/scenes.hpp"
 
 #include <algorithm>

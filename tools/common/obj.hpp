@@ -11,7 +11,8 @@
 
 // Accepted input (anything else on a `v` or `f` line is an error, never a guess):
 //   v x y z [w]    numbers in strtod syntax (sign, exponent, hex floats), parsed locale-independently;
-//                  nan, inf and values outside double range are rejected; w != 1 divides x, y, z by w.
+//                  nan, inf and values outside double range (overflow, or underflow such as 1e-400) are
+//                  rejected; w != 1 divides x, y, z by w, and w == 0 is rejected.
 //   f a b c ...    three or more of i, i/t, i//n, i/t/n; negative i counts back from the last `v` so far.
 //                  Texture (t) and normal (n) indices are syntax-checked and must be non-zero, then dropped.
 // Ignored: comments (`#` to end of line, also after data), blank lines, leading blanks and tabs, CRLF,

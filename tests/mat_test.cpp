@@ -1,0 +1,113 @@
+// Vectors, rotations and look_at against double references (gluLookAt), in LSBs of Q30 / Q16.
+#include <hider/mat.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "support/fixed_print.hpp"
+
+using namespace hider;
+
+namespace {
+Vec3q16 q16(double x, double y, double z) {
+    return {Q16::from_raw(static_cast<int32_t>(std::lround(x * 65536))),
+            Q16::from_raw(static_cast<int32_t>(std::lround(y * 65536))),
+            Q16::from_raw(static_cast<int32_t>(std::lround(z * 65536)))};
+}
+double d(Q16 v) { return v.raw() / 65536.0; }
+double d(Q30 v) { return v.raw() / 1073741824.0; }
+}  // namespace
+
+TEST_CASE("normalize gives unit vectors within 3 LSB of Q30 for tiny and huge inputs") {
+    std::mt19937_64 rng(5);
+    for (int i = 0; i < 20000; ++i) {
+        const int shift = static_cast<int>(rng() % 62);
+        const Vec3i64 v{static_cast<int64_t>(rng()) >> shift, static_cast<int64_t>(rng()) >> shift,
+                        static_cast<int64_t>(rng()) >> shift};
+        Vec3q30 n{};
+        const bool ok = normalize(v, n);
+        if (v.x == 0 && v.y == 0 && v.z == 0) { CHECK_FALSE(ok); continue; }
+        REQUIRE(ok);
+        const long double len = std::sqrt(static_cast<long double>(v.x) * v.x + static_cast<long double>(v.y) * v.y +
+                                          static_cast<long double>(v.z) * v.z);
+        if (len < 1e6L) continue;  // tiny integer vectors: direction itself is coarse
+        CHECK(std::fabs(n.x.raw() - static_cast<double>(v.x / len * 1073741824.0L)) <= 3.0);
+        CHECK(std::fabs(n.y.raw() - static_cast<double>(v.y / len * 1073741824.0L)) <= 3.0);
+        CHECK(std::fabs(n.z.raw() - static_cast<double>(v.z / len * 1073741824.0L)) <= 3.0);
+    }
+    Vec3q30 n{};
+    CHECK_FALSE(normalize({0, 0, 0}, n));
+    REQUIRE(normalize({0, 0, -3}, n));
+    CHECK(n.z.raw() == -(1 << 30));
+    REQUIRE(normalize({INT64_MAX, 0, 0}, n));
+    CHECK(n.x.raw() == 1 << 30);
+}
+
+TEST_CASE("face_normal follows the right-hand rule and marks degenerate faces") {
+    const Normal14 n = face_normal(q16(0, 0, 0), q16(1, 0, 0), q16(0, 1, 0));
+    CHECK(n.x == 0);
+    CHECK(n.y == 0);
+    CHECK(n.z == 16384);
+    const Normal14 z = face_normal(q16(1, 1, 1), q16(2, 2, 2), q16(3, 3, 3));
+    CHECK((z.x == 0 && z.y == 0 && z.z == 0));
+    const Normal14 t = face_normal(q16(0, 0, 0), q16(0, 0, 1e-4), q16(0, 1e-4, 0));  // tiny but valid
+    CHECK(t.x == -16384);
+}
+
+TEST_CASE("rotations match cos/sin and compose like matrices") {
+    const Angle a = Angle::from_bam(0x15555555u);  // 30 degrees
+    const Mat3 r = rotation_z(a);
+    const Vec3q16 p = apply({r, {}}, q16(1, 0, 0));
+    CHECK(std::fabs(d(p.x) - std::cos(M_PI / 6)) < 3e-5);
+    CHECK(std::fabs(d(p.y) - std::sin(M_PI / 6)) < 3e-5);
+    const Mat3 twice = mul(r, r);
+    const Mat3 sixty = rotation_z(a + a);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) CHECK(std::abs(twice.m[i][j].raw() - sixty.m[i][j].raw()) <= 8);
+    const Transform t1{rotation_x(a), q16(1, 2, 3)}, t2{rotation_y(a), q16(-4, 0, 0.5)};
+    const Vec3q16 v = q16(0.25, -7, 100);
+    const Vec3q16 direct = apply(t1, apply(t2, v)), composed = apply(compose(t1, t2), v);
+    CHECK(std::abs(direct.x.raw() - composed.x.raw()) <= 16);
+    CHECK(std::abs(direct.y.raw() - composed.y.raw()) <= 16);
+    CHECK(std::abs(direct.z.raw() - composed.z.raw()) <= 16);
+}
+
+TEST_CASE("look_at matches gluLookAt in double to within 32 LSB of Q30 per entry (more as up nears the view axis)") {
+    std::mt19937 rng(11);
+    auto u = [&](double lo, double hi) { return lo + (hi - lo) * (rng() / 4294967296.0); };
+    for (int i = 0; i < 2000; ++i) {
+        const double e[3] = {u(-4000, 4000), u(-4000, 4000), u(-4000, 4000)};
+        const double t[3] = {u(-4000, 4000), u(-4000, 4000), u(-4000, 4000)};
+        const double up[3] = {u(-1, 1), u(-1, 1), u(-1, 1)};
+        Transform view;
+        const Vec3q16 eq = q16(e[0], e[1], e[2]), tq = q16(t[0], t[1], t[2]), uq = q16(up[0], up[1], up[2]);
+        if (look_at(eq, tq, uq, view) != Status::ok) continue;
+        // Reference from the exact fixed inputs.
+        const double E[3] = {d(eq.x), d(eq.y), d(eq.z)}, T[3] = {d(tq.x), d(tq.y), d(tq.z)}, U[3] = {d(uq.x), d(uq.y), d(uq.z)};
+        double f[3] = {T[0] - E[0], T[1] - E[1], T[2] - E[2]};
+        double fl = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        for (double& c : f) c /= fl;
+        double s[3] = {f[1] * U[2] - f[2] * U[1], f[2] * U[0] - f[0] * U[2], f[0] * U[1] - f[1] * U[0]};
+        double sl = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+        if (sl < 1e-3 * std::sqrt(U[0] * U[0] + U[1] * U[1] + U[2] * U[2])) continue;
+        for (double& c : s) c /= sl;
+        // Rounding of f and up (a few LSB) is amplified by 1 / sin(angle between them) in s = f x up.
+        const double tol = 32.0 / 1073741824.0 + 8.0 / 1073741824.0 * std::sqrt(U[0] * U[0] + U[1] * U[1] + U[2] * U[2]) / sl;
+        const double uu[3] = {s[1] * f[2] - s[2] * f[1], s[2] * f[0] - s[0] * f[2], s[0] * f[1] - s[1] * f[0]};
+        const double rows[3][3] = {{s[0], s[1], s[2]}, {uu[0], uu[1], uu[2]}, {-f[0], -f[1], -f[2]}};
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 3; ++c) CHECK(std::fabs(d(view.rot.m[r][c]) - rows[r][c]) < tol);
+            const double tr = -(rows[r][0] * E[0] + rows[r][1] * E[1] + rows[r][2] * E[2]);
+            CHECK(std::fabs(d(r == 0 ? view.trans.x : r == 1 ? view.trans.y : view.trans.z) - tr) < 2e-4);
+        }
+    }
+}
+
+TEST_CASE("look_at rejects a zero direction, a zero up and an up parallel to the view") {
+    Transform v;
+    CHECK(look_at(q16(1, 2, 3), q16(1, 2, 3), q16(0, 1, 0), v) == Status::invalid_argument);
+    CHECK(look_at(q16(0, 0, 0), q16(0, 0, -1), q16(0, 0, 0), v) == Status::invalid_argument);
+    CHECK(look_at(q16(0, 0, 0), q16(0, 5, 0), q16(0, 1, 0), v) == Status::invalid_argument);
+    CHECK(look_at(q16(0, 0, 0), q16(0, 5, 0), q16(0, -2, 0), v) == Status::invalid_argument);
+    CHECK(look_at(q16(0, 0, 0), q16(0, 5, 0), q16(0.01, 1, 0), v) == Status::ok);  // 0.57 degrees off: fine
+}
