@@ -62,10 +62,22 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
     const double aspect = static_cast<double>(args.width) / args.height;
     const double half_fov = args.fov_deg * M_PI / 360.0;
     const double half_fov_x = std::atan(std::tan(half_fov) * aspect);
-    const double fit_angle = std::min(half_fov, half_fov_x);
     const Vec3d target = args.target.value_or(mid);
     const double r = radius > 0 ? radius : 1.0;
-    const Vec3d eye = args.eye.value_or(Vec3d{target[0], target[1], target[2] + 1.05 * r / std::sin(fit_angle)});
+    // Default eye on +z from the target, as close as keeps every bounding-box corner inside 95% of the view.
+    Vec3d eye{};
+    if (args.eye) {
+        eye = *args.eye;
+    } else {
+        const double tx = 0.95 * std::tan(half_fov_x), ty = 0.95 * std::tan(half_fov);
+        double d = 0;
+        for (int c = 0; c < 8; ++c) {
+            const Vec3d k{(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]};
+            const double dz = k[2] - target[2];
+            d = std::max({d, dz + std::fabs(k[0] - target[0]) / tx, dz + std::fabs(k[1] - target[1]) / ty, dz + r * 0.01});
+        }
+        eye = Vec3d{target[0], target[1], target[2] + d};
+    }
     const Vec3d up = args.up.value_or(Vec3d{0, 1, 0});
     const double dist = length(sub(eye, mid));
     double far = args.far.value_or((dist + r) * 1.01);

@@ -10,6 +10,7 @@
 #include "common/obj.hpp"
 #include "common/render.hpp"
 #include "common/scene.hpp"
+#include "host/png.hpp"
 #include "host/ppm.hpp"
 
 namespace {
@@ -18,7 +19,7 @@ using namespace hider;
 using namespace hider::tool;
 
 const char* kUsage =
-    "usage: hider-render MODEL.obj -o OUT.ppm [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
+    "usage: hider-render MODEL.obj -o OUT.ppm|OUT.png [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
     "                    [--fov DEG] [--near N] [--far F] [--shade headlight|id|depth] [--no-cull]\n"
     "                    [--algo NAME] [--depth-bits 16|32] [--band ROWS] [--format rgb565|rgb888|grey8]\n"
     "                    [--stats]\n";
@@ -136,7 +137,10 @@ int main(int argc, char** argv) {
     if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
     RenderResult result;
     if (!render(scene, opt, result, why)) fail(why);
-    if (!port::write_ppm(out_path, result.width, result.height, result.rgb, why)) fail(why);
+    const bool png = out_path.size() > 4 && out_path.compare(out_path.size() - 4, 4, ".png") == 0;
+    if (!(png ? port::write_png(out_path, result.width, result.height, result.rgb, why)
+              : port::write_ppm(out_path, result.width, result.height, result.rgb, why)))
+        fail(why);
     if (stats) {
         const FrameStats& s = result.stats;
         std::printf("triangles %u drawn %u culled %u clipped %u outside %u\n", s.triangles_in, s.triangles_drawn,

@@ -1,0 +1,52 @@
+// lib/ never allocates: the global operator new is replaced by a counting one, and a whole frame
+// (view, vertex projection, clear, z-buffer draw, band by band) must not call it.
+#include <hider/raster/zbuffer.hpp>
+
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include <doctest/doctest.h>
+
+#include "support/scene_util.hpp"
+
+namespace {
+long g_allocations = 0;
+}
+
+void* operator new(std::size_t n) {
+    ++g_allocations;
+    if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+    std::abort();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace hider;
+
+TEST_CASE("a whole frame makes no heap allocation") {
+    const tool::Scene s = test::load_model("teapot.obj");
+    std::vector<ScreenVertex> verts(s.positions.size());
+    std::vector<uint16_t> color(static_cast<size_t>(s.width) * 16), depth(color.size());
+    const Mesh mesh = s.mesh();
+    const long before = g_allocations;
+    View view;
+    REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
+    DrawOptions opt;
+    REQUIRE(project_vertices(view, mesh.positions, {verts.data(), verts.size()}, &opt.depth_range) == Status::ok);
+    uint32_t fragments = 0;
+    for (int y0 = 0; y0 < s.height; y0 += 16) {
+        const auto band = band_view<Rgb565Format>(color.data(), depth.data(), s.width, s.height, y0, std::min(s.height, y0 + 16));
+        clear(band, {0, 0, 0});
+        const FrameStats st = draw_zbuffer(view, mesh, {verts.data(), verts.size()}, band, opt);
+        CHECK(st.ok());
+        fragments += st.fragments;
+    }
+    CHECK(g_allocations == before);
+    CHECK(fragments > 5000);
+    SUBCASE("the counter itself works") {
+        std::vector<int>* v = new std::vector<int>(3);
+        CHECK(g_allocations > before);
+        delete v;
+    }
+}

@@ -1,0 +1,247 @@
+// The z-buffer renderer end to end on small scenes: intersection lines, near-plane crossing, culling,
+// shading, band rendering == full frame in every format, and the documented depth resolution.
+#include <hider/raster/zbuffer.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <doctest/doctest.h>
+
+#include "support/scene_util.hpp"
+
+using namespace hider;
+
+namespace {
+
+tool::Scene scene_of(const std::vector<std::array<tool::Vec3d, 3>>& tris, const tool::CameraArgs& cam) {
+    tool::ObjModel m;
+    uint32_t id = 1;
+    for (const auto& t : tris) {
+        tool::ObjFace f;
+        for (const auto& v : t) {
+            f.v.push_back(static_cast<int32_t>(m.vertices.size()));
+            m.vertices.push_back(v);
+        }
+        f.id = id++;
+        m.faces.push_back(f);
+    }
+    tool::Scene s;
+    std::string why;
+    const bool ok = tool::build_scene(m, cam, s, why);
+    REQUIRE_MESSAGE(ok, why);
+    return s;
+}
+
+tool::CameraArgs front_camera(double z = 5) {
+    tool::CameraArgs c;
+    c.eye = tool::Vec3d{0, 0, z};
+    c.target = tool::Vec3d{0, 0, 0};
+    c.up = tool::Vec3d{0, 1, 0};
+    c.fov_deg = 40;
+    c.near = 0.5;
+    c.far = 20;
+    return c;
+}
+
+tool::RenderResult render(const tool::Scene& s, tool::RenderOptions opt) {
+    tool::RenderResult r;
+    std::string why;
+    const bool ok = tool::render(s, opt, r, why);
+    REQUIRE_MESSAGE(ok, why);
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("two interpenetrating triangles split exactly along their intersection line") {
+    // A lies in z = 0, B in z = x / 2: they cross on x = 0, the centre column of the image.
+    const tool::Scene s = scene_of({{{{-2, -1, 0}, {2, -1, 0}, {0, 2, 0}}}, {{{-2, -1, -1}, {2, -1, 1}, {0, 2, 0}}}},
+                                   front_camera());
+    for (int bits : {16, 32}) {
+        const std::vector<uint32_t> ids = test::hider_ids(s, true, bits);
+        int checked = 0;
+        for (int y = 0; y < s.height; ++y)
+            for (int x = 0; x < s.width; ++x) {
+                const uint32_t id = ids[static_cast<size_t>(y) * s.width + x];
+                if (id == 0) continue;
+                if (x <= s.width / 2 - 2) { CHECK(id == 1); ++checked; }
+                if (x >= s.width / 2 + 1) { CHECK(id == 2); ++checked; }
+            }
+        CHECK(checked > 5000);
+    }
+}
+
+TEST_CASE("culling keeps counter-clockwise faces, drops clockwise ones, and --no-cull draws both") {
+    const std::array<tool::Vec3d, 3> ccw{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}};
+    const std::array<tool::Vec3d, 3> cw{{{-1, -1, 0}, {0, 1, 0}, {1, -1, 0}}};
+    tool::RenderOptions opt;
+    opt.format = tool::PixelFormat::rgb888;
+    const size_t centre = (120 * 320 + 160) * 3;
+    const tool::RenderResult front = render(scene_of({ccw}, front_camera()), opt);
+    CHECK(front.rgb[centre] == 255);  // facing the eye: N.z = 1
+    CHECK(front.stats.triangles_culled == 0);
+    const tool::RenderResult back = render(scene_of({cw}, front_camera()), opt);
+    CHECK(back.rgb[centre] == 0);
+    CHECK(back.stats.triangles_culled == 1);
+    opt.cull = false;
+    const tool::RenderResult both = render(scene_of({cw}, front_camera()), opt);
+    CHECK(both.rgb[centre] == 255);  // back side lit with -N.z
+}
+
+TEST_CASE("headlight brightness is N.z of the view-space face normal") {
+    // A face tilted 60 degrees from the view axis about y: N.z = cos 60 = 0.5.
+    const double c = std::cos(M_PI / 3), s = std::sin(M_PI / 3);
+    const tool::Scene sc = scene_of({{{{-c, -1, s}, {c, -1, -s}, {0, 1, 0}}}}, front_camera());
+    tool::RenderOptions opt;
+    opt.format = tool::PixelFormat::rgb888;
+    const tool::RenderResult r = render(sc, opt);
+    const size_t centre = (120 * 320 + 160) * 3;
+    CHECK(std::abs(r.rgb[centre] - 128) <= 1);
+}
+
+TEST_CASE("nothing behind the eye shows, and a triangle crossing the near plane is cut, not dropped") {
+    tool::CameraArgs cam = front_camera(0);
+    cam.target = tool::Vec3d{0, 0, -1};
+    cam.near = 0.5;
+    cam.far = 50;
+    SUBCASE("wholly behind the eye: nothing drawn") {
+        const tool::Scene s = scene_of({{{{-1, -1, 3}, {1, -1, 3}, {0, 1, 3}}}, {{{-50, -50, -40}, {50, -50, -40}, {0, 50, -40}}}}, cam);
+        const std::vector<uint32_t> ids = test::hider_ids(s, false);
+        for (uint32_t id : ids) CHECK(id != 1);
+    }
+    SUBCASE("a floor from behind the eye to far away is drawn up to the near plane") {
+        const tool::Scene s = scene_of({{{{-10, -1, 10}, {10, -1, 10}, {0, -1, -40}}}}, cam);
+        const std::vector<uint32_t> ids = test::hider_ids(s, false);
+        const std::vector<uint32_t> ref = ref::render_ids(test::ref_triangles(s), test::ref_camera(s), false);
+        const ref::Agreement a = ref::compare_ids(ids, ref, s.width, s.height);
+        CHECK(a.rate() >= 0.999);
+        long covered = 0;
+        for (uint32_t id : ids) covered += id != 0;
+        CHECK(covered > 10000);
+        tool::RenderOptions opt;
+        CHECK(render(s, opt).stats.triangles_clipped == 1);
+    }
+}
+
+TEST_CASE("band by band gives exactly the bytes of the full frame in every format and depth size") {
+    std::vector<tool::Scene> scenes;
+    tool::CameraArgs torus_cam;
+    torus_cam.eye = tool::Vec3d{0, 0, -2.5};
+    torus_cam.target = tool::Vec3d{0, 0, 0};
+    torus_cam.fov_deg = 73.7398;
+    torus_cam.near = 0.25;
+    scenes.push_back(test::load_model("torus.obj", torus_cam));
+    scenes.push_back(test::load_model("teapot.obj"));
+    tool::Scene huge;
+    std::string why;
+    REQUIRE(test::scene_from_ref(ref::huge_triangles(3), huge, why));
+    scenes.push_back(huge);
+    for (const tool::Scene& s : scenes)
+        for (tool::PixelFormat fmt : {tool::PixelFormat::rgb565, tool::PixelFormat::rgb888, tool::PixelFormat::grey8})
+            for (int bits : {16, 32})
+                for (Shade shade : {Shade::headlight, Shade::depth}) {
+                    tool::RenderOptions opt;
+                    opt.format = fmt;
+                    opt.depth_bits = bits;
+                    opt.shade = shade;
+                    opt.cull = bits == 16;
+                    const tool::RenderResult full = render(s, opt);
+                    for (int rows : {1, 7, 16, 61}) {
+                        opt.band_rows = rows;
+                        const tool::RenderResult banded = render(s, opt);
+                        CHECK(banded.rgb == full.rgb);
+                        CHECK(banded.stats.fragments == full.stats.fragments);
+                    }
+                }
+}
+
+TEST_CASE("the 16-bit buffer separates surfaces one stored LSB apart and merges closer ones") {
+    // Two screen-filling parallel quads at view distance w: the farther drawn first, then the nearer.
+    const double n = 1, f = 100, w = 50;
+    const double lsb16 = w * w * (1 / n - 1 / f) * 65536.0 / (4294967296.0 - 8192);  // CONVENTIONS.md
+    auto run = [&](double gap, int bits) {
+        const double zf = -w - gap / 2, zn = -w + gap / 2, e = 200;
+        tool::CameraArgs cam;
+        cam.eye = tool::Vec3d{0, 0, 0};
+        cam.target = tool::Vec3d{0, 0, -1};
+        cam.fov_deg = 40;
+        cam.near = n;
+        cam.far = f;
+        cam.width = 64;
+        cam.height = 48;
+        // The fit must not rescale: keep the scene bounding box fixed by adding far corners to both cases.
+        const tool::Scene s = scene_of({{{{-e, -e, zf}, {e, -e, zf}, {0, e, zf}}}, {{{-e, -e, zn}, {e, -e, zn}, {0, e, zn}}},
+                                        {{{-99, -99, -99}, {-99, -99, -99}, {-99, -99, -99}}}, {{{99, 99, 0}, {99, 99, 0}, {99, 99, 0}}}},
+                                       cam);
+        const std::vector<uint32_t> ids = test::hider_ids(s, true, bits);
+        long nearer = 0;
+        for (uint32_t id : ids) nearer += id == 2;
+        return static_cast<double>(nearer) / ids.size();
+    };
+    MESSAGE("16-bit resolution at w = 50 (near 1, far 100): " << lsb16 << " units");
+    CHECK(run(3 * lsb16, 16) == 1.0);    // separated everywhere
+    CHECK(run(lsb16 / 16, 16) < 0.25);   // mostly tied: the first drawn (farther) stays
+    // 32-bit: limited by the stepping error, (W + H) / 2 LSB of 2^32.
+    const double lsb32 = w * w * (1 / n - 1 / f) * (64 + 48) / 2 / (4294967296.0 - 8192);
+    MESSAGE("32-bit resolution at w = 50: " << lsb32 << " units");
+    CHECK(run(3 * lsb16 / 64, 32) == 1.0);  // far below the 16-bit limit, still separated with 32 bits
+    CHECK(run(4 * lsb32, 32) == 1.0);
+}
+
+TEST_CASE("draw_zbuffer rejects a frame it cannot use") {
+    const tool::Scene s = scene_of({{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}}}, front_camera());
+    View view;
+    REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
+    std::vector<ScreenVertex> verts(s.positions.size());
+    REQUIRE(project_vertices(view, s.mesh().positions, {verts.data(), verts.size()}) == Status::ok);
+    std::vector<uint16_t> color(static_cast<size_t>(s.width) * s.height), depth(color.size());
+    DrawOptions opt;
+    auto frame = frame_view<Rgb565Format>(color.data(), depth.data(), s.width, s.height);
+    CHECK(draw_zbuffer(view, s.mesh(), {verts.data(), verts.size()}, frame, opt).status == Status::ok);
+    auto no_depth = frame_view<Rgb565Format, uint16_t>(color.data(), nullptr, s.width, s.height);
+    CHECK(draw_zbuffer(view, s.mesh(), {verts.data(), verts.size()}, no_depth, opt).status == Status::invalid_argument);
+    auto small = frame_view<Rgb565Format>(color.data(), depth.data(), s.width - 1, s.height);
+    CHECK(draw_zbuffer(view, s.mesh(), {verts.data(), verts.size()}, small, opt).status == Status::invalid_argument);
+    CHECK(draw_zbuffer(view, s.mesh(), {verts.data(), 1}, frame, opt).status == Status::invalid_argument);
+    auto bad_band = band_view<Rgb565Format>(color.data(), depth.data(), s.width, s.height, 10, 5);
+    CHECK(draw_zbuffer(view, s.mesh(), {verts.data(), verts.size()}, bad_band, opt).status == Status::invalid_argument);
+    std::vector<ScreenVertex> few(1);
+    CHECK(project_vertices(view, s.mesh().positions, {few.data(), few.size()}) == Status::invalid_argument);
+}
+
+TEST_CASE("make_view and validate reject out-of-range cameras and meshes") {
+    Camera cam;
+    cam.eye = {Q16::from_int(0), Q16::from_int(0), Q16::from_int(5)};
+    cam.target = {};
+    cam.up = {Q16::from_int(0), Q16::from_int(1), Q16::from_int(0)};
+    cam.fovy = Angle::from_bam(0x20000000u);
+    cam.near = Q16::from_int(1);
+    cam.far = Q16::from_int(10);
+    View v;
+    CHECK(make_view(cam, 320, 240, v) == Status::ok);
+    CHECK(make_view(cam, 0, 240, v) == Status::invalid_argument);
+    CHECK(make_view(cam, 2048, 240, v) == Status::invalid_argument);
+    Camera c2 = cam;
+    c2.far = c2.near;
+    CHECK(make_view(c2, 320, 240, v) == Status::invalid_argument);
+    c2 = cam;
+    c2.near = Q16::from_raw(kMinNearRaw - 1);
+    CHECK(make_view(c2, 320, 240, v) == Status::invalid_argument);
+    c2 = cam;
+    c2.fovy = Angle::from_bam(0x80000000u);
+    CHECK(make_view(c2, 320, 240, v) == Status::invalid_argument);
+    c2 = cam;
+    c2.eye.z = Q16::from_int(9000);
+    CHECK(make_view(c2, 320, 240, v) == Status::out_of_range);
+    const Vec3q16 pts[3] = {{Q16::from_int(0), Q16::from_int(0), Q16::from_int(0)},
+                            {Q16::from_int(1), Q16::from_int(0), Q16::from_int(0)},
+                            {Q16::from_int(8192), Q16::from_int(0), Q16::from_int(0)}};
+    const Tri good{{0, 1, 0}}, bad{{0, 1, 3}};
+    Mesh m{{pts, 2}, {&good, 1}, {}, {}};
+    CHECK(validate(m) == Status::ok);
+    m.tris = {&bad, 1};
+    CHECK(validate(m) == Status::bad_data);
+    m = Mesh{{pts, 3}, {&good, 1}, {}, {}};
+    CHECK(validate(m) == Status::out_of_range);
+}

@@ -1,0 +1,111 @@
+// Test glue between fixed-point scenes and the double reference.
+#include "support/scene_util.hpp"
+
+#include <doctest/doctest.h>
+
+#include <hider/raster/zbuffer.hpp>
+
+#include "host/ppm.hpp"
+
+namespace hider::test {
+
+bool scene_from_ref(const ref::RefScene& in, tool::Scene& out, std::string& error) {
+    tool::ObjModel model;
+    for (const ref::RefTriangle& t : in.tris) {
+        tool::ObjFace f;
+        for (const ref::Vec3d& v : t.v) {
+            f.v.push_back(static_cast<int32_t>(model.vertices.size()));
+            model.vertices.push_back({v.x, v.y, v.z});
+        }
+        f.id = t.id;
+        model.faces.push_back(f);
+    }
+    tool::CameraArgs cam;
+    cam.eye = tool::Vec3d{in.cam.eye.x, in.cam.eye.y, in.cam.eye.z};
+    cam.target = tool::Vec3d{in.cam.target.x, in.cam.target.y, in.cam.target.z};
+    cam.up = tool::Vec3d{in.cam.up.x, in.cam.up.y, in.cam.up.z};
+    cam.fov_deg = in.cam.fovy_deg;
+    cam.near = in.cam.near;
+    cam.far = in.cam.far;
+    cam.width = in.cam.width;
+    cam.height = in.cam.height;
+    return tool::build_scene(model, cam, out, error);
+}
+
+tool::Scene load_model(const std::string& name, const tool::CameraArgs& cam) {
+    tool::ObjModel model;
+    tool::ObjError err;
+    tool::Scene s;
+    const bool loaded = tool::load_obj(std::string(HIDER_TEST_DATA) + "/models/" + name, model, err);
+    REQUIRE_MESSAGE(loaded, tool::format(err));
+    std::string why;
+    const bool built = tool::build_scene(model, cam, s, why);
+    REQUIRE_MESSAGE(built, why);
+    return s;
+}
+
+std::vector<ref::RefTriangle> ref_triangles(const tool::Scene& s) {
+    std::vector<ref::RefTriangle> out;
+    out.reserve(s.tris.size());
+    for (size_t i = 0; i < s.tris.size(); ++i) {
+        ref::RefTriangle t{};
+        for (int k = 0; k < 3; ++k) {
+            const Vec3q16& p = s.positions[s.tris[i].v[k]];
+            t.v[k] = {tool::to_double(p.x), tool::to_double(p.y), tool::to_double(p.z)};
+        }
+        t.id = s.ids[i];
+        out.push_back(t);
+    }
+    return out;
+}
+
+ref::RefCamera ref_camera(const tool::Scene& s) {
+    const Camera& c = s.camera;
+    auto v = [](const Vec3q16& p) { return ref::Vec3d{tool::to_double(p.x), tool::to_double(p.y), tool::to_double(p.z)}; };
+    return {v(c.eye), v(c.target), v(c.up), c.fovy.bam() / 4294967296.0 * 360.0, tool::to_double(c.near),
+            tool::to_double(c.far), s.width, s.height};
+}
+
+std::vector<uint32_t> hider_ids(const tool::Scene& s, bool cull, int depth_bits) {
+    tool::RenderOptions opt;
+    opt.shade = Shade::id;
+    opt.format = tool::PixelFormat::rgb888;
+    opt.cull = cull;
+    opt.depth_bits = depth_bits;
+    tool::RenderResult r;
+    std::string why;
+    const bool ok = tool::render(s, opt, r, why);
+    REQUIRE_MESSAGE(ok, why);
+    return tool::decode_ids(r);
+}
+
+std::vector<int> coverage_counts(const tool::Scene& s, bool cull) {
+    View view;
+    REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
+    const Mesh mesh = s.mesh();
+    std::vector<ScreenVertex> verts(mesh.positions.size());
+    REQUIRE(project_vertices(view, mesh.positions, {verts.data(), verts.size()}) == Status::ok);
+    std::vector<int> counts(static_cast<size_t>(s.width) * s.height, 0);
+    FrameStats st;
+    for (size_t t = 0; t < mesh.tris.size(); ++t) {
+        detail::for_each_piece(view, mesh, {verts.data(), verts.size()}, t, st,
+                               [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+                                   const int32_t area = TriangleRaster::signed_area(a, b, c);
+                                   if (area == 0 || (cull && area > 0)) return;
+                                   TriangleRaster tr;
+                                   tr.setup(a, b, c, s.width, s.height);
+                                   tr.spans(max(0, tr.first_row()), min(s.height, tr.end_row()),
+                                            [&](int32_t y, int32_t x0, int32_t x1, uint32_t) {
+                                                for (int32_t x = x0; x < x1; ++x) ++counts[static_cast<size_t>(y) * s.width + x];
+                                            });
+                               });
+    }
+    return counts;
+}
+
+void dump_ppm(const std::string& name, int width, int height, const std::vector<uint8_t>& rgb) {
+    std::string err;
+    port::write_ppm(std::string(HIDER_TEST_OUT) + "/" + name + ".ppm", width, height, rgb, err);
+}
+
+}  // namespace hider::test

@@ -1,0 +1,34 @@
+// Test glue between hider's fixed-point scenes and the double reference: the reference always sees the
+// exact values hider works with (fixed positions and camera), so agreement tests measure the renderer.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "support/reference.hpp"
+#include "support/scenes.hpp"
+
+namespace hider::test {
+
+/// Builds a hider Scene from a generated reference scene (same ids, same camera); false + reason on failure.
+bool scene_from_ref(const ref::RefScene& in, tool::Scene& out, std::string& error);
+
+/// Loads tests/data/models/<name> with default framing at width x height (or a given camera).
+tool::Scene load_model(const std::string& name, const tool::CameraArgs& cam = {});
+
+/// The triangles and camera exactly as hider sees them, in double.
+std::vector<ref::RefTriangle> ref_triangles(const tool::Scene& s);
+ref::RefCamera ref_camera(const tool::Scene& s);
+
+/// Face-id image rendered by hider (z-buffer) for the scene.
+std::vector<uint32_t> hider_ids(const tool::Scene& s, bool cull, int depth_bits = 16);
+
+/// How many triangles cover each pixel centre (pipeline projection and clipping, rasterizer coverage,
+/// no depth test). Both windings count unless cull is set.
+std::vector<int> coverage_counts(const tool::Scene& s, bool cull);
+
+/// Writes an RGB888 image as a PNG-free PPM for inspection of failures (into HIDER_TEST_OUT).
+void dump_ppm(const std::string& name, int width, int height, const std::vector<uint8_t>& rgb);
+
+}  // namespace hider::test
