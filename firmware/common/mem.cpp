@@ -43,7 +43,13 @@ void* memset(void* dst, int value, size_t n) {
     const auto byte = static_cast<unsigned char>(value);
     if (both_aligned(d, d)) {
         const uint32_t word = byte * 0x01010101u;
-        for (; n >= 4; n -= 4, d += 4) *reinterpret_cast<Word*>(d) = word;
+        Word* w = reinterpret_cast<Word*>(d);
+        for (; n >= 32; n -= 32, w += 8) {  // eight words a turn: frame clears are large
+            w[0] = word; w[1] = word; w[2] = word; w[3] = word;
+            w[4] = word; w[5] = word; w[6] = word; w[7] = word;
+        }
+        for (; n >= 4; n -= 4) *w++ = word;
+        d = reinterpret_cast<unsigned char*>(w);
     }
     for (; n != 0; --n) *d++ = byte;
     return dst;

@@ -8,25 +8,101 @@
 
 namespace hider {
 
-/// Exact 32x32 -> 64-bit signed product. The single place a target-specific multiply would go.
-constexpr int64_t mul_wide(int32_t a, int32_t b) { return static_cast<int64_t>(a) * b; }
+/// Exact 32x32 -> 64-bit unsigned product. On ARMv6-M (no long multiply instruction) it is built from
+/// four 16x16 products instead of a call to __aeabi_lmul; the result is the same on every target.
+constexpr uint64_t mul_wide_u(uint32_t a, uint32_t b) {
+#if defined(__ARM_ARCH_6M__)
+    const uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    const uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
+    const uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu);
+    const uint32_t hi = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+    return (uint64_t{hi} << 32) | ((mid << 16) | (ll & 0xFFFFu));
+#else
+    return uint64_t{a} * b;
+#endif
+}
+
+/// Exact 32x32 -> 64-bit signed product (two's-complement correction of the unsigned one).
+constexpr int64_t mul_wide(int32_t a, int32_t b) {
+#if defined(__ARM_ARCH_6M__)
+    const uint32_t ua = static_cast<uint32_t>(a), ub = static_cast<uint32_t>(b);
+    uint64_t p = mul_wide_u(ua, ub);
+    if (a < 0) p -= uint64_t{ub} << 32;
+    if (b < 0) p -= uint64_t{ua} << 32;
+    return static_cast<int64_t>(p);
+#else
+    return static_cast<int64_t>(a) * b;
+#endif
+}
+
+/// Number of leading zero bits of a nonzero 32-bit value.
+constexpr int clz32(uint32_t v) {
+    int n = 0;
+    if (v <= 0x0000FFFFu) { n += 16; v <<= 16; }
+    if (v <= 0x00FFFFFFu) { n += 8; v <<= 8; }
+    if (v <= 0x0FFFFFFFu) { n += 4; v <<= 4; }
+    if (v <= 0x3FFFFFFFu) { n += 2; v <<= 2; }
+    if (v <= 0x7FFFFFFFu) { n += 1; }
+    return n;
+}
+
+/// floor(n / d) and the remainder for n < d * 2^32 (so the quotient fits 32 bits), d != 0.
+/// Long division in two 16-bit digits with 32-bit divides (Hacker's Delight, divlu): exact, and far
+/// cheaper than a generic 64-bit division where the CPU has no 64-bit divide (all our targets).
+constexpr uint32_t udiv64_32(uint64_t n, uint32_t d, uint32_t& rem) {
+    const int s = clz32(d);
+    const uint32_t v = d << s, vn1 = v >> 16, vn0 = v & 0xFFFFu;
+    const uint32_t u1 = static_cast<uint32_t>(n >> 32), u0 = static_cast<uint32_t>(n);
+    const uint32_t un32 = s == 0 ? u1 : (u1 << s) | (u0 >> (32 - s));
+    const uint32_t un10 = u0 << s, un1 = un10 >> 16, un0 = un10 & 0xFFFFu;
+    uint32_t q1 = un32 / vn1, rhat = un32 - q1 * vn1;
+    while (q1 > 0xFFFFu || q1 * vn0 > ((rhat << 16) | un1)) {
+        --q1;
+        rhat += vn1;
+        if (rhat > 0xFFFFu) break;
+    }
+    const uint32_t un21 = (un32 << 16) + un1 - q1 * v;
+    uint32_t q0 = un21 / vn1;
+    rhat = un21 - q0 * vn1;
+    while (q0 > 0xFFFFu || q0 * vn0 > ((rhat << 16) | un0)) {
+        --q0;
+        rhat += vn1;
+        if (rhat > 0xFFFFu) break;
+    }
+    rem = ((un21 << 16) + un0 - q0 * v) >> s;
+    return (q1 << 16) | q0;
+}
 
 /// floor(a * b / 2^shift) for 0 <= shift < 63, computed exactly in 64 bits.
 constexpr int64_t mul_shift(int32_t a, int32_t b, int shift) { return mul_wide(a, b) >> shift; }
 
 /// n / d rounded to nearest, ties away from zero; d == 0 saturates to the sign of n (0 / 0 = 0).
 /// The result is exact for every int64 pair except INT64_MIN / -1, which saturates to INT64_MAX.
+/// Quotients below 2^32 with a 32-bit divisor take udiv64_32 instead of a 64-bit division.
 constexpr int64_t div_round(int64_t n, int64_t d) {
     if (d == 0) return n > 0 ? INT64_MAX : (n < 0 ? INT64_MIN : 0);
     if (d == -1 && n == INT64_MIN) return INT64_MAX;
     const uint64_t un = n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
     const uint64_t ud = d < 0 ? 0 - static_cast<uint64_t>(d) : static_cast<uint64_t>(d);
-    uint64_t q = un / ud;
-    const uint64_t r = un - q * ud;
+    uint64_t q = 0, r = 0;
+    if (ud <= 0xFFFFFFFFu && (un >> 32) < ud) {
+        uint32_t r32 = 0;
+        q = udiv64_32(un, static_cast<uint32_t>(ud), r32);
+        r = r32;
+    } else {
+        q = un / ud;
+        r = un - q * ud;
+    }
     if (r >= ud - r) ++q;  // r >= d/2 without overflow: ties go away from zero
     const bool negative = (n < 0) != (d < 0);
     if (!negative) return q > static_cast<uint64_t>(INT64_MAX) ? INT64_MAX : static_cast<int64_t>(q);
     return q > static_cast<uint64_t>(INT64_MAX) ? INT64_MIN : -static_cast<int64_t>(q);
+}
+
+/// floor(n / d) for int32 n and d > 0 (C++ '/' truncates toward zero instead).
+constexpr int32_t div_floor32(int32_t n, int32_t d) {
+    const int32_t q = n / d;
+    return (n % d != 0 && n < 0) ? q - 1 : q;
 }
 
 /// floor(n / d) for d > 0 (exact; C++ '/' truncates toward zero instead).

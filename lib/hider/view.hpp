@@ -46,7 +46,7 @@ constexpr int kClipPlaneCount = 6;
 /// near/far order, eye == target, up parallel to the view), out_of_range (eye/target outside the world range).
 inline Status make_view(const Camera& cam, int32_t width, int32_t height, View& out) {
     if (width < 1 || height < 1 || width > kMaxFrameSide || height > kMaxFrameSide) return Status::invalid_argument;
-    const uint32_t half_degree = 0x00B60B61u;  // 2^32 / 720
+    const uint32_t half_degree = 0x005B05B0u;  // 2^32 / 720, rounded down
     if (cam.fovy.bam() < half_degree || cam.fovy.bam() > 0x80000000u - half_degree) return Status::invalid_argument;
     if (cam.near.raw() < kMinNearRaw || cam.far.raw() <= cam.near.raw()) return Status::invalid_argument;
     const Vec3q16 pts[2] = {cam.eye, cam.target};

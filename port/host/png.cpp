@@ -3,6 +3,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 namespace hider::port {
@@ -80,6 +81,8 @@ bool write_png(const std::string& path, int width, int height, const std::vector
     f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
     f.close();
     if (!f) {
+        std::error_code ignored;  // a truncated file holds a partial image: do not leave it behind
+        if (std::filesystem::is_regular_file(path, ignored)) std::filesystem::remove(path, ignored);
         error = path + ": write failed";
         return false;
     }

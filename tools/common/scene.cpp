@@ -16,7 +16,8 @@ std::string fmt(double v) {
     return s.str();
 }
 
-double length(const Vec3d& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+// hypot, not sqrt of squares: the squares overflow above ~1e154 and underflow below ~1e-154.
+double length(const Vec3d& v) { return std::hypot(v[0], v[1], v[2]); }
 Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
 /// Nearest Q16 to v; false if it does not fit int32.
@@ -80,8 +81,14 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
     }
     const Vec3d up = args.up.value_or(Vec3d{0, 1, 0});
     const double dist = length(sub(eye, mid));
-    double far = args.far.value_or((dist + r) * 1.01);
+    if (!std::isfinite(dist) || !std::isfinite((dist + r) * 1.01)) {
+        error = "scene is too large to represent (eye " + fmt(dist) + " from the model)";
+        return false;
+    }
+    // Defaults frame the model; a near or far given alone is never compared with the other's default.
+    double far = args.far.value_or(std::max((dist + r) * 1.01, args.near.value_or(0.0) * 2));
     double near = args.near.value_or(std::max((dist - r) * 0.99, far / 1000.0));
+    if (!args.near && args.far && near >= far) near = far / 1000.0;
     if (!(near > 0) || !std::isfinite(near)) {
         error = "near plane must be > 0 (got " + fmt(near) + ")";
         return false;
@@ -161,11 +168,23 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
             s.ids.push_back(f.id);
         }
     }
+    // make_view() answers invalid_argument for several reasons: name the one that applies, in user units.
+    if (cam.far.raw() <= cam.near.raw()) {
+        error = "near plane (" + fmt(near) + ") and far plane (" + fmt(far) +
+                ") are too close together to tell apart in fixed point";
+        return false;
+    }
+    if (cam.eye == cam.target) {
+        error = "eye and target are too close together for a scene of extent " + fmt(half * 2);
+        return false;
+    }
     View probe;
     const Status st = make_view(cam, s.width, s.height, probe);
     if (st != Status::ok) {
-        error = st == Status::invalid_argument ? "up vector is parallel to the view direction"
-                                               : std::string("camera rejected: ") + status_name(st);
+        Transform unused;
+        error = look_at(cam.eye, cam.target, cam.up, unused) != Status::ok
+                    ? std::string("up vector is parallel to the view direction")
+                    : std::string("camera rejected: ") + status_name(st);
         return false;
     }
     out = std::move(s);

@@ -1,6 +1,7 @@
 // hider-render: renders an OBJ model to a binary PPM with lib/ (the same code that runs on the chip).
 // Usage: see usage() below and README.md. Errors print "file:line: what" or a plain reason and exit 2.
 #include <cerrno>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -25,7 +26,8 @@ const char* kUsage =
     "                    [--stats]\n";
 
 [[noreturn]] void fail(const std::string& msg) {
-    std::cerr << "hider-render: " << msg << "\n";
+    std::cerr << "hider-render: " << msg;
+    if (msg.empty() || msg.back() != '\n') std::cerr << '\n';
     std::exit(2);
 }
 
@@ -38,7 +40,7 @@ bool parse_double(const std::string& s, double& out) {
 }
 
 bool parse_int(const std::string& s, long& out) {
-    if (s.empty()) return false;
+    if (s.empty() || !(std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '-')) return false;
     char* end = nullptr;
     errno = 0;
     out = std::strtol(s.c_str(), &end, 10);
@@ -89,6 +91,7 @@ int main(int argc, char** argv) {
         else if (a == "--fov") {
             const std::string v = value();
             if (!parse_double(v, cam.fov_deg)) fail("--fov: bad number '" + v + "'");
+            if (!(cam.fov_deg >= 0.5 && cam.fov_deg <= 179.5)) fail("--fov " + v + " out of range (0.5..179.5 degrees)");
         } else if (a == "--near" || a == "--far") {
             const std::string v = value();
             double d = 0;
@@ -111,7 +114,7 @@ int main(int argc, char** argv) {
         } else if (a == "--band") {
             const std::string v = value();
             long rows = 0;
-            if (!parse_int(v, rows) || rows < 1 || rows > kMaxFrameSide) fail("--band needs a row count 1..1024 (got '" + v + "')");
+            if (!parse_int(v, rows) || rows < 1 || rows > kMaxFrameSide) fail("--band needs a row count 1.." + std::to_string(kMaxFrameSide) + " (got '" + v + "')");
             opt.band_rows = static_cast<int>(rows);
         } else if (a == "--format") {
             const std::string v = value();

@@ -19,6 +19,7 @@ template <bool kCount, class Depth, class Pixel, class Shader>
 inline uint32_t span_depth_test(Pixel* crow, Depth* zrow, int32_t x0, int32_t x1, uint32_t z_q32, uint32_t dz_q32,
                                 const Shader& shade) {
     constexpr int kShift = DepthTraits<Depth>::kShift;
+    const Shader shader = shade;  // a local copy: stores to the buffers cannot alias it
     Depth* zp = zrow + x0;
     Pixel* cp = crow + x0;
     uint32_t written = 0;
@@ -26,7 +27,7 @@ inline uint32_t span_depth_test(Pixel* crow, Depth* zrow, int32_t x0, int32_t x1
         const Depth depth = static_cast<Depth>(z_q32 >> kShift);
         if (depth < *zp) {
             *zp = depth;
-            *cp = shade(z_q32);
+            *cp = shader(z_q32);
             if constexpr (kCount) ++written;
         }
     }
@@ -36,8 +37,9 @@ inline uint32_t span_depth_test(Pixel* crow, Depth* zrow, int32_t x0, int32_t x1
 /// Painting span without a depth buffer (painter's algorithms): every pixel is written.
 template <class Pixel, class Shader>
 inline void span_paint(Pixel* crow, int32_t x0, int32_t x1, uint32_t z_q32, uint32_t dz_q32, const Shader& shade) {
+    const Shader shader = shade;
     Pixel* cp = crow + x0;
-    for (int32_t n = x1 - x0; n > 0; --n, ++cp, z_q32 += dz_q32) *cp = shade(z_q32);
+    for (int32_t n = x1 - x0; n > 0; --n, ++cp, z_q32 += dz_q32) *cp = shader(z_q32);
 }
 
 }  // namespace hider

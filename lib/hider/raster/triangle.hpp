@@ -1,7 +1,7 @@
 // Triangle setup and exact row traversal. Screen coordinates are integers in 1/16 pixel, relative to
 // the frame centre (see CONVENTIONS.md); pixels are sampled at their centres with the top-left rule.
 // Coverage uses Pineda edge functions evaluated exactly in int32; each row's span ends are found by
-// walking the two active edges (no division per row). Depth is the plane through the three vertices,
+// stepping the two active edges as exact DDAs (no division per row). Depth is the plane through the three vertices,
 // stepped by dz/dx per pixel and dz/dy per row (Giesen, "Triangle rasterization in practice").
 #pragma once
 #include <hider/fixed.hpp>
@@ -69,22 +69,17 @@ public:
     /// to [0, width); z is the depth at (x0, y). Returns the number of pixels covered.
     template <class Fn>
     uint32_t spans(int32_t y_begin, int32_t y_end, Fn&& fn) const {
+        const int32_t y0 = max(row_top_, y_begin), y1 = min(row_bottom_, y_end);
+        if (y0 >= y1) return 0;
+        const int32_t y_mid = clamp(row_mid_, y0, y1);
+        Walker long_walker = walker(edge_index(top_, bottom_), y0);
         uint32_t covered = 0;
-        const int32_t upper_end = min(row_mid_, y_end);
-        if (max(row_top_, y_begin) < upper_end)
-            covered += half(edge_index(top_, mid_), max(row_top_, y_begin), upper_end, fn);
-        const int32_t lower_end = min(row_bottom_, y_end);
-        if (max(row_mid_, y_begin) < lower_end)
-            covered += half(edge_index(mid_, bottom_), max(row_mid_, y_begin), lower_end, fn);
+        if (y0 < y_mid) covered += rows(long_walker, walker(edge_index(top_, mid_), y0), y0, y_mid, fn);
+        if (y_mid < y1) covered += rows(long_walker, walker(edge_index(mid_, bottom_), y_mid), y_mid, y1, fn);
         return covered;
     }
 
 private:
-    /// Edge walker: e = edge function at the current pixel centre + top-left bias.
-    struct Walker {
-        int32_t px, e, step_x, step_y;
-    };
-
     int32_t first_row_at_or_below(int32_t y_sub) const {
         return static_cast<int32_t>(div_floor(int64_t{y_sub} - y_origin_ + kSubpixel - 1, kSubpixel));
     }
@@ -114,54 +109,66 @@ private:
         return z_ref_ + dzdx_ * static_cast<uint32_t>(px - ref_px_) + dzdy_ * static_cast<uint32_t>(py - ref_py_);
     }
 
+    /// One edge as a DDA with an exact error term. g is the (top-left biased) edge function turned so
+    /// that g >= 0 exactly on the covered side and g grows by `a` per pixel to the right; px is the
+    /// boundary: the smallest px with g >= 0 (first covered pixel of a left edge, one past the last of a
+    /// right edge), so g lies in [0, a). Per row: g += m, px += q, then one correction step. z is the
+    /// depth at px (used for left edges).
+    struct Walker {
+        int32_t px, g, a, m, q;
+        bool left;
+        uint32_t z, dz_row;
+    };
+
+    /// Walker for edge (v[edge] -> v[edge + 1]) on row py. Cost: one int32 division, two for edges
+    /// flatter than one pixel per row.
     Walker walker(int edge, int32_t py) const {
         const int a = edge, b = (edge + 1) % 3;
         const int32_t dx = x_[b] - x_[a], dy = y_[b] - y_[a];
         const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;  // top-left rule
         const int32_t yc = py * kSubpixel + y_origin_;
-        // e(px) = e0 + px * step_x, where e0 is the biased edge function at pixel 0 of this row.
+        // Biased edge function at the centre of pixel 0 of row py; exact in int32 (CONVENTIONS.md).
         const int32_t e0 = dx * (yc - y_[a]) - dy * (x_origin_ - x_[a]) + bias;
-        Walker w{0, 0, -dy * kSubpixel, dx * kSubpixel};
-        if (w.step_x > 0) {  // left edge: first px with e >= 0
-            w.px = static_cast<int32_t>(div_floor(-int64_t{e0} + w.step_x - 1, w.step_x));
-        } else {             // right edge: first px with e < 0
-            w.px = static_cast<int32_t>(div_floor(e0, -w.step_x)) + 1;
-        }
-        w.e = e0 + w.px * w.step_x;
+        Walker w{};
+        w.left = dy < 0;  // the edge function grows to the right, so the covered side is to the right
+        w.a = (w.left ? -dy : dy) * kSubpixel;
+        const int32_t g0 = w.left ? e0 : -e0 - 1;
+        const int32_t dg = (w.left ? dx : -dx) * kSubpixel;  // change of g per row at a fixed px
+        w.px = -div_floor32(g0, w.a);
+        w.g = g0 + w.px * w.a;
+        if (dg >= 0 && dg < w.a) w.q = 0;
+        else if (dg < 0 && dg >= -w.a) w.q = 1;
+        else w.q = -div_floor32(dg, w.a);
+        w.m = dg + w.q * w.a;  // dg mod a, in [0, a)
+        w.z = depth_at(w.px, py);
+        w.dz_row = dzdy_ + dzdx_ * static_cast<uint32_t>(w.q);
         return w;
     }
 
+    static void step(Walker& w, uint32_t dzdx) {
+        w.g += w.m;
+        w.px += w.q;
+        w.z += w.dz_row;
+        if (w.g >= w.a) { w.g -= w.a; --w.px; w.z -= dzdx; }
+    }
+
+    /// Rows [y, y_end) between two walkers standing on row y; leaves both on row y_end.
     template <class Fn>
-    uint32_t half(int short_edge, int32_t y_begin, int32_t y_end, Fn& fn) const {
-        const int long_edge = edge_index(top_, bottom_);
-        Walker w0 = walker(long_edge, y_begin), w1 = walker(short_edge, y_begin);
-        Walker& left = w0.step_x > 0 ? w0 : w1;
-        Walker& right = w0.step_x > 0 ? w1 : w0;
-        uint32_t z_left = depth_at(left.px, y_begin);
-        uint32_t z_col0 = depth_at(0, y_begin);
+    uint32_t rows(Walker& w0, Walker w1, int32_t y, int32_t y_end, Fn& fn) const {
+        Walker& left = w0.left ? w0 : w1;
+        Walker& right = w0.left ? w1 : w0;
+        uint32_t z_col0 = depth_at(0, y);  // depth at pixel 0, for spans that start off-screen
         uint32_t covered = 0;
-        for (int32_t y = y_begin;;) {
+        for (; y < y_end; ++y) {
             const int32_t x0 = max(left.px, int32_t{0});
             const int32_t x1 = min(right.px, width_);
             if (x0 < x1) {
-                fn(y, x0, x1, left.px < 0 ? z_col0 : z_left);
+                fn(y, x0, x1, left.px < 0 ? z_col0 : left.z);
                 covered += static_cast<uint32_t>(x1 - x0);
             }
-            if (++y == y_end) break;
-            z_left += dzdy_;
+            step(left, dzdx_);
+            step(right, dzdx_);
             z_col0 += dzdy_;
-            left.e += left.step_y;
-            if (left.e < 0) {
-                do { ++left.px; left.e += left.step_x; z_left += dzdx_; } while (left.e < 0);
-            } else {
-                while (left.e - left.step_x >= 0) { --left.px; left.e -= left.step_x; z_left -= dzdx_; }
-            }
-            right.e += right.step_y;
-            if (right.e >= 0) {
-                do { ++right.px; right.e += right.step_x; } while (right.e >= 0);
-            } else {
-                while (right.e - right.step_x < 0) { --right.px; right.e -= right.step_x; }
-            }
         }
         return covered;
     }

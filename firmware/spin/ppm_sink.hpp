@@ -1,0 +1,91 @@
+// A BandSink that streams RGB565 rows as a binary PPM (P6, maxval 255) to an output, the way a display
+// driver would take them: each pixel expands to RGB888 by Rgb565Format::unpack (bit replication, as
+// port/host/ppm.hpp's append_rgb888), one row at a time through a caller-owned row buffer. The call
+// order is checked with BandSequenceChecker. Freestanding: firmware and host references share it.
+#pragma once
+#include <hider/frame.hpp>
+
+#include "display/sink.hpp"
+
+namespace spin {
+
+/// Output: any type with `bool write(const void* data, size_t size)` (semihosted file, stdio, memory).
+template <class Output>
+class PpmSink {
+public:
+    /// Borrows `out` and `row_rgb` (3 bytes per pixel of the widest frame accepted) for its lifetime.
+    PpmSink(Output& out, hider::Span<uint8_t> row_rgb)
+        : out_(out), row_(row_rgb), checker_(static_cast<uint16_t>(row_rgb.size() / 3)) {}
+
+    /// The sink to hand to a renderer; valid while this object lives.
+    hider::port::BandSink sink() { return {this, &begin_thunk, &write_thunk, &end_thunk}; }
+
+    /// First refusal seen (ok if none): a contract breach from the checker, or not_ready when the
+    /// output refused bytes.
+    hider::port::BandStatus status() const { return status_; }
+
+private:
+    static PpmSink& self(void* user) { return *static_cast<PpmSink*>(user); }
+    static bool begin_thunk(void* user, uint16_t width, uint16_t height) { return self(user).begin(width, height); }
+    static bool write_thunk(void* user, uint16_t y0, uint16_t rows, const uint16_t* rgb565, uint32_t stride_px) {
+        return self(user).rows(y0, rows, rgb565, stride_px);
+    }
+    static bool end_thunk(void* user) { return self(user).end(); }
+
+    bool refuse(hider::port::BandStatus s) {
+        if (status_ == hider::port::BandStatus::ok) status_ = s;
+        return false;
+    }
+
+    /// Appends the decimal digits of v at p; returns the end.
+    static char* decimal(char* p, uint32_t v) {
+        char digits[10];
+        int n = 0;
+        do { digits[n++] = static_cast<char>('0' + v % 10u); v /= 10u; } while (v != 0);
+        while (n > 0) *p++ = digits[--n];
+        return p;
+    }
+
+    bool begin(uint16_t width, uint16_t height) {
+        const hider::port::BandStatus s = checker_.begin_frame(width, height);
+        if (s != hider::port::BandStatus::ok) return refuse(s);
+        char header[32] = {'P', '6', '\n'};  // "P6\n<W> <H>\n255\n", as port/host/ppm.cpp writes it
+        char* p = decimal(header + 3, width);
+        *p++ = ' ';
+        p = decimal(p, height);
+        const char tail[] = "\n255\n";
+        for (int i = 0; i < 5; ++i) *p++ = tail[i];
+        if (!out_.write(header, static_cast<size_t>(p - header))) return refuse(hider::port::BandStatus::not_ready);
+        return true;
+    }
+
+    bool rows(uint16_t y0, uint16_t count, const uint16_t* rgb565, uint32_t stride_px) {
+        const hider::port::BandStatus s = checker_.write_rows(y0, count, rgb565, stride_px);
+        if (s != hider::port::BandStatus::ok) return refuse(s);
+        const uint16_t width = checker_.width();
+        for (uint16_t r = 0; r < count; ++r) {
+            const uint16_t* src = rgb565 + size_t{r} * stride_px;
+            uint8_t* dst = row_.data();
+            for (uint16_t x = 0; x < width; ++x, dst += 3) {
+                const hider::Rgb c = hider::Rgb565Format::unpack(src[x]);
+                dst[0] = c.r;
+                dst[1] = c.g;
+                dst[2] = c.b;
+            }
+            if (!out_.write(row_.data(), size_t{width} * 3)) return refuse(hider::port::BandStatus::not_ready);
+        }
+        return true;
+    }
+
+    bool end() {
+        const hider::port::BandStatus s = checker_.end_frame();
+        return s == hider::port::BandStatus::ok ? true : refuse(s);
+    }
+
+    Output& out_;
+    hider::Span<uint8_t> row_;
+    hider::port::BandSequenceChecker checker_;
+    hider::port::BandStatus status_ = hider::port::BandStatus::ok;
+};
+
+}  // namespace spin

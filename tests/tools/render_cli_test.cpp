@@ -1,0 +1,542 @@
+// Tests for the hider-render command line: runs the real binary (HIDER_RENDER_EXE) through /bin/sh and
+// checks its contract. Errors: exit 2, a first stderr line "hider-render: <file:line: what | reason>"
+// (only usage errors print more: the usage text), nothing on stdout and no output file. Success: exit 0
+// and a P6 file "P6\n<W> <H>\n255\n" + W*H*3 bytes. Fixtures: tests/data/bad/ (one error each, line
+// numbers stated in their first line) and small models written at test time into HIDER_TEST_OUT.
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Args = std::vector<std::string>;
+
+const std::string kExe = HIDER_RENDER_EXE;
+const std::string kBad = std::string(HIDER_TEST_DATA) + "/bad/";
+
+/// Scratch directory of this file's tests (created on first use).
+const std::string& scratch() {
+    static const std::string dir = [] {
+        const std::string d = std::string(HIDER_TEST_OUT) + "/render_cli";
+        std::error_code ec;
+        fs::create_directories(d, ec);
+        return d;
+    }();
+    return dir;
+}
+
+std::string scratch_path(const std::string& name) { return scratch() + "/" + name; }
+
+/// The default output path every run checks for (removed before each run).
+std::string out_ppm() { return scratch_path("out.ppm"); }
+
+bool exists(const std::string& path) {
+    std::error_code ec;
+    return fs::exists(fs::symlink_status(path, ec));
+}
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// Writes `text` to a scratch file and returns its path.
+std::string write_model(const std::string& name, const std::string& text) {
+    const std::string path = scratch_path(name);
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+std::string shell_quoted(const std::string& s) {
+    std::string q = "'";
+    for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+struct Run {
+    std::string command;          ///< as given to the shell, for failure messages
+    int code = -1;                ///< exit status; -1 if the process did not exit normally
+    std::string out, err;         ///< stdout, stderr
+    bool output_created = false;  ///< whether the output path exists after the run
+};
+
+/// Runs hider-render with `args` (after the shell commands in `prefix`, if any). `output` is removed
+/// before the run and looked for after it; it should be the path given with -o, if any.
+Run run(const Args& args, const std::string& output = out_ppm(), const std::string& prefix = "") {
+    const std::string out_file = scratch_path("stdout.txt"), err_file = scratch_path("stderr.txt");
+    std::error_code ec;
+    fs::remove(output, ec);
+    std::string cmd = shell_quoted(kExe);
+    for (const std::string& a : args) cmd += " " + shell_quoted(a);
+    Run r;
+    r.command = cmd;
+    const std::string line = prefix + cmd + " >" + shell_quoted(out_file) + " 2>" + shell_quoted(err_file);
+    const int status = std::system(line.c_str());
+    r.code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = read_file(out_file);
+    r.err = read_file(err_file);
+    r.output_created = exists(output);
+    return r;
+}
+
+/// hider-render MODEL -o out.ppm EXTRA...
+Run render(const std::string& model, const Args& extra = {}) {
+    Args args{model, "-o", out_ppm()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run(args);
+}
+
+std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+enum class Usage { no, yes };
+
+/// Checks the error contract on `r`: exit 2, empty stdout, no output file, one stderr line that starts
+/// "hider-render: " and contains every part; with Usage::yes the usage text follows that line instead.
+void check_error(const Run& r, const std::vector<std::string>& parts, Usage usage = Usage::no) {
+    INFO("command: ", r.command);
+    INFO("stderr: ", r.err);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK_FALSE(r.output_created);
+    const std::string line = first_line(r.err);
+    CHECK(line.rfind("hider-render: ", 0) == 0);
+    for (const std::string& part : parts) {
+        INFO("expected in the first line: ", part);
+        CHECK(contains(line, part));
+    }
+    const std::string rest = r.err.size() > line.size() ? r.err.substr(line.size() + 1) : std::string();
+    if (usage == Usage::yes) {
+        CHECK(rest.rfind("usage: hider-render MODEL.obj", 0) == 0);
+    } else {
+        CHECK(r.err == line + "\n");  // exactly one line
+    }
+}
+
+/// A counter-clockwise (front-facing from +z) triangle around the origin; the default camera frames it.
+const std::string kTriangle = "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n";
+
+std::string triangle_model() { return write_model("triangle.obj", kTriangle); }
+
+/// Looks down -z at the origin from z = 5, so the centre pixel sees (0, 0, 0).
+const Args kFrontCamera{"--eye", "0,0,5", "--target", "0,0,0"};
+
+Args with(Args a, const Args& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+/// A P6 file as hider-render writes it: exact header, then exactly w*h*3 bytes (else `ok` is false).
+struct Image {
+    bool ok = false;
+    int width = 0, height = 0;
+    std::string rgb;
+
+    /// Pixel (x, y) as 0xRRGGBB, or 0xFFFFFFFF outside the image.
+    uint32_t at(int x, int y) const {
+        if (x < 0 || y < 0 || x >= width || y >= height) return 0xFFFFFFFFu;
+        const size_t i = (static_cast<size_t>(y) * width + x) * 3;
+        const auto byte = [&](size_t k) { return static_cast<uint32_t>(static_cast<unsigned char>(rgb[i + k])); };
+        return byte(0) << 16 | byte(1) << 8 | byte(2);
+    }
+};
+
+Image read_image(const std::string& path, int width, int height) {
+    const std::string bytes = read_file(path);
+    const std::string header = "P6\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
+    Image img;
+    img.ok = bytes.rfind(header, 0) == 0 && bytes.size() == header.size() + static_cast<size_t>(width) * height * 3;
+    if (img.ok) {
+        img.width = width;
+        img.height = height;
+        img.rgb = bytes.substr(header.size());
+    }
+    return img;
+}
+
+/// Number of pixels equal to `rgb`.
+int count_pixels(const Image& img, uint32_t rgb) {
+    int n = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) n += img.at(x, y) == rgb;
+    return n;
+}
+
+}  // namespace
+
+// ---- OBJ errors: "file:line: what" from tools/common/obj.cpp -------------------------------------------
+
+TEST_CASE("A bad number in a v line names the token, the file and the line") {
+    const std::string path = kBad + "bad_number.obj";
+    check_error(render(path), {path + ":3: ", "bad number", "'1.5.2'", "y coordinate"});
+}
+
+TEST_CASE("A face index past the last vertex is rejected with the file, the line and the vertex count") {
+    const std::string path = kBad + "index_out_of_range.obj";
+    check_error(render(path), {path + ":5: ", "vertex index 7 out of range", "3 vertices"});
+}
+
+TEST_CASE("A face index of 0 is rejected with the file and the line") {
+    const std::string path = kBad + "index_zero.obj";
+    check_error(render(path), {path + ":5: ", "vertex index 0 is invalid"});
+}
+
+TEST_CASE("A face with fewer than three vertices is rejected with the file and the line") {
+    const std::string path = kBad + "face_two_vertices.obj";
+    check_error(render(path), {path + ":5: ", "face has 2 vertices", "at least 3"});
+}
+
+TEST_CASE("A malformed face token is quoted in the error with the file and the line") {
+    const std::string path = kBad + "face_malformed.obj";
+    check_error(render(path), {path + ":5: ", "malformed face vertex", "'3x'"});
+}
+
+TEST_CASE("A model with vertices but no faces is rejected as having no faces") {
+    const std::string path = kBad + "no_faces.obj";
+    check_error(render(path), {path + ": no faces"});
+}
+
+TEST_CASE("A model without vertices is rejected, whether it holds only ignored lines or no bytes at all") {
+    const std::string comments = kBad + "no_vertices.obj";
+    check_error(render(comments), {comments + ": no vertices"});
+    const std::string empty = write_model("empty.obj", "");
+    check_error(render(empty), {empty + ": no vertices"});
+}
+
+TEST_CASE("A missing model file is reported with its path and the system's reason") {
+    const std::string path = kBad + "does_not_exist.obj";
+    CHECK_FALSE(exists(path));
+    check_error(render(path), {path + ": ", "cannot open file", "No such file"});
+}
+
+TEST_CASE("A directory given as the model is reported as a file that cannot be opened") {
+    check_error(render(scratch()), {scratch() + ": ", "cannot open file"});
+}
+
+TEST_CASE("A nan or inf coordinate is rejected with the axis, the token, the file and the line") {
+    const std::string nan = kBad + "nan_coordinate.obj";
+    check_error(render(nan), {nan + ":3: ", "y coordinate", "'nan'", "not finite"});
+    const std::string inf = kBad + "inf_coordinate.obj";
+    check_error(render(inf), {inf + ":4: ", "z coordinate", "'-inf'", "not finite"});
+}
+
+// ---- Scene fitting: "model: reason" from tools/common/scene.cpp ------------------------------------------
+
+TEST_CASE("A model whose extent overflows double is rejected as too large to represent") {
+    // +-1e308 are finite doubles, but their distance is not: no scale maps this box into fixed point.
+    const std::string path = kBad + "huge_extent.obj";
+    const Run r = render(path);
+    check_error(r, {path + ": "});
+    CHECK((contains(r.err, "too large") || contains(r.err, "cannot be represented")));
+}
+
+TEST_CASE("A model with more vertices than a hider mesh holds is rejected with both counts") {
+    std::string text;
+    for (int i = 0; i < 65537; ++i) text += "v " + std::to_string(i % 256) + " " + std::to_string(i / 256) + " 0\n";
+    const std::string path = write_model("too_many_vertices.obj", text + "f 1 2 257\n");
+    check_error(render(path), {path + ": ", "65537 vertices", "65536"});
+}
+
+TEST_CASE("A near plane too small for the scene is rejected, and the minimum it names is accepted") {
+    const std::string model = triangle_model();
+    const Run r = render(model, with(kFrontCamera, {"--near", "1e-9"}));
+    check_error(r, {model + ": ", "near plane 1e-09 is too small", "hider needs near >= "});
+    const std::string key = "near >= ";
+    const size_t at = r.err.find(key);
+    const double minimum = at == std::string::npos ? 0.0 : std::strtod(r.err.c_str() + at + key.size(), nullptr);
+    INFO("stated minimum: ", minimum);
+    CHECK(minimum > 1e-9);
+    char above[32], below[32];
+    std::snprintf(above, sizeof above, "%.9g", minimum * 1.01);
+    std::snprintf(below, sizeof below, "%.9g", minimum * 0.99);
+    const Run ok = render(model, with(kFrontCamera, {"--near", above, "--size", "8x6"}));
+    INFO("stderr: ", ok.err);
+    CHECK(ok.code == 0);
+    CHECK(ok.output_created);
+    check_error(render(model, with(kFrontCamera, {"--near", below})), {"is too small", "hider needs near >= "});
+}
+
+TEST_CASE("An up vector parallel to the view direction is rejected") {
+    const std::string model = triangle_model();
+    check_error(render(model, {"--eye", "0,0,5", "--target", "0,0,0", "--up", "0,0,1"}),
+                {model + ": ", "up vector is parallel to the view direction"});
+    check_error(render(model, {"--eye", "0,0,5", "--target", "0,0,0", "--up", "0,0,-3"}), {"up vector is parallel"});
+}
+
+TEST_CASE("A zero up vector is rejected") {
+    const std::string model = triangle_model();
+    check_error(render(model, {"--up", "0,0,0"}), {model + ": ", "up vector is zero"});
+}
+
+TEST_CASE("An eye equal to the target is rejected") {
+    const std::string model = triangle_model();
+    check_error(render(model, {"--eye", "1,2,3", "--target", "1,2,3"}), {model + ": ", "eye and target coincide"});
+}
+
+TEST_CASE("A far plane that is not beyond the near plane is rejected with both values") {
+    const std::string model = triangle_model();
+    check_error(render(model, {"--near", "5", "--far", "5"}), {model + ": ", "far plane (5)", "greater than near (5)"});
+    check_error(render(model, {"--near", "5", "--far", "2"}), {model + ": ", "far plane (2)", "greater than near (5)"});
+}
+
+TEST_CASE("A non-positive near plane is rejected") {
+    const std::string model = triangle_model();
+    check_error(render(model, {"--near", "0"}), {model + ": ", "near plane must be > 0"});
+    check_error(render(model, {"--near", "-1"}), {"near plane must be > 0", "-1"});
+}
+
+TEST_CASE("A field of view of 0 or 200 degrees is rejected with the accepted range") {
+    const std::string model = triangle_model();
+    check_error(render(model, {"--fov", "0"}), {"--fov 0 out of range", "0.5..179.5"});
+    check_error(render(model, {"--fov", "200"}), {"--fov 200 out of range", "0.5..179.5"});
+}
+
+// ---- Option errors: plain reasons from tools/hider-render/main.cpp --------------------------------------
+
+TEST_CASE("Camera numbers that do not parse or are not finite are rejected with the option and the token") {
+    const std::string model = triangle_model();
+    check_error(render(model, {"--fov", "wide"}), {"--fov: bad number 'wide'"});
+    check_error(render(model, {"--fov", "nan"}), {"--fov: bad number 'nan'"});
+    check_error(render(model, {"--near", "1cm"}), {"--near: bad number '1cm'"});
+    check_error(render(model, {"--far", "inf"}), {"--far: bad number 'inf'"});
+}
+
+TEST_CASE("An unknown --algo is rejected with the list of available algorithms") {
+    check_error(render(triangle_model(), {"--algo", "painter"}), {"unknown algo 'painter'", "available: zbuffer"});
+}
+
+TEST_CASE("An unknown --shade is rejected with the list of available shades") {
+    check_error(render(triangle_model(), {"--shade", "phong"}),
+                {"unknown shade 'phong'", "available:", "headlight", "id", "depth"});
+}
+
+TEST_CASE("An unknown --format is rejected with the list of available formats") {
+    check_error(render(triangle_model(), {"--format", "rgb444"}),
+                {"unknown format 'rgb444'", "available:", "rgb565", "rgb888", "grey8"});
+}
+
+TEST_CASE("A --size that is zero, too large, missing a side or not numbers is rejected") {
+    const std::string model = triangle_model();
+    for (const std::string size : {"0x10", "2000x10", "1025x1", "10x-1"}) {
+        INFO("--size ", size);
+        check_error(render(model, {"--size", size}), {"--size " + size + " out of range", "1..1024"});
+    }
+    for (const std::string size : {"10", "axb", "10x", "x10", "10x10x10", ""}) {
+        INFO("--size ", size);
+        check_error(render(model, {"--size", size}), {"--size needs WxH", "'" + size + "'"});
+    }
+}
+
+TEST_CASE("A --depth-bits other than 16 or 32 is rejected") {
+    for (const std::string bits : {"24", "8", "x"}) {
+        INFO("--depth-bits ", bits);
+        check_error(render(triangle_model(), {"--depth-bits", bits}), {"--depth-bits must be 16 or 32", "'" + bits + "'"});
+    }
+}
+
+TEST_CASE("A --band that is not a positive row count is rejected") {
+    for (const std::string rows : {"0", "-1", "x", "1025", "3.5"}) {
+        INFO("--band ", rows);
+        check_error(render(triangle_model(), {"--band", rows}), {"--band needs a row count", "'" + rows + "'"});
+    }
+}
+
+TEST_CASE("A --eye without exactly three comma-separated numbers is rejected") {
+    const std::string model = triangle_model();
+    check_error(render(model, {"--eye", "1,2"}), {"--eye needs x,y,z", "'1,2'"});
+    check_error(render(model, {"--eye", "1,2,3,4"}), {"--eye needs x,y,z", "'1,2,3,4'"});
+    check_error(render(model, {"--eye", "1,2,x"}), {"--eye: bad number 'x'"});
+    check_error(render(model, {"--eye", "1,,3"}), {"--eye: bad number ''"});
+    check_error(render(model, {"--target", "0,nan,0"}), {"--target: bad number 'nan'"});
+    check_error(render(model, {"--up", "0 1 0"}), {"--up needs x,y,z"});
+}
+
+TEST_CASE("An unknown option is rejected with the usage") {
+    check_error(render(triangle_model(), {"--frobnicate"}), {"unknown option '--frobnicate'"}, Usage::yes);
+    check_error(render(triangle_model(), {"-x"}), {"unknown option '-x'"}, Usage::yes);
+}
+
+TEST_CASE("A missing -o is rejected with the usage") {
+    check_error(run({triangle_model(), "--size", "8x6"}), {"no output given (-o OUT.ppm)"}, Usage::yes);
+}
+
+TEST_CASE("A missing model is rejected with the usage") {
+    check_error(run({"-o", out_ppm()}), {"no model given"}, Usage::yes);
+    check_error(run({}), {"no model given"}, Usage::yes);
+}
+
+TEST_CASE("An option at the end without its value is rejected with the usage") {
+    const std::string model = triangle_model();
+    for (const std::string opt : {"--size", "--eye", "--fov", "--near", "--algo", "--band", "--shade"}) {
+        INFO("option ", opt);
+        check_error(render(model, {opt}), {opt + " needs a value"}, Usage::yes);
+    }
+    check_error(run({model, "-o"}), {"-o needs a value"}, Usage::yes);
+}
+
+TEST_CASE("Two models are rejected and both are named") {
+    const std::string a = triangle_model();
+    const std::string b = kBad + "no_faces.obj";
+    check_error(render(a, {b}), {"more than one model given", "'" + a + "'", "'" + b + "'"});
+}
+
+TEST_CASE("An output path in a missing directory is reported with the path and creates nothing") {
+    const std::string out = scratch_path("no_such_dir/out.ppm");
+    const Run r = run({triangle_model(), "-o", out}, out);
+    check_error(r, {out + ": ", "No such file or directory"});
+}
+
+// ---- Success ---------------------------------------------------------------------------------------------
+
+TEST_CASE("A tiny valid model renders a P6 file of the requested size and exits 0") {
+    const Run r = render(triangle_model(), {"--size", "7x5"});
+    INFO("stderr: ", r.err);
+    CHECK(r.code == 0);
+    CHECK(r.err.empty());
+    CHECK(r.out.empty());
+    CHECK(r.output_created);
+    const std::string bytes = read_file(out_ppm());
+    CHECK(bytes.substr(0, 11) == "P6\n7 5\n255\n");
+    CHECK(bytes.size() == 11 + 7 * 5 * 3);
+    const Image img = read_image(out_ppm(), 7, 5);
+    CHECK(img.ok);
+    CHECK(img.at(3, 2) != 0u);  // the default camera frames the model: its centre is lit
+}
+
+TEST_CASE("Id shading writes the 1-based f-line index, and a degenerate first face draws nothing") {
+    const std::string model = write_model("ids.obj",
+                                          "# face 1: three collinear vertices on a line through the centre\n"
+                                          "v -1 -1 0\nv 0 0 0\nv 1 1 0\n"
+                                          "# face 2: counter-clockwise seen from +z, covers the centre\n"
+                                          "v -2 -2 0\nv 2 -2 0\nv 0 2 0\n"
+                                          "f 1 2 3\n"
+                                          "f 4 5 6\n");
+    for (const Args& camera : {kFrontCamera, Args{}}) {
+        INFO("camera: ", camera.empty() ? std::string("default") : std::string("--eye 0,0,5"));
+        const Run r = render(model, with(camera, {"--size", "7x5", "--shade", "id"}));
+        INFO("stderr: ", r.err);
+        CHECK(r.code == 0);
+        const Image img = read_image(out_ppm(), 7, 5);
+        CHECK(img.ok);
+        CHECK(img.at(3, 2) == 0x000002u);        // the centre pixel: bytes (0, 0, 2)
+        CHECK(count_pixels(img, 0x000001u) == 0);  // the degenerate face covers nothing
+        CHECK(count_pixels(img, 0x000000u) + count_pixels(img, 0x000002u) == 7 * 5);
+    }
+}
+
+TEST_CASE("Id shading counts f lines, not triangles: a quad before a face does not shift its id") {
+    const std::string model = write_model("quad_ids.obj",
+                                          "# face 1: a quad (two triangles) in the top-left corner, face 2 the centre\n"
+                                          "v -3 1 0\nv -2 1 0\nv -2 2 0\nv -3 2 0\n"
+                                          "v -1 -1 0\nv 1 -1 0\nv 0 1 0\n"
+                                          "f 1 2 3 4\n"
+                                          "f 5 6 7\n");
+    const Run r = render(model, with(kFrontCamera, {"--size", "21x15", "--shade", "id", "--stats"}));
+    INFO("stderr: ", r.err);
+    CHECK(r.code == 0);
+    CHECK(contains(r.out, "triangles 3 drawn 3"));
+    const Image img = read_image(out_ppm(), 21, 15);
+    CHECK(img.ok);
+    CHECK(img.at(10, 7) == 0x000002u);
+    CHECK(count_pixels(img, 0x000001u) > 0);
+    CHECK(count_pixels(img, 0x000003u) == 0);
+}
+
+TEST_CASE("A face turned away from the camera is culled unless --no-cull is given") {
+    const std::string model = write_model("back_face.obj", "v -1 -1 0\nv 0 1 0\nv 1 -1 0\nf 1 2 3\n");
+    const Args args = with(kFrontCamera, {"--size", "7x5", "--shade", "id", "--stats"});
+    const Run culled = render(model, args);
+    CHECK(culled.code == 0);
+    CHECK(contains(culled.out, "triangles 1 drawn 0 culled 1"));
+    CHECK(read_image(out_ppm(), 7, 5).at(3, 2) == 0x000000u);
+    const Run drawn = render(model, with(args, {"--no-cull"}));
+    CHECK(drawn.code == 0);
+    CHECK(contains(drawn.out, "triangles 1 drawn 1 culled 0"));
+    CHECK(read_image(out_ppm(), 7, 5).at(3, 2) == 0x000001u);
+}
+
+TEST_CASE("An output name ending in .png writes a PNG file instead of a PPM") {
+    const std::string out = scratch_path("out.png");
+    const Run r = run({triangle_model(), "-o", out, "--size", "7x5"}, out);
+    INFO("stderr: ", r.err);
+    CHECK(r.code == 0);
+    CHECK(r.output_created);
+    CHECK(read_file(out).substr(0, 8) == std::string("\x89PNG\r\n\x1a\n", 8));
+}
+
+TEST_CASE("--help prints the usage on stdout and exits 0 without writing anything") {
+    for (const std::string opt : {"--help", "-h"}) {
+        INFO("option ", opt);
+        const Run r = run({opt});
+        CHECK(r.code == 0);
+        CHECK(r.err.empty());
+        CHECK(r.out.rfind("usage: hider-render MODEL.obj", 0) == 0);
+        CHECK(contains(r.out, "--algo"));
+        CHECK_FALSE(r.output_created);
+    }
+}
+
+// ---- Regressions: each of these once failed (fov range, misnamed camera errors, huge and tiny scales) ----
+
+TEST_CASE("A field of view inside the accepted 0.5..179.5 range is never blamed on the up vector") {
+    // make_view() once refused fovy below 1 degree and above 179, and build_scene() reported every
+    // invalid_argument from it as a parallel up vector.
+    const std::string model = triangle_model();
+    for (const std::string fov : {"0.5", "0.7", "179.3", "179.5"}) {
+        INFO("--fov ", fov);
+        const Run r = render(model, {"--fov", fov, "--size", "8x6"});
+        INFO("stderr: ", r.err);
+        CHECK_FALSE(contains(r.err, "up vector"));
+        CHECK((r.code == 0 || contains(r.err, "field of view")));
+    }
+}
+
+TEST_CASE("Near and far planes that round to the same fixed-point value are never blamed on the up vector") {
+    const std::string model = triangle_model();
+    const Run r = render(model, {"--near", "1", "--far", "1.00000001"});
+    INFO("stderr: ", r.err);
+    CHECK_FALSE(contains(r.err, "up vector"));
+    CHECK((r.code == 0 || (r.code == 2 && contains(r.err, "far"))));
+}
+
+TEST_CASE("An eye far away is never reported as a bad near plane the user did not give") {
+    // Today both fail with "near plane must be > 0 (got inf)": length() squares 1e300, and at 1.79e308
+    // the default far plane (distance * 1.01) overflows.
+    const std::string model = triangle_model();
+    for (const std::string eye : {"0,0,1e300", "0,0,1.79e308"}) {
+        INFO("--eye ", eye);
+        const Run r = render(model, {"--eye", eye, "--size", "8x6"});
+        INFO("stderr: ", r.err);
+        CHECK_FALSE(contains(r.err, "near plane"));
+        CHECK((r.code == 0 || contains(r.err, "too large") || contains(r.err, "cannot be represented")));
+    }
+}
+
+TEST_CASE("A model in tiny units is framed like the same model in unit size") {
+    // length() in scene.cpp squares coordinates: at 1e-300 the bounding radius underflows to 0, the default
+    // eye lands 2 units away and the model renders as an empty frame (exit 0).
+    const std::string tiny = write_model("tiny.obj", "v -1e-300 -1e-300 0\nv 1e-300 -1e-300 0\nv 0 1e-300 0\nf 1 2 3\n");
+    const Run r = render(tiny, {"--size", "7x5", "--shade", "id"});
+    CHECK(r.code == 0);
+    CHECK(read_image(out_ppm(), 7, 5).at(3, 2) == 0x000001u);
+}
+
+TEST_CASE("A write that fails midway leaves no partial output file") {
+    // port::write_ppm() truncates the file, and on a failed write returns an error but leaves the bytes
+    // written so far. A 1-block file size limit makes the write fail with EFBIG (SIGXFSZ ignored).
+    const Run r = run({triangle_model(), "-o", out_ppm(), "--size", "100x100"}, out_ppm(), "trap '' XFSZ; ulimit -f 1; ");
+    check_error(r, {out_ppm() + ": ", "write failed"});
+}

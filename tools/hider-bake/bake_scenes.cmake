@@ -1,0 +1,43 @@
+# Re-bakes every scene of scenes.cmake with hider-bake.
+#   cmake -DBAKE=<hider-bake> -DSOURCE_DIR=<repo> -DOUT_DIR=<dir> -DMODE=check|update -P bake_scenes.cmake
+# check: bakes into OUT_DIR and fails if any header differs from the committed one in
+#        firmware/common/scenes/ (drift between hider-bake/build_scene/lib and the committed data).
+# update: bakes into OUT_DIR, then copies every header over the committed one (review the diff).
+foreach(var BAKE SOURCE_DIR OUT_DIR MODE)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "bake_scenes.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/scenes.cmake)
+set(committed_dir ${SOURCE_DIR}/firmware/common/scenes)
+file(MAKE_DIRECTORY ${OUT_DIR})
+set(stale)
+foreach(entry IN LISTS HIDER_BAKED_SCENES)
+  string(REPLACE "|" ";" fields "${entry}")
+  list(GET fields 0 name)
+  list(GET fields 1 model)
+  list(GET fields 2 options)
+  separate_arguments(options UNIX_COMMAND "${options}")
+  set(out ${OUT_DIR}/${name}.hpp)
+  execute_process(COMMAND ${BAKE} ${SOURCE_DIR}/${model} -o ${out} --name ${name} ${options}
+                  RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "hider-bake failed for ${name} (exit ${rc})")
+  endif()
+  if(MODE STREQUAL "update")
+    file(COPY_FILE ${out} ${committed_dir}/${name}.hpp ONLY_IF_DIFFERENT)
+    message(STATUS "baked ${committed_dir}/${name}.hpp")
+  else()
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${out} ${committed_dir}/${name}.hpp RESULT_VARIABLE same)
+    if(same EQUAL 0)
+      message(STATUS "ok: ${name}.hpp matches a fresh bake")
+    else()
+      message(STATUS "DIFFERS: ${committed_dir}/${name}.hpp vs fresh bake ${out}")
+      list(APPEND stale ${name})
+    endif()
+  endif()
+endforeach()
+if(stale)
+  message(FATAL_ERROR "committed baked scenes differ from a fresh bake: ${stale}\n"
+          "If the change is intended: cmake --build <host build> --target bake_scenes, then review the diff.")
+endif()

@@ -1,0 +1,78 @@
+// hider-bake: fits an OBJ model and camera exactly as hider-render does (build_scene) and writes them
+// as a C++ header of constexpr arrays for firmware, so a device renders the very scene hider-render
+// renders. Usage: kUsage below and README.md. Errors print "hider-bake: what" and exit 2.
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include "common/obj.hpp"
+#include "common/scene.hpp"
+#include "hider-bake/cli.hpp"
+#include "hider-bake/emit.hpp"
+
+namespace {
+
+using namespace hider;
+using namespace hider::tool;
+
+const char* kProgram = "hider-bake";
+const char* kUsage =
+    "usage: hider-bake MODEL.obj -o OUT.hpp --name NAME [--size WxH] [--eye x,y,z] [--target x,y,z]\n"
+    "                  [--up x,y,z] [--fov DEG] [--near N] [--far F]\n"
+    "  writes namespace hider::scenes::NAME { kWidth, kHeight, kCamera, kPositions, kTris, kNormals, mesh() };\n"
+    "  camera options and defaults as hider-render's. Exit status: 0 ok, 2 error.\n";
+
+[[noreturn]] void fail(const std::string& msg) { bake::fail(kProgram, msg); }
+
+std::string base_name(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string model_path, out_path;
+    bake::BakeInfo info;
+    CameraArgs cam;
+    for (int i = 1; i < argc; ++i) {
+        if (bake::parse_camera_option(kProgram, argc, argv, i, cam, info.options)) continue;
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) fail(a + " needs a value\n" + kUsage);
+            return argv[++i];
+        };
+        if (a == "-o") out_path = value();
+        else if (a == "--name") info.name = value();
+        else if (a == "-h" || a == "--help") {
+            std::cout << kUsage;
+            return 0;
+        } else if (!a.empty() && a[0] == '-') fail("unknown option '" + a + "'\n" + kUsage);
+        else if (model_path.empty()) model_path = a;
+        else fail("more than one model given ('" + model_path + "', '" + a + "')");
+    }
+    if (model_path.empty()) fail(std::string("no model given\n") + kUsage);
+    if (out_path.empty()) fail(std::string("no output given (-o OUT.hpp)\n") + kUsage);
+    if (info.name.empty()) fail(std::string("no scene name given (--name NAME)\n") + kUsage);
+    std::string why;
+    if (!bake::valid_name(info.name, why)) fail("--name '" + info.name + "' " + why);
+
+    ObjModel model;
+    ObjError err;
+    if (!load_obj(model_path, model, err)) fail(format(err));
+    Scene scene;
+    if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
+    const Status ms = validate(scene.mesh());
+    if (ms != Status::ok) fail(model_path + ": mesh rejected: " + status_name(ms));
+
+    info.model = base_name(model_path);
+    const std::string text = bake::emit_header(scene, info);
+    std::ofstream out(out_path, std::ios::binary);
+    if (!out) fail(out_path + ": " + std::strerror(errno));
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.close();
+    if (!out) fail(out_path + ": write failed");
+    return 0;
+}

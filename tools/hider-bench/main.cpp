@@ -1,0 +1,114 @@
+// hider-bench: deterministic instruction counts of lib/ per frame and per span pixel, measured with
+// callgrind (Ir = instructions executed) on the host. See kUsage; the measured code is in measured.cpp.
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+#include "bench.hpp"
+
+namespace hider::tool::bench {
+namespace {
+
+const char* kUsage =
+    "usage: hider-bench frame MODEL.obj [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
+    "                         [--fov DEG] [--near N] [--far F] [--depth-bits 16|32] [--frames N]\n"
+    "         one frame of lib/ work per call of hider_bench_frame; prints the per-frame statistics\n"
+    "       hider-bench table [--models DIR] [--valgrind PATH] [--check]\n"
+    "         Markdown table of callgrind Ir per frame for the benchmark scenes (--check: torus row only)\n"
+    "       hider-bench span [--valgrind PATH]\n"
+    "         callgrind Ir per pixel of span_depth_test<false> on a 320-pixel row\n"
+    "exit status: 0 ok, 2 error, 77 valgrind not found\n";
+
+}  // namespace
+
+[[noreturn]] void fail(const std::string& msg) {
+    std::cerr << "hider-bench: " << msg << "\n";
+    std::exit(2);
+}
+
+bool parse_double(const std::string& s, double& out) {
+    if (s.empty()) return false;
+    char* end = nullptr;
+    errno = 0;
+    out = std::strtod(s.c_str(), &end);
+    return end == s.c_str() + s.size() && errno == 0 && std::isfinite(out);
+}
+
+bool parse_long(const std::string& s, long& out) {
+    if (s.empty()) return false;
+    char* end = nullptr;
+    errno = 0;
+    out = std::strtol(s.c_str(), &end, 10);
+    return end == s.c_str() + s.size() && errno == 0;
+}
+
+const std::string& option_value(const Args& args, size_t& i) {
+    if (i + 1 >= args.size()) fail(args[i] + " needs a value\n" + kUsage);
+    return args[++i];
+}
+
+namespace {
+
+Vec3d parse_vec(const std::string& opt, const std::string& s) {
+    Vec3d v{};
+    size_t start = 0;
+    for (int i = 0; i < 3; ++i) {
+        const size_t comma = s.find(',', start);
+        const bool last = i == 2;
+        if (last != (comma == std::string::npos)) fail(opt + " needs x,y,z (got '" + s + "')");
+        const std::string part = s.substr(start, last ? std::string::npos : comma - start);
+        if (!parse_double(part, v[i])) fail(opt + ": bad number '" + part + "'");
+        start = comma + 1;
+    }
+    return v;
+}
+
+}  // namespace
+
+bool parse_camera_option(const Args& args, size_t& i, CameraArgs& cam) {
+    const std::string& a = args[i];
+    if (a == "--size") {
+        const std::string& v = option_value(args, i);
+        const size_t x = v.find('x');
+        long w = 0, h = 0;
+        if (x == std::string::npos || !parse_long(v.substr(0, x), w) || !parse_long(v.substr(x + 1), h))
+            fail("--size needs WxH (got '" + v + "')");
+        if (w < 1 || h < 1 || w > kMaxFrameSide || h > kMaxFrameSide)
+            fail("--size " + v + " out of range (1.." + std::to_string(kMaxFrameSide) + " per side)");
+        cam.width = static_cast<int>(w);
+        cam.height = static_cast<int>(h);
+    } else if (a == "--eye") cam.eye = parse_vec(a, option_value(args, i));
+    else if (a == "--target") cam.target = parse_vec(a, option_value(args, i));
+    else if (a == "--up") cam.up = parse_vec(a, option_value(args, i));
+    else if (a == "--fov") {
+        const std::string& v = option_value(args, i);
+        if (!parse_double(v, cam.fov_deg)) fail("--fov: bad number '" + v + "'");
+    } else if (a == "--near" || a == "--far") {
+        const std::string& v = option_value(args, i);
+        double d = 0;
+        if (!parse_double(v, d)) fail(a + ": bad number '" + v + "'");
+        (a == "--near" ? cam.near : cam.far) = d;
+    } else {
+        return false;
+    }
+    return true;
+}
+
+}  // namespace hider::tool::bench
+
+int main(int argc, char** argv) {
+    using namespace hider::tool::bench;
+    if (argc < 2) fail(std::string("no command given\n") + kUsage);
+    const std::string command = argv[1];
+    const Args args(argv + 2, argv + argc);
+    if (command == "frame") return frame_command(args);
+    if (command == "table") return table_command(args);
+    if (command == "span") return span_command(args);
+    if (command == "span-run") return span_run_command(args);
+    if (command == "-h" || command == "--help") {
+        std::cout << kUsage;
+        return 0;
+    }
+    fail("unknown command '" + command + "'\n" + kUsage);
+}

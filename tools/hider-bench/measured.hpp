@@ -1,0 +1,41 @@
+// The measured regions of hider-bench: two extern "C" noinline functions that callgrind toggles on
+// (--toggle-collect=hider_bench_frame / hider_bench_span). They run lib/ code only: no allocation,
+// no I/O. Everything they touch is prepared by the caller and passed in one job struct.
+#pragma once
+#include <hider/raster/zbuffer.hpp>
+
+namespace hider::tool::bench {
+
+/// One frame of lib/ work: inputs set once by the caller, outputs written by hider_bench_frame.
+struct FrameJob {
+    Camera camera{};
+    int32_t width = 0, height = 0;
+    Mesh mesh{};                  ///< validated once by the caller
+    Span<ScreenVertex> verts;     ///< >= mesh.positions.size(), preallocated
+    uint16_t* color = nullptr;    ///< width * height RGB565 pixels
+    uint16_t* depth16 = nullptr;  ///< width * height, used when depth_bits == 16
+    uint32_t* depth32 = nullptr;  ///< width * height, used when depth_bits == 32
+    int depth_bits = 16;
+    DrawOptions draw{};
+    Rgb background{0, 0, 0};
+    Status status = Status::ok;  ///< out: make_view / project_vertices result
+    FrameStats stats{};          ///< out: draw_zbuffer result
+};
+
+/// One call of span_depth_test<false> on pixels [x0, x1) of a row with a flat RGB565 colour.
+struct SpanJob {
+    uint16_t* color = nullptr;
+    uint16_t* depth16 = nullptr;  ///< used when depth32 is null
+    uint32_t* depth32 = nullptr;
+    int32_t x0 = 0, x1 = 0;
+    uint32_t z_q32 = 0, dz_q32 = 0;
+    uint16_t pixel = 0;
+};
+
+}  // namespace hider::tool::bench
+
+/// make_view, project_vertices, clear (colour + depth), draw_zbuffer<false>: exactly one frame.
+extern "C" __attribute__((noinline)) void hider_bench_frame(hider::tool::bench::FrameJob* job);
+
+/// One span_depth_test<false> call as described by `job`.
+extern "C" __attribute__((noinline)) void hider_bench_span(const hider::tool::bench::SpanJob* job);
