@@ -122,3 +122,68 @@ TEST_CASE("floor_int and round_int at the edges of the range") {
     CHECK(Q16::min().floor_int() == -32768);
     CHECK(Q16::max().round_int() == 32768);
 }
+
+TEST_CASE("udiv64_32 (the 32-bit targets' division) is exact wherever the quotient fits 32 bits") {
+    std::mt19937_64 rng(2718);
+    auto check = [](uint64_t n, uint32_t d) {
+        uint32_t r = 0;
+        const uint32_t q = hider::udiv64_32(n, d, r);
+        CHECK(q == n / d);
+        CHECK(r == n % d);
+    };
+    for (int i = 0; i < 200000; ++i) {
+        const uint32_t d = static_cast<uint32_t>(rng() >> (rng() % 64)) | 1u;
+        const uint64_t hi = (rng() >> 32) % d;  // keeps n < d * 2^32
+        check((hi << 32) | (rng() & 0xFFFFFFFFu), d);
+    }
+    check(0, 1);
+    check(0xFFFFFFFFull, 1);
+    check(0xFFFFFFFEFFFFFFFFull, 0xFFFFFFFFu);  // largest n for the largest d
+    check(0x7FFFFFFF80000000ull, 0x80000000u);
+    check(0x00000000FFFFFFFFull, 0x00010000u);
+    check(0x0000FFFF00000000ull, 0x00010000u);
+    for (uint32_t d : {1u, 2u, 3u, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFFu})
+        for (uint64_t k : {0ull, 1ull, 0xFFFFull, 0xFFFFFFFFull})
+            check(std::min<uint64_t>(k * d + (d - 1), (uint64_t{d} << 32) - 1), d);
+    CHECK(hider::clz32(1) == 31);
+    CHECK(hider::clz32(0x80000000u) == 0);
+    CHECK(hider::clz32(0x00010000u) == 15);
+}
+
+TEST_CASE("mul_wide equals the 64-bit product at the extremes") {
+    CHECK(hider::mul_wide(INT32_MIN, INT32_MIN) == int64_t{1} << 62);
+    CHECK(hider::mul_wide(INT32_MIN, INT32_MAX) == -(int64_t{1} << 31) * INT32_MAX);
+    CHECK(hider::mul_wide(-1, -1) == 1);
+    CHECK(hider::mul_wide_u(0xFFFFFFFFu, 0xFFFFFFFFu) == 0xFFFFFFFE00000001ull);
+}
+
+TEST_CASE("the ARMv6-M multiply by 16-bit parts equals the native 64-bit product") {
+    std::mt19937_64 rng(31);
+    for (int i = 0; i < 200000; ++i) {
+        const auto a = static_cast<int32_t>(rng() >> (rng() % 33)), b = static_cast<int32_t>(rng() >> (rng() % 33));
+        CHECK(hider::mul_wide_by_parts(a, b) == static_cast<int64_t>(a) * b);
+        CHECK(hider::mul_wide_u_by_parts(static_cast<uint32_t>(a), static_cast<uint32_t>(b)) ==
+              uint64_t{static_cast<uint32_t>(a)} * static_cast<uint32_t>(b));
+    }
+    CHECK(hider::mul_wide_by_parts(INT32_MIN, INT32_MIN) == int64_t{1} << 62);
+    CHECK(hider::mul_wide_by_parts(INT32_MIN, -1) == int64_t{1} << 31);
+    CHECK(hider::mul_wide_u_by_parts(0xFFFFFFFFu, 0xFFFFFFFFu) == 0xFFFFFFFE00000001ull);
+}
+
+TEST_CASE("div_round through udiv64_32 equals native division (the 32-bit targets' path)") {
+    // Replays div_round's fast path on the host with the same operands it would see on a target.
+    std::mt19937_64 rng(41);
+    for (int i = 0; i < 100000; ++i) {
+        const auto n = static_cast<int64_t>(rng()) >> (rng() % 40);
+        auto d = static_cast<int32_t>(rng() >> (32 + rng() % 32));
+        if (d == 0) d = 7;
+        const uint64_t un = n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
+        const uint32_t ud = static_cast<uint32_t>(d < 0 ? -static_cast<int64_t>(d) : d);
+        if ((un >> 32) >= ud) continue;
+        uint32_t r = 0;
+        uint64_t q = hider::udiv64_32(un, ud, r);
+        if (r >= ud - r) ++q;
+        const int64_t fast = ((n < 0) != (d < 0)) ? -static_cast<int64_t>(q) : static_cast<int64_t>(q);
+        CHECK(fast == hider::div_round(n, d));
+    }
+}

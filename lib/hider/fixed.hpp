@@ -8,28 +8,38 @@
 
 namespace hider {
 
-/// Exact 32x32 -> 64-bit unsigned product. On ARMv6-M (no long multiply instruction) it is built from
-/// four 16x16 products instead of a call to __aeabi_lmul; the result is the same on every target.
-constexpr uint64_t mul_wide_u(uint32_t a, uint32_t b) {
-#if defined(__ARM_ARCH_6M__)
+/// Exact 32x32 -> 64-bit unsigned product from four 16x16 products (what ARMv6-M uses: it has no
+/// long multiply instruction, and __aeabi_lmul is a full 64x64 routine).
+constexpr uint64_t mul_wide_u_by_parts(uint32_t a, uint32_t b) {
     const uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
     const uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
     const uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu);
     const uint32_t hi = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
     return (uint64_t{hi} << 32) | ((mid << 16) | (ll & 0xFFFFu));
+}
+
+/// Exact signed 32x32 -> 64-bit product from the unsigned one (two's-complement correction).
+constexpr int64_t mul_wide_by_parts(int32_t a, int32_t b) {
+    const uint32_t ua = static_cast<uint32_t>(a), ub = static_cast<uint32_t>(b);
+    uint64_t p = mul_wide_u_by_parts(ua, ub);
+    if (a < 0) p -= uint64_t{ub} << 32;
+    if (b < 0) p -= uint64_t{ua} << 32;
+    return static_cast<int64_t>(p);
+}
+
+/// Exact 32x32 -> 64-bit unsigned product: the single place a target-specific multiply goes.
+constexpr uint64_t mul_wide_u(uint32_t a, uint32_t b) {
+#if defined(__ARM_ARCH_6M__)
+    return mul_wide_u_by_parts(a, b);
 #else
     return uint64_t{a} * b;
 #endif
 }
 
-/// Exact 32x32 -> 64-bit signed product (two's-complement correction of the unsigned one).
+/// Exact 32x32 -> 64-bit signed product.
 constexpr int64_t mul_wide(int32_t a, int32_t b) {
 #if defined(__ARM_ARCH_6M__)
-    const uint32_t ua = static_cast<uint32_t>(a), ub = static_cast<uint32_t>(b);
-    uint64_t p = mul_wide_u(ua, ub);
-    if (a < 0) p -= uint64_t{ub} << 32;
-    if (b < 0) p -= uint64_t{ua} << 32;
-    return static_cast<int64_t>(p);
+    return mul_wide_by_parts(a, b);
 #else
     return static_cast<int64_t>(a) * b;
 #endif
@@ -45,6 +55,9 @@ constexpr int clz32(uint32_t v) {
     if (v <= 0x7FFFFFFFu) { n += 1; }
     return n;
 }
+
+/// True where a 64-bit division is a library call (every 32-bit target of hider).
+constexpr bool kSlow64BitDivide = sizeof(void*) < 8;
 
 /// floor(n / d) and the remainder for n < d * 2^32 (so the quotient fits 32 bits), d != 0.
 /// Long division in two 16-bit digits with 32-bit divides (Hacker's Delight, divlu): exact, and far
@@ -78,14 +91,15 @@ constexpr int64_t mul_shift(int32_t a, int32_t b, int shift) { return mul_wide(a
 
 /// n / d rounded to nearest, ties away from zero; d == 0 saturates to the sign of n (0 / 0 = 0).
 /// The result is exact for every int64 pair except INT64_MIN / -1, which saturates to INT64_MAX.
-/// Quotients below 2^32 with a 32-bit divisor take udiv64_32 instead of a 64-bit division.
+/// On 32-bit targets, quotients below 2^32 with a 32-bit divisor take udiv64_32 instead of a library
+/// 64-bit division; 64-bit hosts divide natively. Both are exact, so results are identical.
 constexpr int64_t div_round(int64_t n, int64_t d) {
     if (d == 0) return n > 0 ? INT64_MAX : (n < 0 ? INT64_MIN : 0);
     if (d == -1 && n == INT64_MIN) return INT64_MAX;
     const uint64_t un = n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
     const uint64_t ud = d < 0 ? 0 - static_cast<uint64_t>(d) : static_cast<uint64_t>(d);
     uint64_t q = 0, r = 0;
-    if (ud <= 0xFFFFFFFFu && (un >> 32) < ud) {
+    if (kSlow64BitDivide && ud <= 0xFFFFFFFFu && (un >> 32) < ud) {
         uint32_t r32 = 0;
         q = udiv64_32(un, static_cast<uint32_t>(ud), r32);
         r = r32;

@@ -19,11 +19,11 @@ struct DrawOptions {
     DepthRange depth_range{};       ///< for Shade::depth (from project_vertices)
 };
 
-/// Per-frame constants of face shading; color() costs three multiplies per face.
+/// Per-frame constants of face shading; color() costs six 32-bit multiplies per face.
 class FaceShading {
 public:
     FaceShading(const View& view, const DrawOptions& opt) : opt_(opt) {
-        for (int j = 0; j < 3; ++j) view_z_[j] = view.to_view.rot.m[2][j].raw();
+        for (int j = 0; j < 3; ++j) view_z_[j] = (view.to_view.rot.m[2][j].raw() + (1 << 15)) >> 16;
     }
 
     /// Colour of triangle t of `mesh`, seen from its front (true) or back side.
@@ -34,17 +34,18 @@ public:
         }
         if (mesh.normals.empty()) return opt_.base;
         const Normal14& n = mesh.normals[t];
-        const int64_t nz_q44 = mul_wide(view_z_[0], n.x) + mul_wide(view_z_[1], n.y) + mul_wide(view_z_[2], n.z);
-        int64_t b_q30 = nz_q44 >> 14;
-        if (!front) b_q30 = -b_q30;
-        b_q30 = clamp<int64_t>(b_q30, 0, int64_t{1} << 30);
-        auto scale = [b_q30](uint8_t c) { return static_cast<uint8_t>((c * b_q30 + (int64_t{1} << 29)) >> 30); };
+        // Q14 x Q14 products: the sum stays below 2^30, and 14 bits are far more than 8-bit colour needs.
+        const int32_t nz_q28 = view_z_[0] * n.x + view_z_[1] * n.y + view_z_[2] * n.z;
+        int32_t b_q16 = nz_q28 >> 12;
+        if (!front) b_q16 = -b_q16;
+        b_q16 = clamp<int32_t>(b_q16, 0, int32_t{1} << 16);
+        auto scale = [b_q16](uint8_t c) { return static_cast<uint8_t>((c * b_q16 + (1 << 15)) >> 16); };
         return {scale(opt_.base.r), scale(opt_.base.g), scale(opt_.base.b)};
     }
 
 private:
     DrawOptions opt_;
-    int32_t view_z_[3];  // third row of the view rotation, Q30: N_view.z = row . N
+    int32_t view_z_[3];  // third row of the view rotation, Q14: N_view.z = row . N
 };
 
 /// Per-pixel grey from depth over the frame's depth range (a multiply per pixel; debug view only).

@@ -14,11 +14,12 @@ namespace detail {
 /// Rows of the band in centre-relative subpixels, for a cheap reject before setup.
 struct BandBounds {
     int32_t y_first, y_last, x_first, x_last;
+    int32_t y_origin;  ///< centre of row 0
 };
 template <class Frame>
 BandBounds band_bounds(const Frame& f) {
     const int32_t ox = kSubpixel / 2 - f.width * (kSubpixel / 2), oy = kSubpixel / 2 - f.height * (kSubpixel / 2);
-    return {f.y0 * kSubpixel + oy, (f.y1 - 1) * kSubpixel + oy, ox, (f.width - 1) * kSubpixel + ox};
+    return {f.y0 * kSubpixel + oy, (f.y1 - 1) * kSubpixel + oy, ox, (f.width - 1) * kSubpixel + ox, oy};
 }
 
 /// True when no pixel centre of the band can lie in the triangle's bounding box.
@@ -26,6 +27,17 @@ inline bool outside_band(const ScreenVertex& a, const ScreenVertex& b, const Scr
     const int32_t y_min = min(a.y, min(b.y, c.y)), y_max = max(a.y, max(b.y, c.y));
     const int32_t x_min = min(a.x, min(b.x, c.x)), x_max = max(a.x, max(b.x, c.x));
     return y_max < bb.y_first || y_min > bb.y_last || x_max < bb.x_first || x_min > bb.x_last;
+}
+
+/// True when no pixel centre lies inside the triangle's bounding box (tiny triangles between centres);
+/// shifts and compares only, so such triangles skip the setup and its divisions.
+inline bool misses_all_centres(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const BandBounds& bb) {
+    const int32_t x_min = min(a.x, min(b.x, c.x)), x_max = max(a.x, max(b.x, c.x));
+    const int32_t y_min = min(a.y, min(b.y, c.y)), y_max = max(a.y, max(b.y, c.y));
+    // First centre at or after the minimum: centres sit at origin + 16 k.
+    const int32_t cx = ((x_min - bb.x_first + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.x_first;
+    const int32_t cy = ((y_min - bb.y_origin + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.y_origin;
+    return cx > x_max || cy > y_max;
 }
 
 /// Calls piece(a, b, c) for each drawable triangle of mesh triangle t: the triangle itself, or the fan
@@ -79,6 +91,7 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
             const int32_t area = TriangleRaster::signed_area(a, b, c);
             if (area == 0) return;
             if (opt.cull && area > 0) { ++st.triangles_culled; return; }
+            if (detail::misses_all_centres(a, b, c, bb)) return;
             TriangleRaster tr;
             tr.setup(a, b, c, frame.width, frame.height);
             ++st.triangles_drawn;
