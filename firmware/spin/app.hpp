@@ -9,6 +9,9 @@
 
 namespace spin {
 
+/// Frames spin renders at 160x128 (spin320 renders one at 320x240).
+constexpr uint32_t kSpinFrames = 4;
+
 /// Buffers of a full-frame renderer, declared by the application (statics on a device).
 struct FrameBuffers {
     hider::Span<hider::ScreenVertex> verts;  ///< one per mesh vertex

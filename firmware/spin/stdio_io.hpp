@@ -1,13 +1,8 @@
-// Host side of the examples' Io (host references only): files through <cstdio>, text on stdout, and
-// bench_begin()/bench_end() as no-ops so the shared program links unchanged.
+// Host side of the examples' Io (host references only): files through <cstdio>, text on stdout.
+// A host reference also defines bench_begin()/bench_end() as empty functions (once, in its .cpp).
 #pragma once
 #include <cstdint>
 #include <cstdio>
-
-extern "C" {
-inline void bench_begin() {}
-inline void bench_end() {}
-}
 
 namespace spin {
 

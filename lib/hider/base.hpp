@@ -67,6 +67,18 @@ public:
         if (size_ > high_water_) high_water_ = size_;
         return true;
     }
+    /// Inserts `v` before position pos (<= size), shifting the rest; false (and a drop) when full.
+    bool insert(size_t pos, const T& v) {
+        if (!push_back(v)) return false;
+        for (size_t k = size_ - 1; k > pos; --k) data_[k] = data_[k - 1];
+        data_[pos] = v;
+        return true;
+    }
+    /// Removes the element at pos (< size), shifting the rest down.
+    void erase(size_t pos) {
+        for (size_t k = pos; k + 1 < size_; ++k) data_[k] = data_[k + 1];
+        --size_;
+    }
     void clear() { size_ = 0; dropped_ = 0; }
     size_t size() const { return size_; }
     size_t capacity() const { return capacity_; }

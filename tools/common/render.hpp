@@ -2,6 +2,8 @@
 // algorithms, in one piece or band by band, and returns the frame as RGB888 bytes plus statistics.
 #pragma once
 #include <hider/raster/zbuffer.hpp>
+#include <hider/sort/newell.hpp>
+#include <hider/sort/reverse.hpp>
 
 #include <string>
 #include <vector>
@@ -10,7 +12,7 @@
 
 namespace hider::tool {
 
-enum class Algo { zbuffer };
+enum class Algo { zbuffer, painter, newell, reverse };
 enum class PixelFormat { rgb565, rgb888, grey8 };
 
 /// Names accepted by --algo, in order, comma-separated (for messages).
@@ -26,12 +28,17 @@ struct RenderOptions {
     PixelFormat format = PixelFormat::rgb565;
     Rgb background{0, 0, 0};
     Rgb base{255, 255, 255};
+    DepthKey painter_key = DepthKey::farthest;  ///< painter only
+    size_t split_pool = 0;  ///< newell/reverse: extra polygons for cuts; 0 = 4 per triangle + 1024
 };
 
 struct RenderResult {
     int width = 0, height = 0;
     std::vector<uint8_t> rgb;  ///< width * height * 3, row 0 first
     FrameStats stats;
+    uint32_t pixels_covered = 0;  ///< distinct pixels written at least once
+    NewellStats newell;           ///< newell and reverse only
+    size_t polygons = 0;          ///< object-space algorithms: polygons drawn after cuts
 };
 
 /// Renders `scene` with lib/ only. Returns false with a reason for unusable options.

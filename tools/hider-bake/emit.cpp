@@ -46,6 +46,18 @@ void rows(std::ostringstream& o, size_t count, size_t per_line, Fn&& item) {
     }
 }
 
+void emit_camera(std::ostringstream& o, const Camera& c) {
+    o << "/// gluLookAt + gluPerspective camera for a kWidth x kHeight frame (make_view()).\n"
+      << "inline constexpr Camera kCamera{\n"
+      << "    " << vec(c.eye) << ",  // eye\n"
+      << "    " << vec(c.target) << ",  // target\n"
+      << "    " << vec(c.up) << ",  // up\n"
+      << "    Angle::from_bam(" << hex32(c.fovy.bam()) << "),  // vertical field of view\n"
+      << "    " << q16(c.near) << ",  // near\n"
+      << "    " << q16(c.far) << ",  // far\n"
+      << "};\n\n";
+}
+
 void count_check(std::ostringstream& o, const char* array, const char* count) {
     o << "static_assert(sizeof(" << array << ") / sizeof(" << array << "[0]) == " << count << ", \"" << array
       << " has the wrong length\");\n\n";
@@ -93,17 +105,7 @@ std::string emit_header(const Scene& s, const BakeInfo& info) {
       << "inline constexpr size_t kVertexCount = " << nv << ";\n"
       << "inline constexpr size_t kTriangleCount = " << nt << ";\n\n";
 
-    const Camera& c = s.camera;
-    o << "/// gluLookAt + gluPerspective camera for a kWidth x kHeight frame (make_view()).\n"
-      << "inline constexpr Camera kCamera{\n"
-      << "    " << vec(c.eye) << ",  // eye\n"
-      << "    " << vec(c.target) << ",  // target\n"
-      << "    " << vec(c.up) << ",  // up\n"
-      << "    Angle::from_bam(" << hex32(c.fovy.bam()) << "),  // vertical field of view\n"
-      << "    " << q16(c.near) << ",  // near\n"
-      << "    " << q16(c.far) << ",  // far\n"
-      << "};\n\n";
-
+    emit_camera(o, s.camera);
     o << "inline constexpr Vec3q16 kPositions[] = {\n";
     rows(o, nv, 1, [&](size_t i) { return vec(s.positions[i]); });
     o << "};\n";

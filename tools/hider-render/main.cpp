@@ -23,7 +23,7 @@ const char* kUsage =
     "usage: hider-render MODEL.obj -o OUT.ppm|OUT.png [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
     "                    [--fov DEG] [--near N] [--far F] [--shade headlight|id|depth] [--no-cull]\n"
     "                    [--algo NAME] [--depth-bits 16|32] [--band ROWS] [--format rgb565|rgb888|grey8]\n"
-    "                    [--stats]\n";
+    "                    [--painter-key farthest|barycenter] [--pool N] [--stats]\n";
 
 [[noreturn]] void fail(const std::string& msg) {
     std::cerr << "hider-render: " << msg;
@@ -122,6 +122,16 @@ int main(int argc, char** argv) {
             else if (v == "rgb888") opt.format = PixelFormat::rgb888;
             else if (v == "grey8") opt.format = PixelFormat::grey8;
             else fail("unknown format '" + v + "' (available: rgb565, rgb888, grey8)");
+        } else if (a == "--painter-key") {
+            const std::string v = value();
+            if (v == "farthest") opt.painter_key = DepthKey::farthest;
+            else if (v == "barycenter") opt.painter_key = DepthKey::barycenter;
+            else fail("unknown painter key '" + v + "' (available: farthest, barycenter)");
+        } else if (a == "--pool") {
+            const std::string v = value();
+            long n = 0;
+            if (!parse_int(v, n) || n < 1 || n > (1L << 24)) fail("--pool needs a polygon count 1..16777216 (got '" + v + "')");
+            opt.split_pool = static_cast<size_t>(n);
         } else if (a == "--stats") stats = true;
         else if (a == "-h" || a == "--help") { std::cout << kUsage; return 0; }
         else if (!a.empty() && a[0] == '-') fail("unknown option '" + a + "'\n" + kUsage);
@@ -148,8 +158,15 @@ int main(int argc, char** argv) {
         const FrameStats& s = result.stats;
         std::printf("triangles %u drawn %u culled %u clipped %u outside %u\n", s.triangles_in, s.triangles_drawn,
                     s.triangles_culled, s.triangles_clipped, s.triangles_outside);
-        std::printf("fragments %u written %u overdraw %.2f\n", s.fragments, s.pixels_written,
-                    s.pixels_written == 0 ? 0.0 : static_cast<double>(s.fragments) / s.pixels_written);
+        std::printf("fragments %u written %u covered %u overdraw %.2f\n", s.fragments, s.pixels_written,
+                    result.pixels_covered,
+                    result.pixels_covered == 0 ? 0.0 : static_cast<double>(s.pixels_written) / result.pixels_covered);
+        if (opt.algo == Algo::newell || opt.algo == Algo::reverse) {
+            const NewellStats& n = result.newell;
+            std::printf("newell polygons %zu pair-tests %u moves %u splits %u unresolved %u dropped %u\n", result.polygons,
+                        n.pair_tests, n.moves, n.splits, n.unresolved, n.dropped);
+        }
+        if (s.status != Status::ok) std::printf("status %s\n", status_name(s.status));
     }
     return 0;
 }

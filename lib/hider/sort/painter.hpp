@@ -1,0 +1,81 @@
+// The painter's algorithm (Newell, Newell & Sancha's sort, without their tests): one depth key per
+// screen triangle, an O(n) LSD radix sort into caller arrays (no heap), drawing far to near with no
+// depth buffer. Its known failures (cyclic overlap, piercing) are real and tested; newell.hpp fixes them.
+#pragma once
+#include <hider/sort/poly.hpp>
+
+namespace hider {
+
+/// Which depth orders the painter: the farthest vertex (Newell's choice) or the barycentre.
+enum class DepthKey : uint8_t { farthest, barycenter };
+
+/// A sort entry: key (larger = farther) and the index of its polygon. 8 bytes.
+struct SortKey {
+    uint32_t key;
+    uint32_t index;
+};
+
+/// Sorts keys[0..n) by key, ascending and stable, with `scratch` (>= n entries) as the second
+/// buffer: four passes of 8 bits, O(n + 256) each. The result ends up in `keys`.
+inline void radix_sort(Span<SortKey> keys, Span<SortKey> scratch) {
+    const size_t n = keys.size();
+    SortKey* src = keys.data();
+    SortKey* dst = scratch.data();
+    for (int shift = 0; shift < 32; shift += 8) {
+        uint32_t count[256] = {};
+        for (size_t i = 0; i < n; ++i) ++count[(src[i].key >> shift) & 255];
+        uint32_t sum = 0;
+        for (uint32_t& c : count) { const uint32_t t = c; c = sum; sum += t; }
+        for (size_t i = 0; i < n; ++i) dst[count[(src[i].key >> shift) & 255]++] = src[i];
+        swap(src, dst);
+    }
+    // Four passes: the sorted data is back in `keys`.
+}
+
+/// Back-to-front order of polys[0..n): order[k] = index of the k-th polygon to draw. Ties keep the
+/// mesh order. Precondition: keys and scratch hold >= polys.size() entries. Cost: O(n).
+inline void painter_order(Span<const ScreenPoly> polys, DepthKey key, Span<SortKey> keys, Span<SortKey> scratch,
+                          Span<uint32_t> order) {
+    const size_t n = polys.size();
+    for (size_t i = 0; i < n; ++i) {
+        const ScreenPoly& p = polys[i];
+        const uint32_t k = key == DepthKey::farthest
+                               ? p.zmax
+                               : static_cast<uint32_t>((uint64_t{p.v[0].z} + p.v[1].z + p.v[2].z) / 3);
+        keys[i] = {~k, static_cast<uint32_t>(i)};  // ascending on ~z = farthest first
+    }
+    radix_sort({keys.data(), n}, {scratch.data(), n});
+    for (size_t i = 0; i < n; ++i) order[i] = keys[i].index;
+}
+
+/// Draws polys in `order` (back to front) into the band, painting every covered pixel. With kCount
+/// the statistics count written pixels. Precondition: frame.valid(), order indexes polys.
+template <bool kCount = false, class Format, class Depth>
+FrameStats paint_in_order(const View& view, const Mesh& mesh, Span<const ScreenPoly> polys, Span<const uint32_t> order,
+                          const FrameView<Format, Depth>& frame, const DrawOptions& opt) {
+    FrameStats st;
+    const FaceShading shading(view, opt);
+    const detail::BandBounds bb = detail::band_bounds(frame);
+    for (size_t k = 0; k < order.size(); ++k) {
+        const ScreenPoly& p = polys[order[k]];
+        if (p.ymax < bb.y_first || p.ymin > bb.y_last) continue;
+        TriangleRaster tr;
+        if (!tr.setup(p.v[0], p.v[1], p.v[2], frame.width, frame.height)) continue;
+        ++st.triangles_drawn;
+        const uint32_t dz = tr.dzdx();
+        const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
+        uint32_t n = 0;
+        if (opt.shade == Shade::depth) {
+            const DepthShader<Format> shader(opt.depth_range);
+            n = tr.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) { span_paint(frame.row(y), x0, x1, z, dz, shader); });
+        } else {
+            const FlatShader<typename Format::Pixel> shader{Format::pack(shading.color(mesh, p.tri, (p.flags & kPolyFront) != 0))};
+            n = tr.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) { span_paint(frame.row(y), x0, x1, z, dz, shader); });
+        }
+        st.fragments += n;
+        if constexpr (kCount) st.pixels_written += n;
+    }
+    return st;
+}
+
+}  // namespace hider
