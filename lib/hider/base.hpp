@@ -22,7 +22,7 @@ namespace hider {
 template <class T> constexpr T min(T a, T b) { return b < a ? b : a; }
 template <class T> constexpr T max(T a, T b) { return a < b ? b : a; }
 template <class T> constexpr T clamp(T v, T lo, T hi) { return v < lo ? lo : (hi < v ? hi : v); }
-template <class T> constexpr void swap(T& a, T& b) { T t = a; a = b; b = t; }
+template <class T> constexpr void swap_values(T& a, T& b) { T t = a; a = b; b = t; }
 template <class T> constexpr T abs_value(T v) { return v < 0 ? -v : v; }
 
 template <class A, class B> struct IsSame { static constexpr bool value = false; };

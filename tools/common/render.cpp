@@ -28,7 +28,7 @@ template <class Format, class Depth>
 bool render_sorted(const Scene& scene, const RenderOptions& opt, const View& view, const Mesh& mesh,
                    const std::vector<ScreenVertex>& verts, const DrawOptions& draw, RenderResult& out) {
     // Storage the application would declare statically on a device.
-    const size_t extra = opt.algo == Algo::painter ? 0 : (opt.split_pool != 0 ? opt.split_pool : mesh.tris.size() * 4 + 1024);
+    const size_t extra = opt.algo == Algo::painter ? 0 : (opt.split_pool != 0 ? opt.split_pool : mesh.tris.size() * 16 + 1024);
     std::vector<ScreenPoly> poly_store(mesh.tris.size() * 7 + extra);  // a clipped triangle gives up to 7 pieces
     std::vector<uint32_t> order_store(poly_store.size());
     BoundedList<ScreenPoly> polys(poly_store.data(), poly_store.size());

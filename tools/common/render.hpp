@@ -29,7 +29,7 @@ struct RenderOptions {
     Rgb background{0, 0, 0};
     Rgb base{255, 255, 255};
     DepthKey painter_key = DepthKey::farthest;  ///< painter only
-    size_t split_pool = 0;  ///< newell/reverse: extra polygons for cuts; 0 = 4 per triangle + 1024
+    size_t split_pool = 0;  ///< newell/reverse: extra polygons for cuts; 0 = 16 per triangle + 1024
 };
 
 struct RenderResult {

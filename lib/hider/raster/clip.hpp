@@ -49,7 +49,7 @@ inline void clip_triangle(const View& view, const ViewPoint& a, const ViewPoint&
             if ((dp >= 0) != (dq >= 0) && dst->count < ClipPolygon::kMaxVertices)
                 dst->v[dst->count++] = dp < 0 ? detail::intersect(p, q, dp, dq) : detail::intersect(q, p, dq, dp);
         }
-        swap(src, dst);
+        swap_values(src, dst);
         if (src->count < 3) break;
     }
     if (src != &out) out = *src;

@@ -42,7 +42,7 @@ public:
         if (area == 0) return false;
         front_ = area < 0;
         const ScreenVertex* v[3] = {&a, &b, &c};
-        if (area < 0) { swap(v[1], v[2]); area = -area; }  // traverse clockwise on the image
+        if (area < 0) { swap_values(v[1], v[2]); area = -area; }  // traverse clockwise on the image
         for (int i = 0; i < 3; ++i) { x_[i] = v[i]->x; y_[i] = v[i]->y; }
         width_ = width;
         x_origin_ = kSubpixel / 2 - width * (kSubpixel / 2);
@@ -50,9 +50,9 @@ public:
         setup_depth(v, area);
         // Rows: sort vertex indices by y.
         int t = 0, m = 1, bt = 2;
-        if (y_[m] < y_[t]) swap(m, t);
-        if (y_[bt] < y_[m]) swap(bt, m);
-        if (y_[m] < y_[t]) swap(m, t);
+        if (y_[m] < y_[t]) swap_values(m, t);
+        if (y_[bt] < y_[m]) swap_values(bt, m);
+        if (y_[m] < y_[t]) swap_values(m, t);
         top_ = t; mid_ = m; bottom_ = bt;
         row_top_ = first_row_at_or_below(y_[t]);
         row_mid_ = first_row_at_or_below(y_[m]);

@@ -27,7 +27,7 @@ inline void radix_sort(Span<SortKey> keys, Span<SortKey> scratch) {
         uint32_t sum = 0;
         for (uint32_t& c : count) { const uint32_t t = c; c = sum; sum += t; }
         for (size_t i = 0; i < n; ++i) dst[count[(src[i].key >> shift) & 255]++] = src[i];
-        swap(src, dst);
+        swap_values(src, dst);
     }
     // Four passes: the sorted data is back in `keys`.
 }

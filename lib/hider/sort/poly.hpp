@@ -7,17 +7,18 @@
 
 namespace hider {
 
-/// One triangle (or split piece) in screen space: 60 bytes on every target.
+/// One triangle (or split piece) in screen space: 64 bytes on every target.
 struct ScreenPoly {
     ScreenVertex v[3];
     uint32_t zmin, zmax;   ///< depth extent
     int16_t xmin, xmax, ymin, ymax;  ///< bounding box, subpixels
     uint32_t tri;          ///< mesh triangle it comes from (colour and id)
-    uint8_t flags;         ///< kPolyFront | kPolyMarked
+    uint32_t moved_at;     ///< Newell: the output position it was last moved to (kNotMoved if never)
+    uint8_t flags;         ///< kPolyFront
 };
-static_assert(sizeof(ScreenPoly) == 60, "ScreenPoly layout is documented in README.md");
-constexpr uint8_t kPolyFront = 1;   ///< counter-clockwise on the image
-constexpr uint8_t kPolyMarked = 2;  ///< moved once by Newell's algorithm
+static_assert(sizeof(ScreenPoly) == 64, "ScreenPoly layout is documented in README.md");
+constexpr uint8_t kPolyFront = 1;  ///< counter-clockwise on the image
+constexpr uint32_t kNotMoved = 0xFFFFFFFFu;
 
 /// Fills the extents of p from its vertices.
 inline void update_extents(ScreenPoly& p) {
@@ -48,7 +49,8 @@ inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVer
             if (area == 0) return;
             if (cull && area > 0) { ++st.triangles_culled; return; }
             if (detail::outside_band(a, b, c, bb) || detail::misses_all_centres(a, b, c, bb)) return;
-            ScreenPoly p{{a, b, c}, 0, 0, 0, 0, 0, 0, static_cast<uint32_t>(t), static_cast<uint8_t>(area < 0 ? kPolyFront : 0)};
+            ScreenPoly p{{a, b, c}, 0, 0, 0, 0, 0, 0, static_cast<uint32_t>(t), kNotMoved,
+                         static_cast<uint8_t>(area < 0 ? kPolyFront : 0)};
             update_extents(p);
             if (!out.push_back(p)) st.status = Status::capacity_exceeded;
         });
@@ -75,16 +77,21 @@ inline Int128 side(const ScreenPlane& pl, const ScreenVertex& v) {
            mul128(pl.c, int64_t{v.z} - pl.origin.z);
 }
 
-/// -1 if every vertex of p is on the near side of the plane or on it, +1 if every one is on the far
-/// side or on it, 0 if p straddles the plane. (A polygon lying in the plane gives +1.)
-inline int side_of(const ScreenPlane& pl, const ScreenPoly& p) {
-    bool near = false, far = false;
-    for (const ScreenVertex& v : p.v) {
-        const int s = side(pl, v).sign();
-        near = near || s < 0;
-        far = far || s > 0;
-    }
-    return near && far ? 0 : (near ? -1 : 1);
+/// Half a grid step of the plane's distance: how far a vertex cut onto the plane can sit from it after
+/// rounding to the 1/16-pixel, 1-LSB grid ((|a| + |b| + |c|) / 2, exact).
+inline Int128 rounding_slack(const ScreenPlane& pl) {
+    const Int128 sum = mul128(abs_value(pl.a), 1) + mul128(abs_value(pl.b), 1) + mul128(pl.c, 1);
+    return sum.shr(1);
+}
+
+/// Side of v: +1 farther, -1 nearer, 0 on the plane or within the rounding slack of it. Exact integer
+/// arithmetic; the slack only absorbs the rounding of cut vertices, so a piece never straddles the
+/// plane it was cut by, while shared vertices and coplanar neighbours are exactly on it.
+inline int classify(const ScreenPlane& pl, const Int128& slack, const ScreenVertex& v) {
+    const Int128 d = side(pl, v);
+    if ((d - slack).sign() > 0) return 1;
+    if ((d + slack).sign() < 0) return -1;
+    return 0;
 }
 
 /// True when the projections of p and q share no pixel centre interior: some edge of one has all
@@ -111,10 +118,14 @@ inline bool projections_disjoint(const ScreenPoly& p, const ScreenPoly& q) {
 /// Splits p by the plane into at most three triangles written to out[]; returns their count, or 0
 /// when p does not straddle the plane. Each intersection is computed from the far vertex toward the
 /// near one, so both pieces sharing a cut get identical points. Pieces keep tri and the front flag.
-inline int split_by_plane(const ScreenPoly& p, const ScreenPlane& pl, ScreenPoly (&out)[3]) {
+/// When rounding collapses one side to nothing, it returns 0 and *survivor tells the side left
+/// (+1 far, -1 near): the polygon then lies on that side for every pixel centre.
+inline int split_by_plane(const ScreenPoly& p, const ScreenPlane& pl, ScreenPoly (&out)[3], int* survivor = nullptr) {
+    if (survivor != nullptr) *survivor = 0;
     Int128 d[3];
     int sgn[3];
-    for (int i = 0; i < 3; ++i) { d[i] = side(pl, p.v[i]); sgn[i] = d[i].sign(); }
+    const Int128 slack = rounding_slack(pl);
+    for (int i = 0; i < 3; ++i) { d[i] = side(pl, p.v[i]); sgn[i] = classify(pl, slack, p.v[i]); }
     const bool has_far = sgn[0] > 0 || sgn[1] > 0 || sgn[2] > 0;
     const bool has_near = sgn[0] < 0 || sgn[1] < 0 || sgn[2] < 0;
     if (!has_far || !has_near) return 0;
@@ -150,15 +161,35 @@ inline int split_by_plane(const ScreenPoly& p, const ScreenPlane& pl, ScreenPoly
             q.v[0] = poly[0];
             q.v[1] = poly[k];
             q.v[2] = poly[k + 1];
-            q.flags = static_cast<uint8_t>(p.flags & kPolyFront);
+            q.moved_at = kNotMoved;
             if (TriangleRaster::signed_area(q.v[0], q.v[1], q.v[2]) == 0) continue;  // rounded to a sliver of nothing
             update_extents(q);
             out[count++] = q;
         }
     };
     emit(far_poly, nf);
+    const int far_count = count;
     emit(near_poly, nn);
-    return count >= 2 ? count : 0;  // rounding collapsed one side: no real cut
+    if (far_count > 0 && count > far_count) return count;
+    if (survivor != nullptr) *survivor = far_count > 0 ? 1 : (count > 0 ? -1 : 0);
+    return 0;  // rounding collapsed one side: no real cut
+}
+
+/// -1 if every vertex of p is on the near side of the plane or on it, +1 if every one is on the far
+/// side or on it, 0 if p straddles the plane. (A polygon lying in the plane gives +1.) A straddle so
+/// thin that cutting would leave nothing on one side counts as the other side (see split_by_plane).
+inline int side_of(const ScreenPlane& pl, const ScreenPoly& p) {
+    const Int128 slack = rounding_slack(pl);
+    bool near = false, far = false;
+    for (const ScreenVertex& v : p.v) {
+        const int s = classify(pl, slack, v);
+        near = near || s < 0;
+        far = far || s > 0;
+    }
+    if (!(near && far)) return near ? -1 : 1;
+    ScreenPoly pieces[3];
+    int survivor = 0;
+    return split_by_plane(p, pl, pieces, &survivor) != 0 ? 0 : survivor;
 }
 
 }  // namespace hider
