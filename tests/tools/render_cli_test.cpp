@@ -315,7 +315,10 @@ TEST_CASE("Camera numbers that do not parse or are not finite are rejected with 
 }
 
 TEST_CASE("An unknown --algo is rejected with the list of available algorithms") {
-    check_error(render(triangle_model(), {"--algo", "painter"}), {"unknown algo 'painter'", "available: zbuffer"});
+    check_error(render(triangle_model(), {"--algo", "scanline"}),
+                {"unknown algo 'scanline'", "available: zbuffer, painter, newell, reverse"});
+    check_error(render(triangle_model(), {"--painter-key", "nearest"}), {"unknown painter key 'nearest'", "farthest", "barycenter"});
+    check_error(render(triangle_model(), {"--pool", "0"}), {"--pool needs a polygon count"});
 }
 
 TEST_CASE("An unknown --shade is rejected with the list of available shades") {
