@@ -14,13 +14,22 @@ namespace {
 long g_allocations = 0;
 }
 
+// Every ordinary form is replaced, so each allocation and its release use the same pair (malloc/free).
 void* operator new(std::size_t n) {
     ++g_allocations;
     if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
     std::abort();
 }
+void* operator new[](std::size_t n) { return operator new(n); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+    ++g_allocations;
+    return std::malloc(n == 0 ? 1 : n);
+}
+void* operator new[](std::size_t n, const std::nothrow_t& t) noexcept { return operator new(n, t); }
 void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace hider;
 

@@ -45,8 +45,11 @@ constexpr int64_t mul_wide(int32_t a, int32_t b) {
 #endif
 }
 
-/// Number of leading zero bits of a nonzero 32-bit value.
+/// Number of leading zero bits of a nonzero 32-bit value (one instruction where the CPU has CLZ).
 constexpr int clz32(uint32_t v) {
+#if defined(__GNUC__)
+    return __builtin_clz(v);
+#endif
     int n = 0;
     if (v <= 0x0000FFFFu) { n += 16; v <<= 16; }
     if (v <= 0x00FFFFFFu) { n += 8; v <<= 8; }
@@ -111,6 +114,12 @@ constexpr int64_t div_round(int64_t n, int64_t d) {
     const bool negative = (n < 0) != (d < 0);
     if (!negative) return q > static_cast<uint64_t>(INT64_MAX) ? INT64_MAX : static_cast<int64_t>(q);
     return q > static_cast<uint64_t>(INT64_MAX) ? INT64_MIN : -static_cast<int64_t>(q);
+}
+
+/// n / 2^shift rounded to nearest, ties away from zero (div_round for a power of two, with shifts).
+constexpr int64_t div_round_pow2(int64_t n, int shift) {
+    const int64_t half = int64_t{1} << (shift - 1);
+    return n >= 0 ? (n + half) >> shift : -((-n + half) >> shift);
 }
 
 /// floor(n / d) for int32 n and d > 0 (C++ '/' truncates toward zero instead).

@@ -56,8 +56,7 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
         const ViewPoint p = to_view_point(view, positions[i]);
         const uint8_t code = outcode(view, p);
         if (code != 0) {
-            out[i] = ScreenVertex{};
-            out[i].outside = code;
+            out[i].outside = code;  // x, y, z are not used for vertices outside a plane
             continue;
         }
         out[i] = project(view, p);

@@ -113,16 +113,39 @@ inline uint8_t outcode(const View& v, const ViewPoint& p) {
     return code;
 }
 
+namespace detail {
+/// div_round(n, 256 w) for w > 0. On 32-bit targets it divides n / 256 by w with udiv64_32 and folds
+/// the low 8 bits into the remainder: exact, and no library 64-bit division (the quotient is a screen
+/// coordinate, far below 2^32).
+inline int64_t div_round_w256(int64_t n, int32_t w) {
+    const uint64_t un = n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
+    const uint32_t uw = static_cast<uint32_t>(w);
+    if (!kSlow64BitDivide || (un >> 40) >= uw) return div_round(n, int64_t{w} * 256);
+    uint32_t r = 0;
+    const uint64_t q = udiv64_32(un >> 8, uw, r);
+    const uint64_t rem = (uint64_t{r} << 8) | (un & 255u), den = uint64_t{uw} << 8;
+    const int64_t rounded = static_cast<int64_t>(q + (rem >= den - rem ? 1u : 0u));
+    return n < 0 ? -rounded : rounded;
+}
+
+/// floor(near * 2^31 / w) for w > near (so below 2^31), without a library 64-bit division.
+inline uint32_t near_over_w_q31(int32_t near_raw, int32_t w) {
+    const uint64_t n31 = uint64_t{static_cast<uint32_t>(near_raw)} << 31;
+    if (!kSlow64BitDivide) return static_cast<uint32_t>(n31 / static_cast<uint32_t>(w));
+    uint32_t r = 0;
+    return udiv64_32(n31, static_cast<uint32_t>(w), r);
+}
+}  // namespace detail
+
 /// Projects a point inside (or, after clipping, on) the view volume; coordinates are clamped to the
 /// guard band and depth to [kDepthNear, kDepthFar], so rounding at clip planes never overflows.
 inline ScreenVertex project(const View& v, const ViewPoint& p) {
-    const int64_t w = max(p.w, int32_t{1});
-    const int64_t den = w * 256;
+    const int32_t w = max(p.w, int32_t{1});
     ScreenVertex s;
-    s.x = static_cast<int16_t>(clamp<int64_t>(div_round(mul_wide(p.x, v.k_q8), den), -kCoordLimit, kCoordLimit));
-    s.y = static_cast<int16_t>(clamp<int64_t>(div_round(-mul_wide(p.y, v.k_q8), den), -kCoordLimit, kCoordLimit));
-    // u = n / w in Q31, then z = near + scale (1 - u) / (1 - n/f).
-    uint64_t u = (uint64_t{static_cast<uint32_t>(v.near_raw)} << 31) / static_cast<uint64_t>(w);
+    s.x = static_cast<int16_t>(clamp<int64_t>(detail::div_round_w256(mul_wide(p.x, v.k_q8), w), -kCoordLimit, kCoordLimit));
+    s.y = static_cast<int16_t>(clamp<int64_t>(detail::div_round_w256(-mul_wide(p.y, v.k_q8), w), -kCoordLimit, kCoordLimit));
+    // u = n / w in Q31 (1 when w <= n), then z = near + scale (1 - u) / (1 - n/f).
+    uint64_t u = w <= v.near_raw ? (uint64_t{1} << 31) : detail::near_over_w_q31(v.near_raw, w);
     u = clamp<uint64_t>(u, v.near_over_far_q31, uint64_t{1} << 31);
     const uint64_t z = kDepthNear + ((((uint64_t{1} << 31) - u) * v.depth_scale_q31 + (uint64_t{1} << 30)) >> 31);
     s.z = static_cast<uint32_t>(min<uint64_t>(z, kDepthFar));

@@ -38,6 +38,7 @@ public:
     /// Prepares (a, b, c) for a width x height frame. Returns false for zero area. Both windings are
     /// accepted; front() tells which one it was. Cost: two 64-bit divisions.
     bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t width, int32_t height) {
+        row_top_ = row_mid_ = row_bottom_ = 0;  // an empty row range if we return early
         int32_t area = signed_area(a, b, c);
         if (area == 0) return false;
         front_ = area < 0;
@@ -65,23 +66,43 @@ public:
     int32_t end_row() const { return row_bottom_; }
     uint32_t dzdx() const { return dzdx_; }
 
-    /// Calls fn(y, x0, x1, z) for each row y in [y_begin, y_end) with covered pixels [x0, x1) clipped
-    /// to [0, width); z is the depth at (x0, y). Returns the number of pixels covered.
-    template <class Fn>
-    uint32_t spans(int32_t y_begin, int32_t y_end, Fn&& fn) const {
+    /// Visits every row y in [y_begin, y_end) the triangle touches, in order: rows.begin(y0) once,
+    /// then rows(x0, x1, z) per row with the covered pixels [x0, x1) clipped to [0, width) (possibly
+    /// empty: x0 >= x1) and z the depth at (x0, y). Returns the number of pixels covered. This is the
+    /// hot path: a row functor keeps its own row pointers and steps them by a stride (no multiply).
+    template <class RowFn>
+    uint32_t scan(int32_t y_begin, int32_t y_end, RowFn& rows_fn) const {
         const int32_t y0 = max(row_top_, y_begin), y1 = min(row_bottom_, y_end);
         if (y0 >= y1) return 0;
+        RowFn local = rows_fn;  // a copy whose address never escapes: its fields can stay in registers
+        local.begin(y0);
         const int32_t y_mid = clamp(row_mid_, y0, y1);
         Walker long_walker = walker(edge_index(top_, bottom_), y0);
         uint32_t covered = 0;
-        if (y0 < y_mid) covered += rows(long_walker, walker(edge_index(top_, mid_), y0), y0, y_mid, fn);
-        if (y_mid < y1) covered += rows(long_walker, walker(edge_index(mid_, bottom_), y_mid), y_mid, y1, fn);
+        if (y0 < y_mid) covered += rows(long_walker, walker(edge_index(top_, mid_), y0), y0, y_mid, local);
+        if (y_mid < y1) covered += rows(long_walker, walker(edge_index(mid_, bottom_), y_mid), y_mid, y1, local);
+        rows_fn = local;
         return covered;
+    }
+
+    /// Convenience form of scan(): fn(y, x0, x1, z) for each row with a non-empty span.
+    template <class Fn>
+    uint32_t spans(int32_t y_begin, int32_t y_end, Fn&& fn) const {
+        struct Adapter {
+            Fn& f;
+            int32_t y;
+            void begin(int32_t first) { y = first; }
+            void operator()(int32_t x0, int32_t x1, uint32_t z) {
+                if (x0 < x1) f(y, x0, x1, z);
+                ++y;
+            }
+        } adapter{fn, 0};
+        return scan(y_begin, y_end, adapter);  // the copy in scan() holds the same reference to fn
     }
 
 private:
     int32_t first_row_at_or_below(int32_t y_sub) const {
-        return static_cast<int32_t>(div_floor(int64_t{y_sub} - y_origin_ + kSubpixel - 1, kSubpixel));
+        return (y_sub - y_origin_ + kSubpixel - 1) >> kSubpixelBits;  // floor division by 16
     }
 
     /// Index i of the edge (v[i] -> v[i+1]) joining vertices p and q.
@@ -97,11 +118,11 @@ private:
         dzdx_ = static_cast<uint32_t>(px);
         dzdy_ = static_cast<uint32_t>(qy);
         // Reference pixel: the one whose cell holds v0; its centre is within 8 subpixels of v0.
-        ref_px_ = static_cast<int32_t>(div_floor(int64_t{x_[0]} - x_origin_ + kSubpixel / 2, kSubpixel));
-        ref_py_ = static_cast<int32_t>(div_floor(int64_t{y_[0]} - y_origin_ + kSubpixel / 2, kSubpixel));
-        const int64_t ox = int64_t{ref_px_} * kSubpixel + x_origin_ - x_[0];
-        const int64_t oy = int64_t{ref_py_} * kSubpixel + y_origin_ - y_[0];
-        z_ref_ = v[0]->z + static_cast<uint32_t>(div_round(px * ox + qy * oy, kSubpixel));
+        ref_px_ = (x_[0] - x_origin_ + kSubpixel / 2) >> kSubpixelBits;
+        ref_py_ = (y_[0] - y_origin_ + kSubpixel / 2) >> kSubpixelBits;
+        const int64_t ox = ref_px_ * kSubpixel + x_origin_ - x_[0];
+        const int64_t oy = ref_py_ * kSubpixel + y_origin_ - y_[0];
+        z_ref_ = v[0]->z + static_cast<uint32_t>(div_round_pow2(px * ox + qy * oy, kSubpixelBits));
     }
 
     /// Depth at pixel (px, py): exact modulo 2^32, equal to what stepping produces.
@@ -129,7 +150,7 @@ private:
         const int32_t yc = py * kSubpixel + y_origin_;
         // Biased edge function at the centre of pixel 0 of row py; exact in int32 (CONVENTIONS.md).
         const int32_t e0 = dx * (yc - y_[a]) - dy * (x_origin_ - x_[a]) + bias;
-        Walker w{};
+        Walker w;
         w.left = dy < 0;  // the edge function grows to the right, so the covered side is to the right
         w.a = (w.left ? -dy : dy) * kSubpixel;
         const int32_t g0 = w.left ? e0 : -e0 - 1;
@@ -145,41 +166,45 @@ private:
         return w;
     }
 
-    static void step(Walker& w, uint32_t dzdx) {
-        w.g += w.m;
-        w.px += w.q;
-        w.z += w.dz_row;
-        if (w.g >= w.a) { w.g -= w.a; --w.px; w.z -= dzdx; }
-    }
-
-    /// Rows [y, y_end) between two walkers standing on row y; leaves both on row y_end.
-    template <class Fn>
-    uint32_t rows(Walker& w0, Walker w1, int32_t y, int32_t y_end, Fn& fn) const {
-        Walker& left = w0.left ? w0 : w1;
-        Walker& right = w0.left ? w1 : w0;
+    /// Rows [y, y_end) between two walkers standing on row y; leaves `carried` (the long edge) on row
+    /// y_end. The walkers live in locals here: the span writes cannot alias them.
+    template <class RowFn>
+    uint32_t rows(Walker& carried, const Walker& other, int32_t y, int32_t y_end, RowFn& rows_fn) const {
+        const Walker& l = carried.left ? carried : other;
+        const Walker& r = carried.left ? other : carried;
+        int32_t lpx = l.px, lg = l.g, rpx = r.px, rg = r.g;
+        const int32_t la = l.a, lm = l.m, lq = l.q, ra = r.a, rm = r.m, rq = r.q, width = width_;
+        uint32_t lz = l.z;
+        const uint32_t ldz = l.dz_row, dzdx = dzdx_, dzdy = dzdy_;
         uint32_t z_col0 = depth_at(0, y);  // depth at pixel 0, for spans that start off-screen
         uint32_t covered = 0;
         for (; y < y_end; ++y) {
-            const int32_t x0 = max(left.px, int32_t{0});
-            const int32_t x1 = min(right.px, width_);
-            if (x0 < x1) {
-                fn(y, x0, x1, left.px < 0 ? z_col0 : left.z);
-                covered += static_cast<uint32_t>(x1 - x0);
-            }
-            step(left, dzdx_);
-            step(right, dzdx_);
-            z_col0 += dzdy_;
+            const int32_t x0 = lpx > 0 ? lpx : 0;
+            const int32_t x1 = rpx < width ? rpx : width;
+            rows_fn(x0, x1, lpx < 0 ? z_col0 : lz);
+            if (x0 < x1) covered += static_cast<uint32_t>(x1 - x0);
+            lg += lm;  // both edges step as DDAs with an exact error term
+            lpx += lq;
+            lz += ldz;
+            if (lg >= la) { lg -= la; --lpx; lz -= dzdx; }
+            rg += rm;
+            rpx += rq;
+            if (rg >= ra) { rg -= ra; --rpx; }
+            z_col0 += dzdy;
         }
+        if (carried.left) { carried.px = lpx; carried.g = lg; carried.z = lz; }
+        else { carried.px = rpx; carried.g = rg; }
         return covered;
     }
 
-    int32_t x_[3] = {}, y_[3] = {};
-    int32_t width_ = 0, x_origin_ = 0, y_origin_ = 0;
-    int top_ = 0, mid_ = 0, bottom_ = 0;
-    int32_t row_top_ = 0, row_mid_ = 0, row_bottom_ = 0;
-    int32_t ref_px_ = 0, ref_py_ = 0;
-    uint32_t z_ref_ = 0, dzdx_ = 0, dzdy_ = 0;
-    bool front_ = false;
+    // No default initialisers: setup() writes every member, and a per-triangle memset costs real time.
+    int32_t x_[3], y_[3];
+    int32_t width_, x_origin_, y_origin_;
+    int top_, mid_, bottom_;
+    int32_t row_top_, row_mid_, row_bottom_;
+    int32_t ref_px_, ref_py_;
+    uint32_t z_ref_, dzdx_, dzdy_;
+    bool front_;
 };
 
 }  // namespace hider

@@ -66,6 +66,30 @@ void for_each_piece(const View& view, const Mesh& mesh, Span<const ScreenVertex>
     }
 }
 
+/// Row functor for TriangleRaster::scan: depth-tested spans, row pointers stepped by the stride.
+template <bool kCount, class Format, class Depth, class Shader>
+struct DepthTestRows {
+    const FrameView<Format, Depth>* frame;
+    Shader shader;
+    uint32_t dz;
+    typename Format::Pixel* crow = nullptr;
+    Depth* zrow = nullptr;
+    uint32_t written = 0;
+
+    int32_t stride = 0;
+
+    void begin(int32_t y) {
+        crow = frame->row(y);
+        zrow = frame->depth_row(y);
+        stride = frame->stride;
+    }
+    void operator()(int32_t x0, int32_t x1, uint32_t z) {
+        if (x0 < x1) written += span_depth_test<kCount>(crow, zrow, x0, x1, z, dz, shader);
+        crow += stride;
+        zrow += stride;
+    }
+};
+
 }  // namespace detail
 
 /// Draws `mesh` into `frame` with the z-buffer. The caller cleared the band (clear()) and projected
@@ -95,19 +119,17 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
             TriangleRaster tr;
             tr.setup(a, b, c, frame.width, frame.height);
             ++st.triangles_drawn;
-            const uint32_t dz = tr.dzdx();
             const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
             if (opt.shade == Shade::depth) {
-                const DepthShader<Format> shader(opt.depth_range);
-                st.fragments += tr.spans(y_begin, y_end, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) {
-                    st.pixels_written += span_depth_test<kCount>(frame.row(y), frame.depth_row(y), x0, x1, z, dz, shader);
-                });
+                detail::DepthTestRows<kCount, Format, Depth, DepthShader<Format>> rows{&frame, DepthShader<Format>(opt.depth_range), tr.dzdx()};
+                st.fragments += tr.scan(y_begin, y_end, rows);
+                st.pixels_written += rows.written;
                 return;
             }
-            const FlatShader<Pixel> shader{Format::pack(shading.color(mesh, t, tr.front()))};
-            st.fragments += tr.spans(y_begin, y_end, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) {
-                st.pixels_written += span_depth_test<kCount>(frame.row(y), frame.depth_row(y), x0, x1, z, dz, shader);
-            });
+            detail::DepthTestRows<kCount, Format, Depth, FlatShader<Pixel>> rows{
+                &frame, FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))}, tr.dzdx()};
+            st.fragments += tr.scan(y_begin, y_end, rows);
+            st.pixels_written += rows.written;
         });
     }
     return st;
