@@ -74,14 +74,44 @@ public:
     uint32_t scan(int32_t y_begin, int32_t y_end, RowFn& rows_fn) const {
         const int32_t y0 = max(row_top_, y_begin), y1 = min(row_bottom_, y_end);
         if (y0 >= y1) return 0;
-        RowFn local = rows_fn;  // a copy whose address never escapes: its fields can stay in registers
-        local.begin(y0);
+        RowFn fn = rows_fn;  // a copy whose address never escapes: its fields can stay in registers
+        fn.begin(y0);
         const int32_t y_mid = clamp(row_mid_, y0, y1);
-        Walker long_walker = walker(edge_index(top_, bottom_), y0);
+        // The long edge (top to bottom) and the short edge of the half holding y0; both short edges
+        // lie on the same side, so left and right never swap, only the short walker is replaced at y_mid.
+        const Walker lw = walker(edge_index(top_, bottom_), y0);
+        const Walker sw = walker(y0 < y_mid ? edge_index(top_, mid_) : edge_index(mid_, bottom_), y0);
+        const bool long_left = lw.left;
+        const Walker& l = long_left ? lw : sw;
+        const Walker& r = long_left ? sw : lw;
+        int32_t lpx = l.px, lg = l.g, la = l.a, lm = l.m, lq = l.q;
+        int32_t rpx = r.px, rg = r.g, ra = r.a, rm = r.m, rq = r.q;
+        uint32_t lz = l.z, ldz = l.dz_row;
+        const uint32_t dzdx = dzdx_, dzdy = dzdy_;
+        const int32_t width = width_;
+        uint32_t z_col0 = depth_at(0, y0);  // depth at pixel 0, for spans that start off-screen
         uint32_t covered = 0;
-        if (y0 < y_mid) covered += rows(long_walker, walker(edge_index(top_, mid_), y0), y0, y_mid, local);
-        if (y_mid < y1) covered += rows(long_walker, walker(edge_index(mid_, bottom_), y_mid), y_mid, y1, local);
-        rows_fn = local;
+        for (int32_t y = y0;;) {
+            const int32_t x0 = lpx > 0 ? lpx : 0;
+            const int32_t x1 = rpx < width ? rpx : width;
+            fn(x0, x1, lpx < 0 ? z_col0 : lz);
+            if (x0 < x1) covered += static_cast<uint32_t>(x1 - x0);
+            if (++y == y1) break;
+            lg += lm;  // both edges step as DDAs with an exact error term
+            lpx += lq;
+            lz += ldz;
+            if (lg >= la) { lg -= la; --lpx; lz -= dzdx; }
+            rg += rm;
+            rpx += rq;
+            if (rg >= ra) { rg -= ra; --rpx; }
+            z_col0 += dzdy;
+            if (y == y_mid) {  // once per triangle: the short side continues along the other short edge
+                const Walker w = walker(edge_index(mid_, bottom_), y);
+                if (long_left) { rpx = w.px; rg = w.g; ra = w.a; rm = w.m; rq = w.q; }
+                else { lpx = w.px; lg = w.g; la = w.a; lm = w.m; lq = w.q; lz = w.z; ldz = w.dz_row; }
+            }
+        }
+        rows_fn = fn;
         return covered;
     }
 
@@ -89,14 +119,14 @@ public:
     template <class Fn>
     uint32_t spans(int32_t y_begin, int32_t y_end, Fn&& fn) const {
         struct Adapter {
-            Fn& f;
+            Fn* f;
             int32_t y;
             void begin(int32_t first) { y = first; }
             void operator()(int32_t x0, int32_t x1, uint32_t z) {
-                if (x0 < x1) f(y, x0, x1, z);
+                if (x0 < x1) (*f)(y, x0, x1, z);
                 ++y;
             }
-        } adapter{fn, 0};
+        } adapter{&fn, 0};
         return scan(y_begin, y_end, adapter);  // the copy in scan() holds the same reference to fn
     }
 
@@ -164,37 +194,6 @@ private:
         w.z = depth_at(w.px, py);
         w.dz_row = dzdy_ + dzdx_ * static_cast<uint32_t>(w.q);
         return w;
-    }
-
-    /// Rows [y, y_end) between two walkers standing on row y; leaves `carried` (the long edge) on row
-    /// y_end. The walkers live in locals here: the span writes cannot alias them.
-    template <class RowFn>
-    uint32_t rows(Walker& carried, const Walker& other, int32_t y, int32_t y_end, RowFn& rows_fn) const {
-        const Walker& l = carried.left ? carried : other;
-        const Walker& r = carried.left ? other : carried;
-        int32_t lpx = l.px, lg = l.g, rpx = r.px, rg = r.g;
-        const int32_t la = l.a, lm = l.m, lq = l.q, ra = r.a, rm = r.m, rq = r.q, width = width_;
-        uint32_t lz = l.z;
-        const uint32_t ldz = l.dz_row, dzdx = dzdx_, dzdy = dzdy_;
-        uint32_t z_col0 = depth_at(0, y);  // depth at pixel 0, for spans that start off-screen
-        uint32_t covered = 0;
-        for (; y < y_end; ++y) {
-            const int32_t x0 = lpx > 0 ? lpx : 0;
-            const int32_t x1 = rpx < width ? rpx : width;
-            rows_fn(x0, x1, lpx < 0 ? z_col0 : lz);
-            if (x0 < x1) covered += static_cast<uint32_t>(x1 - x0);
-            lg += lm;  // both edges step as DDAs with an exact error term
-            lpx += lq;
-            lz += ldz;
-            if (lg >= la) { lg -= la; --lpx; lz -= dzdx; }
-            rg += rm;
-            rpx += rq;
-            if (rg >= ra) { rg -= ra; --rpx; }
-            z_col0 += dzdy;
-        }
-        if (carried.left) { carried.px = lpx; carried.g = lg; carried.z = lz; }
-        else { carried.px = rpx; carried.g = rg; }
-        return covered;
     }
 
     // No default initialisers: setup() writes every member, and a per-triangle memset costs real time.

@@ -69,14 +69,16 @@ void for_each_piece(const View& view, const Mesh& mesh, Span<const ScreenVertex>
 /// Row functor for TriangleRaster::scan: depth-tested spans, row pointers stepped by the stride.
 template <bool kCount, class Format, class Depth, class Shader>
 struct DepthTestRows {
+    // Every member set explicitly: default initialisers made GCC memset the struct per triangle.
+    DepthTestRows(const FrameView<Format, Depth>& f, Shader s, uint32_t dz_q32)
+        : frame(&f), shader(s), dz(dz_q32), crow(nullptr), zrow(nullptr), written(0), stride(0) {}
     const FrameView<Format, Depth>* frame;
     Shader shader;
     uint32_t dz;
-    typename Format::Pixel* crow = nullptr;
-    Depth* zrow = nullptr;
-    uint32_t written = 0;
-
-    int32_t stride = 0;
+    typename Format::Pixel* crow;
+    Depth* zrow;
+    uint32_t written;
+    int32_t stride;
 
     void begin(int32_t y) {
         crow = frame->row(y);
@@ -121,13 +123,13 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
             ++st.triangles_drawn;
             const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
             if (opt.shade == Shade::depth) {
-                detail::DepthTestRows<kCount, Format, Depth, DepthShader<Format>> rows{&frame, DepthShader<Format>(opt.depth_range), tr.dzdx()};
+                detail::DepthTestRows<kCount, Format, Depth, DepthShader<Format>> rows(frame, DepthShader<Format>(opt.depth_range), tr.dzdx());
                 st.fragments += tr.scan(y_begin, y_end, rows);
                 st.pixels_written += rows.written;
                 return;
             }
-            detail::DepthTestRows<kCount, Format, Depth, FlatShader<Pixel>> rows{
-                &frame, FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))}, tr.dzdx()};
+            detail::DepthTestRows<kCount, Format, Depth, FlatShader<Pixel>> rows(
+                frame, FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))}, tr.dzdx());
             st.fragments += tr.scan(y_begin, y_end, rows);
             st.pixels_written += rows.written;
         });
