@@ -91,9 +91,8 @@ inline hider::Status build_order(const spin::Scene& s, Algo algo, const Buffers&
     hider::Status st = hider::make_view(s.camera, s.width, s.height, view);
     if (st == hider::Status::ok) st = hider::project_vertices(view, s.mesh.positions, buf.verts);
     if (st != hider::Status::ok) return st;
-    hider::FrameStats fs;
+    hider::FrameStats fs;  // a full pool (capacity_exceeded) still orders and draws what it holds
     hider::build_polys(view, s.mesh, buf.verts, draw_options().cull, polys, fs);
-    if (fs.status != hider::Status::ok) return fs.status;
     const size_t built = polys.size();
     r.polygons_built = static_cast<uint32_t>(built);
     for (size_t i = 0; i < built; ++i) (void)order.push_back(0);  // room; painter_order fills it
@@ -101,7 +100,7 @@ inline hider::Status build_order(const spin::Scene& s, Algo algo, const Buffers&
                          {buf.scratch.data(), built}, {order.data(), built});
     if (algo != Algo::painter) st = hider::newell_order(polys, order, r.newell);
     r.polygons = static_cast<uint32_t>(order.size());
-    return st;
+    return fs.status != hider::Status::ok ? fs.status : st;
 }
 
 /// Clears and paints rows [y0, y1) in the order; for the reverse painter also checks on the spot that
