@@ -1,23 +1,16 @@
 // Runs hider-bench itself under valgrind's callgrind with collection switched on only inside one
 // function (--toggle-collect, --collect-atstart=no) and reads the total Ir from the output file's
 // "totals:" line (or "summary:" in older formats; callgrind_format(5) in the valgrind manual).
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "bench.hpp"
-
-extern char** environ;
 
 namespace hider::tool::bench {
 namespace {
@@ -34,13 +27,6 @@ std::string self_path() {
     const fs::path p = fs::read_symlink("/proc/self/exe", ec);
     if (ec) fail("cannot find this executable through /proc/self/exe: " + ec.message());
     return p.string();
-}
-
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
 }
 
 /// Total Ir of a callgrind output file; false if the file has no Ir event or no totals/summary line.
@@ -74,27 +60,6 @@ bool parse_total_ir(const std::string& text, uint64_t& ir) {
     ir = static_cast<uint64_t>(parsed);
     return true;
 }
-
-/// A fresh private directory under $TMPDIR (or /tmp), removed by the destructor.
-class TempDir {
-public:
-    TempDir() {
-        const char* base = std::getenv("TMPDIR");
-        std::string pattern = std::string(base != nullptr && *base != '\0' ? base : "/tmp") + "/hider-bench.XXXXXX";
-        if (::mkdtemp(pattern.data()) == nullptr) fail("cannot create a temporary directory: " + std::string(std::strerror(errno)));
-        path_ = pattern;
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
 
 }  // namespace
 
@@ -132,34 +97,12 @@ bool run_in(const TempDir& tmp, const std::string& valgrind, const std::string& 
                          "--collect-atstart=no",
                          self};
     argv_strings.insert(argv_strings.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& s : argv_strings) argv.push_back(s.data());
-    argv.push_back(nullptr);
     std::string command;
     for (size_t i = 0; i < argv_strings.size(); ++i) command += (i == 0 ? "" : " ") + argv_strings[i];
-
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, stdout_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    posix_spawn_file_actions_addopen(&actions, 2, stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    pid_t pid = 0;
-    const int spawn_error = posix_spawn(&pid, valgrind.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawn_error != 0) {
-        error = "cannot run " + valgrind + ": " + std::strerror(spawn_error);
-        return false;
-    }
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
-        if (errno != EINTR) {
-            error = "waitpid: " + std::string(std::strerror(errno));
-            return false;
-        }
-    }
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        error = "callgrind run failed (" +
-                (WIFEXITED(status) ? "exit " + std::to_string(WEXITSTATUS(status)) : std::string("killed by a signal")) +
-                "): " + command + "\n" + read_text(stderr_file);
+    ProcessResult result;
+    if (!run_process(argv_strings, "", {}, stdout_file, stderr_file, result, error)) return false;
+    if (!result.exited || result.status != 0) {
+        error = "callgrind run failed (" + result.describe() + "): " + command + "\n" + read_text(stderr_file);
         return false;
     }
     run.out = read_text(stdout_file);

@@ -1,7 +1,7 @@
 // hider-bench frame: loads and converts a scene once, allocates every buffer, then calls
 // hider_bench_frame N times. Statistics are computed and printed after the last frame, so the
 // measured function sees no allocation and no I/O. Output (one line of "key value" pairs after a
-// title line) is parsed by the table command.
+// title line) is parsed by the table command; targets calls run_frames() for the covered pixels.
 #include <cinttypes>
 #include <cstdio>
 
@@ -30,32 +30,7 @@ uint32_t covered_pixels(const Depth* depth, size_t n) {
 
 }  // namespace
 
-int frame_command(const Args& args) {
-    std::string model_path;
-    CameraArgs cam;
-    int depth_bits = 16;
-    long frames = 1;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (parse_camera_option(args, i, cam)) continue;
-        if (a == "--depth-bits") {
-            const std::string& v = option_value(args, i);
-            if (v != "16" && v != "32") fail("--depth-bits must be 16 or 32 (got '" + v + "')");
-            depth_bits = v == "16" ? 16 : 32;
-        } else if (a == "--frames") {
-            const std::string& v = option_value(args, i);
-            if (!parse_long(v, frames) || frames < 1 || frames > 100000)
-                fail("--frames needs a count 1..100000 (got '" + v + "')");
-        } else if (!a.empty() && a[0] == '-') {
-            fail("frame: unknown option '" + a + "'");
-        } else if (model_path.empty()) {
-            model_path = a;
-        } else {
-            fail("frame: more than one model given ('" + model_path + "', '" + a + "')");
-        }
-    }
-    if (model_path.empty()) fail("frame: no model given");
-
+FrameSummary run_frames(const std::string& model_path, const CameraArgs& cam, int depth_bits, long frames) {
     ObjModel model;
     ObjError err;
     if (!load_obj(model_path, model, err)) fail(format(err));
@@ -88,14 +63,51 @@ int frame_command(const Args& args) {
         st = job.stats;
     }
 
-    const FrameStats& s = per_frame.back();
-    if (!s.ok()) fail(model_path + ": draw_zbuffer: " + status_name(s.status));
+    FrameSummary out;
+    out.width = scene.width;
+    out.height = scene.height;
+    out.stats = per_frame.back();
+    out.pixels = pixels;
+    if (!out.stats.ok()) fail(model_path + ": draw_zbuffer: " + status_name(out.stats.status));
     for (const FrameStats& st : per_frame)
-        if (!same_stats(st, s)) fail(model_path + ": frames differ in their statistics (nondeterministic lib/?)");
-    const uint32_t covered = depth_bits == 16 ? covered_pixels(depth16.data(), pixels)
-                                              : covered_pixels(depth32.data(), pixels);
+        if (!same_stats(st, out.stats))
+            fail(model_path + ": frames differ in their statistics (nondeterministic lib/?)");
+    out.covered = depth_bits == 16 ? covered_pixels(depth16.data(), pixels) : covered_pixels(depth32.data(), pixels);
+    return out;
+}
+
+int frame_command(const Args& args) {
+    std::string model_path;
+    CameraArgs cam;
+    int depth_bits = 16;
+    long frames = 1;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (parse_camera_option(args, i, cam)) continue;
+        if (a == "--depth-bits") {
+            const std::string& v = option_value(args, i);
+            if (v != "16" && v != "32") fail("--depth-bits must be 16 or 32 (got '" + v + "')");
+            depth_bits = v == "16" ? 16 : 32;
+        } else if (a == "--frames") {
+            const std::string& v = option_value(args, i);
+            if (!parse_long(v, frames) || frames < 1 || frames > 100000)
+                fail("--frames needs a count 1..100000 (got '" + v + "')");
+        } else if (!a.empty() && a[0] == '-') {
+            fail("frame: unknown option '" + a + "'");
+        } else if (model_path.empty()) {
+            model_path = a;
+        } else {
+            fail("frame: more than one model given ('" + model_path + "', '" + a + "')");
+        }
+    }
+    if (model_path.empty()) fail("frame: no model given");
+
+    const FrameSummary f = run_frames(model_path, cam, depth_bits, frames);
+    const FrameStats& s = f.stats;
+    const uint32_t covered = f.covered;
+    const size_t pixels = f.pixels;
     std::printf("frame %s %dx%d depth %d-bit, %ld frame%s, statistics per frame:\n", model_path.c_str(),
-                scene.width, scene.height, depth_bits, frames, frames == 1 ? "" : "s");
+                f.width, f.height, depth_bits, frames, frames == 1 ? "" : "s");
     std::printf("triangles %" PRIu32 " drawn %" PRIu32 " culled %" PRIu32 " clipped %" PRIu32 " outside %" PRIu32
                 " fragments %" PRIu32 " covered %" PRIu32 " pixels %zu\n",
                 s.triangles_in, s.triangles_drawn, s.triangles_culled, s.triangles_clipped, s.triangles_outside,

@@ -1,11 +1,16 @@
-// hider-bench: deterministic instruction counts of lib/ per frame and per span pixel, measured with
-// callgrind (Ir = instructions executed) on the host. See kUsage; the measured code is in measured.cpp.
+// hider-bench: deterministic instruction counts of lib/ per frame, per span pixel and per sorted
+// polygon, measured with callgrind (Ir = instructions executed) on the host, and on the cross targets
+// with QEMU and the insncount plugin (targets). See kUsage; the host-measured code is in measured.cpp.
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 
 #include "bench.hpp"
+
+#ifndef HIDER_BENCH_MODELS_DIR
+#define HIDER_BENCH_MODELS_DIR "tests/data/models"
+#endif
 
 namespace hider::tool::bench {
 namespace {
@@ -18,7 +23,14 @@ const char* kUsage =
     "         Markdown table of callgrind Ir per frame for the benchmark scenes (--check: torus row only)\n"
     "       hider-bench span [--valgrind PATH]\n"
     "         callgrind Ir per pixel of span_depth_test<false> on a 320-pixel row\n"
-    "exit status: 0 ok, 2 error, 77 valgrind not found\n";
+    "       hider-bench targets [--build-root DIR] [--models DIR]\n"
+    "         Markdown table of instructions per frame and per span pixel on cm0plus, cm3 and rv32imac:\n"
+    "         firmware of each build tree DIR/<preset> that exists, run in QEMU with the insncount plugin\n"
+    "       hider-bench sort [--models DIR] [--size WxH] [--valgrind PATH]\n"
+    "         callgrind Ir per polygon of painter_order on 1k..69k polygons of the bunny (no culling)\n"
+    "       hider-bench newell [--models DIR] [--valgrind PATH]\n"
+    "         Newell statistics and callgrind Ir of newell_order vs painter_order for every model\n"
+    "exit status: 0 ok, 2 error, 77 valgrind (targets: every cross build tree) not found\n";
 
 }  // namespace
 
@@ -66,6 +78,21 @@ Vec3d parse_vec(const std::string& opt, const std::string& s) {
 
 }  // namespace
 
+std::string default_models_dir() { return HIDER_BENCH_MODELS_DIR; }
+
+std::filesystem::path source_root() {
+    const std::filesystem::path models = default_models_dir();
+    const std::filesystem::path root = models.parent_path().parent_path().parent_path();  // strip tests/data/models
+    return root.empty() ? std::filesystem::path(".") : root;
+}
+
+CameraArgs camera_from(const Args& options) {
+    CameraArgs cam;
+    for (size_t i = 0; i < options.size(); ++i)
+        if (!parse_camera_option(options, i, cam)) fail("not a camera option: '" + options[i] + "'");
+    return cam;
+}
+
 bool parse_camera_option(const Args& args, size_t& i, CameraArgs& cam) {
     const std::string& a = args[i];
     if (a == "--size") {
@@ -106,6 +133,11 @@ int main(int argc, char** argv) {
     if (command == "table") return table_command(args);
     if (command == "span") return span_command(args);
     if (command == "span-run") return span_run_command(args);
+    if (command == "targets") return targets_command(args);
+    if (command == "sort") return sort_command(args);
+    if (command == "sort-run") return sort_run_command(args);
+    if (command == "newell") return newell_command(args);
+    if (command == "newell-run") return newell_run_command(args);
     if (command == "-h" || command == "--help") {
         std::cout << kUsage;
         return 0;

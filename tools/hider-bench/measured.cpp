@@ -33,3 +33,11 @@ extern "C" __attribute__((noinline)) void hider_bench_span(const hider::tool::be
         (void)span_depth_test<false>(job->color, job->depth16, job->x0, job->x1, job->z_q32, job->dz_q32, shader);
     }
 }
+
+extern "C" __attribute__((noinline)) void hider_bench_sort(const hider::tool::bench::SortJob* job) {
+    painter_order(job->polys, DepthKey::farthest, job->keys, job->scratch, job->order);
+}
+
+extern "C" __attribute__((noinline)) void hider_bench_newell(hider::tool::bench::NewellJob* job) {
+    job->status = newell_order(*job->polys, *job->order, job->stats);
+}

@@ -1,8 +1,9 @@
-// The measured regions of hider-bench: two extern "C" noinline functions that callgrind toggles on
-// (--toggle-collect=hider_bench_frame / hider_bench_span). They run lib/ code only: no allocation,
-// no I/O. Everything they touch is prepared by the caller and passed in one job struct.
+// The measured regions of hider-bench: extern "C" noinline functions that callgrind toggles on
+// (--toggle-collect=hider_bench_frame / _span / _sort / _newell). They run lib/ code only: no
+// allocation, no I/O. Everything they touch is prepared by the caller and passed in one job struct.
 #pragma once
 #include <hider/raster/zbuffer.hpp>
+#include <hider/sort/newell.hpp>
 
 namespace hider::tool::bench {
 
@@ -32,6 +33,22 @@ struct SpanJob {
     uint16_t pixel = 0;
 };
 
+/// One painter_order call: back-to-front order of polys by farthest depth (key fill + radix sort).
+struct SortJob {
+    Span<const ScreenPoly> polys;
+    Span<SortKey> keys;     ///< >= polys.size()
+    Span<SortKey> scratch;  ///< >= polys.size()
+    Span<uint32_t> order;   ///< >= polys.size(); out
+};
+
+/// One newell_order call on a painter order: polys and order are updated in place (cuts append).
+struct NewellJob {
+    BoundedList<ScreenPoly>* polys = nullptr;
+    BoundedList<uint32_t>* order = nullptr;
+    NewellStats stats{};         ///< out
+    Status status = Status::ok;  ///< out
+};
+
 }  // namespace hider::tool::bench
 
 /// make_view, project_vertices, clear (colour + depth), draw_zbuffer<false>: exactly one frame.
@@ -39,3 +56,9 @@ extern "C" __attribute__((noinline)) void hider_bench_frame(hider::tool::bench::
 
 /// One span_depth_test<false> call as described by `job`.
 extern "C" __attribute__((noinline)) void hider_bench_span(const hider::tool::bench::SpanJob* job);
+
+/// painter_order(job->polys, DepthKey::farthest, ...) into job->order.
+extern "C" __attribute__((noinline)) void hider_bench_sort(const hider::tool::bench::SortJob* job);
+
+/// newell_order(*job->polys, *job->order, job->stats); the status goes to job->status.
+extern "C" __attribute__((noinline)) void hider_bench_newell(hider::tool::bench::NewellJob* job);

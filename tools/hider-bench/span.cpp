@@ -1,7 +1,7 @@
 // hider-bench span: Ir per pixel of the z-buffer inner loop (span_depth_test<false>) on this host.
 // Each case runs `span-run` under callgrind: the row is reset outside the measured call, then one
-// hider_bench_span call draws it. Per pixel = (Ir of a 320-pixel call - Ir of an empty call) / 320,
-// which removes the call and setup overhead.
+// hider_bench_span call draws it. Per pixel = (Ir of a 320-pixel call - Ir of a 1-pixel call) / 319,
+// which removes the call and setup overhead (the span requires x0 < x1, so 1 pixel is the baseline).
 #include <cinttypes>
 #include <cstdio>
 
@@ -12,6 +12,7 @@ namespace hider::tool::bench {
 namespace {
 
 constexpr long kRowPixels = 320;
+constexpr long kBasePixels = 1;  // the smallest span: span_depth_test requires x0 < x1
 constexpr long kReps = 1000;
 constexpr uint16_t kPixel = 0xF81F;
 
@@ -58,7 +59,7 @@ int span_run_command(const Args& args) {
         const std::string& v = option_value(args, i);
         if (a == "--depth-bits" && (v == "16" || v == "32")) depth_bits = v == "16" ? 16 : 32;
         else if (a == "--pass" && (v == "all" || v == "none")) pass = v == "all";
-        else if (a == "--width" && parse_long(v, width) && width >= 0 && width <= kMaxFrameSide) continue;
+        else if (a == "--width" && parse_long(v, width) && width >= 1 && width <= kMaxFrameSide) continue;
         else if (a == "--reps" && parse_long(v, reps) && reps >= 1) continue;
         else fail("span-run: bad option '" + a + " " + v + "'");
     }
@@ -92,20 +93,21 @@ int span_command(const Args& args) {
     }
     valgrind = find_valgrind(valgrind);
     std::printf("span_depth_test<false> on %s: RGB565 row, flat colour, callgrind Ir per call over %ld calls;\n"
-                "Ir/pixel = (Ir/call at %ld px - Ir/call at 0 px) / %ld.\n\n",
-                kHost, kReps, kRowPixels, kRowPixels);
-    std::printf("| depth | fragments | Ir/call, %ld px | Ir/call, 0 px | Ir/pixel |\n", kRowPixels);
+                "Ir/pixel = (Ir/call at %ld px - Ir/call at %ld px) / %ld.\n\n",
+                kHost, kReps, kRowPixels, kBasePixels, kRowPixels - kBasePixels);
+    std::printf("| depth | fragments | Ir/call, %ld px | Ir/call, %ld px | Ir/pixel |\n", kRowPixels, kBasePixels);
     std::printf("|---|---|---:|---:|---:|\n");
     std::fflush(stdout);
     for (int depth_bits : {16, 32}) {
         for (bool pass : {true, false}) {
             const uint64_t full = ir_per_call(valgrind, depth_bits, pass, kRowPixels);
-            const uint64_t empty = ir_per_call(valgrind, depth_bits, pass, 0);
+            const uint64_t base = ir_per_call(valgrind, depth_bits, pass, kBasePixels);
             char per_pixel[32];
             std::snprintf(per_pixel, sizeof per_pixel, "%.2f",
-                          static_cast<double>(full - empty) / static_cast<double>(kRowPixels));
+                          (static_cast<double>(full) - static_cast<double>(base)) /
+                              static_cast<double>(kRowPixels - kBasePixels));
             std::printf("| %d-bit | %s | %" PRIu64 " | %" PRIu64 " | %s |\n", depth_bits,
-                        pass ? "all pass" : "none pass", full, empty, per_pixel);
+                        pass ? "all pass" : "none pass", full, base, per_pixel);
             std::fflush(stdout);
         }
     }

@@ -9,10 +9,6 @@
 
 #include "bench.hpp"
 
-#ifndef HIDER_BENCH_MODELS_DIR
-#define HIDER_BENCH_MODELS_DIR "tests/data/models"
-#endif
-
 namespace hider::tool::bench {
 namespace {
 
@@ -25,14 +21,10 @@ struct BenchScene {
     int depth_bits;
 };
 
-/// The torus standard view is the one in tests/data/models/README.md; the others use default framing.
-const Args kTorusView = {"--size", "320x240", "--eye", "0,0,-2.5", "--target", "0,0,0",
-                         "--up",   "0,1,0",   "--fov", "73.7398",  "--near",   "0.25"};
-
 std::vector<BenchScene> bench_scenes(bool check) {
-    std::vector<BenchScene> s = {{"torus 320x240 z16", "torus.obj", kTorusView, 16}};
+    std::vector<BenchScene> s = {{"torus 320x240 z16", "torus.obj", torus_view("320x240"), 16}};
     if (check) return s;
-    s.push_back({"torus 320x240 z32", "torus.obj", kTorusView, 32});
+    s.push_back({"torus 320x240 z32", "torus.obj", torus_view("320x240"), 32});
     s.push_back({"teapot 320x240 z16", "teapot.obj", {"--size", "320x240"}, 16});
     s.push_back({"bunny 320x240 z16", "stanford-bunny.obj", {"--size", "320x240"}, 16});
     return s;
@@ -72,8 +64,13 @@ std::string per_frame(uint64_t total, uint64_t frames) {
 
 }  // namespace
 
+Args torus_view(const std::string& size) {
+    return {"--size", size,    "--eye", "0,0,-2.5", "--target", "0,0,0",
+            "--up",   "0,1,0", "--fov", "73.7398",  "--near",   "0.25"};
+}
+
 int table_command(const Args& args) {
-    std::string models = HIDER_BENCH_MODELS_DIR, valgrind;
+    std::string models = default_models_dir(), valgrind;
     bool check = false;
     for (size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "--models") models = option_value(args, i);

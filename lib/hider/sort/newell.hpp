@@ -2,8 +2,9 @@
 // polygon P whose depth range overlaps the next ones run the tests cheapest first (x extents, y
 // extents, P behind Q's plane, Q in front of P's plane, projections disjoint). When all fail, move Q
 // before P if the swapped tests allow it. A polygon moved twice to the same output position means a
-// cycle of overlaps: hider then cuts one member of the cycle by the plane of another that it really
-// crosses. Piercing polygons are cut by each other's planes. Pieces keep the face id.
+// cycle of overlaps, broken by cutting P by Q's plane or Q by P's (when neither crosses the other's
+// plane the pair stays in painter order and is counted as unresolved). Piercing polygons are cut by
+// each other's planes. Pieces keep the face id.
 // Plane tests are exact 128-bit sums with a half-grid-step slack for rounded cut vertices (poly.hpp).
 #pragma once
 #include <hider/sort/painter.hpp>
@@ -93,24 +94,6 @@ private:
             insert_sorted(from, static_cast<uint32_t>(polys_.size() - 1));
         }
         return true;
-    }
-
-    /// The members of the cycle are the candidate and every polygon moved to position i: cut the first
-    /// member that crosses another member's plane (its pieces start unmoved).
-    bool break_cycle(size_t i) {
-        for (size_t a = i; a < order_.size(); ++a) {
-            if (a != i && polys_[order_[a]].moved_at != i) continue;
-            for (size_t b = i; b < order_.size(); ++b) {
-                if (b == a || (b != i && polys_[order_[b]].moved_at != i)) continue;
-                const ScreenPoly& x = polys_[order_[a]];
-                const ScreenPoly& y = polys_[order_[b]];
-                if (x.xmax <= y.xmin || y.xmax <= x.xmin || x.ymax <= y.ymin || y.ymax <= x.ymin) continue;
-                const ScreenPlane plane = plane_of(y);
-                if (side_of(plane, x) != 0) continue;
-                return cut(a, a == i ? i : i + 1, plane);
-            }
-        }
-        return false;
     }
 
     /// Inserts idx into order[from..) keeping that range sorted by zmax, farthest first (stable).
