@@ -96,9 +96,9 @@ inline hider::Status build_order(const spin::Scene& s, Algo algo, const Buffers&
     const size_t built = polys.size();
     r.polygons_built = static_cast<uint32_t>(built);
     for (size_t i = 0; i < built; ++i) (void)order.push_back(0);  // room; painter_order fills it
-    hider::painter_order({polys.data(), built}, hider::DepthKey::farthest, {buf.keys.data(), built},
-                         {buf.scratch.data(), built}, {order.data(), built});
-    if (algo != Algo::painter) st = hider::newell_order(polys, order, r.newell);
+    st = hider::painter_order({polys.data(), built}, hider::DepthKey::farthest, {buf.keys.data(), built},
+                              {buf.scratch.data(), built}, {order.data(), built});
+    if (st == hider::Status::ok && algo != Algo::painter) st = hider::newell_order(polys, order, r.newell);
     r.polygons = static_cast<uint32_t>(order.size());
     return fs.status != hider::Status::ok ? fs.status : st;
 }

@@ -1,5 +1,5 @@
 // The few freestanding helpers lib/ needs instead of the C++ standard library: Span, BoundedList,
-// min/max/swap/clamp, is_same, and HIDER_ASSERT. Only <stdint.h>, <stddef.h>, <limits.h> are allowed.
+// min/max/swap_values/clamp, and HIDER_ASSERT. Only <stdint.h>, <stddef.h>, <limits.h> are allowed.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>
@@ -24,9 +24,6 @@ template <class T> constexpr T max(T a, T b) { return a < b ? b : a; }
 template <class T> constexpr T clamp(T v, T lo, T hi) { return v < lo ? lo : (hi < v ? hi : v); }
 template <class T> constexpr void swap_values(T& a, T& b) { T t = a; a = b; b = t; }
 template <class T> constexpr T abs_value(T v) { return v < 0 ? -v : v; }
-
-template <class A, class B> struct IsSame { static constexpr bool value = false; };
-template <class A> struct IsSame<A, A> { static constexpr bool value = true; };
 
 /// Non-owning view of `size` contiguous elements (pointer + size). Borrowed, never freed.
 template <class T>
@@ -76,6 +73,7 @@ public:
     }
     /// Removes the element at pos (< size), shifting the rest down.
     void erase(size_t pos) {
+        HIDER_ASSERT(pos < size_);
         for (size_t k = pos; k + 1 < size_; ++k) data_[k] = data_[k + 1];
         --size_;
     }

@@ -49,7 +49,7 @@ constexpr int64_t mul_wide(int32_t a, int32_t b) {
 constexpr int clz32(uint32_t v) {
 #if defined(__GNUC__)
     return __builtin_clz(v);
-#endif
+#else
     int n = 0;
     if (v <= 0x0000FFFFu) { n += 16; v <<= 16; }
     if (v <= 0x00FFFFFFu) { n += 8; v <<= 8; }
@@ -57,6 +57,7 @@ constexpr int clz32(uint32_t v) {
     if (v <= 0x3FFFFFFFu) { n += 2; v <<= 2; }
     if (v <= 0x7FFFFFFFu) { n += 1; }
     return n;
+#endif
 }
 
 /// True where a 64-bit division is a library call (every 32-bit target of hider).
@@ -173,7 +174,7 @@ public:
     static constexpr Fixed from_raw(int32_t r) { Fixed x; x.raw_ = r; return x; }
     /// Precondition: i fits the format (|i| < 2^(31-F)).
     static constexpr Fixed from_int(int32_t i) { return from_raw(i * kOne); }
-    /// num / den rounded to nearest (ties away from zero), saturating.
+    /// num / den rounded to nearest (ties away from zero), saturating. Precondition: |num| < 2^(63-F).
     static constexpr Fixed from_ratio(int64_t num, int64_t den) {
         return from_raw(saturate32(div_round(num * kOne, den)));
     }

@@ -24,12 +24,13 @@ constexpr const char* status_name(Status s) {
     return "unknown";
 }
 
-/// What one draw call did. Counters saturate instead of wrapping.
+/// What one draw call did.
 struct [[nodiscard]] FrameStats {
     Status status = Status::ok;
     uint32_t triangles_in = 0;       ///< triangles looked at
-    uint32_t triangles_drawn = 0;    ///< triangles (or clipped pieces) that reached the rasterizer
-    uint32_t triangles_culled = 0;   ///< back faces removed
+    uint32_t triangles_drawn = 0;    ///< triangles (or clipped pieces) that reached the rasterizer; a band
+                                     ///< counts those whose first row it holds, so bands add up
+    uint32_t triangles_culled = 0;   ///< back faces removed (counted like triangles_drawn)
     uint32_t triangles_clipped = 0;  ///< triangles that needed near/far/guard clipping
     uint32_t triangles_outside = 0;  ///< wholly outside one clip plane
     uint32_t fragments = 0;          ///< pixel centres covered (depth-tested or painted)

@@ -152,6 +152,8 @@ TEST_CASE("band by band gives exactly the bytes of the full frame in every forma
                         const tool::RenderResult banded = render(s, opt);
                         CHECK(banded.rgb == full.rgb);
                         CHECK(banded.stats.fragments == full.stats.fragments);
+                        CHECK(banded.stats.triangles_drawn == full.stats.triangles_drawn);
+                        CHECK(banded.stats.triangles_culled == full.stats.triangles_culled);
                     }
                 }
 }

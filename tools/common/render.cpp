@@ -42,8 +42,9 @@ bool render_sorted(const Scene& scene, const RenderOptions& opt, const View& vie
     std::vector<SortKey> keys(built), scratch(built);
     BoundedList<uint32_t> order(order_store.data(), order_store.size());
     for (size_t i = 0; i < built; ++i) order.push_back(0);
-    painter_order({polys.data(), built}, opt.algo == Algo::painter ? opt.painter_key : DepthKey::farthest,
+    const Status so = painter_order({polys.data(), built}, opt.algo == Algo::painter ? opt.painter_key : DepthKey::farthest,
                   {keys.data(), keys.size()}, {scratch.data(), scratch.size()}, {order.data(), built});
+    if (so != Status::ok) st.status = so;
     if (opt.algo != Algo::painter) {
         const Status ns = newell_order(polys, order, out.newell);
         if (ns != Status::ok) st.status = ns;
@@ -112,12 +113,14 @@ bool render_with(const Scene& scene, const RenderOptions& opt, RenderResult& out
         const FrameStats st = draw_zbuffer<true>(view, mesh, {verts.data(), verts.size()}, band, draw);
         if (y0 == 0) {
             out.stats = st;
-        } else {  // triangles are looked at once per band; keep the per-frame meaning of those counts
-            FrameStats px{};
-            px.fragments = st.fragments;
-            px.pixels_written = st.pixels_written;
-            px.status = st.status;
-            out.stats.merge(px);
+        } else {  // per-triangle counts (in, clipped, outside) repeat in every band; the rest add up
+            FrameStats add{};
+            add.status = st.status;
+            add.triangles_drawn = st.triangles_drawn;
+            add.triangles_culled = st.triangles_culled;
+            add.fragments = st.fragments;
+            add.pixels_written = st.pixels_written;
+            out.stats.merge(add);
         }
         for (int y = y0; y < y1; ++y)
             for (int x = 0; x < scene.width; ++x) out.pixels_covered += band.depth_row(y)[x] != DepthTraits<Depth>::kClear;

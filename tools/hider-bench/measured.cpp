@@ -35,7 +35,7 @@ extern "C" __attribute__((noinline)) void hider_bench_span(const hider::tool::be
 }
 
 extern "C" __attribute__((noinline)) void hider_bench_sort(const hider::tool::bench::SortJob* job) {
-    painter_order(job->polys, DepthKey::farthest, job->keys, job->scratch, job->order);
+    if (painter_order(job->polys, DepthKey::farthest, job->keys, job->scratch, job->order) != Status::ok) __builtin_trap();
 }
 
 extern "C" __attribute__((noinline)) void hider_bench_newell(hider::tool::bench::NewellJob* job) {

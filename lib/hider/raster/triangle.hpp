@@ -39,6 +39,7 @@ public:
     /// accepted; front() tells which one it was. Cost: two 64-bit divisions.
     bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t width, int32_t height) {
         row_top_ = row_mid_ = row_bottom_ = 0;  // an empty row range if we return early
+        front_ = false;
         int32_t area = signed_area(a, b, c);
         if (area == 0) return false;
         front_ = area < 0;
@@ -132,7 +133,7 @@ public:
 
 private:
     int32_t first_row_at_or_below(int32_t y_sub) const {
-        return (y_sub - y_origin_ + kSubpixel - 1) >> kSubpixelBits;  // floor division by 16
+        return (y_sub - y_origin_ + kSubpixel - 1) >> kSubpixelBits;  // ceil((y - origin) / 16)
     }
 
     /// Index i of the edge (v[i] -> v[i+1]) joining vertices p and q.

@@ -101,7 +101,9 @@ private:
         size_t pos = from;
         const uint32_t z = polys_[idx].zmax;
         while (pos < order_.size() && polys_[order_[pos]].zmax >= z) ++pos;
-        order_.insert(pos, idx);  // cannot fail: order has room for every polygon of the pool
+        const bool inserted = order_.insert(pos, idx);  // order.size() <= polys.size() <= capacity
+        HIDER_ASSERT(inserted);
+        (void)inserted;
     }
 
     BoundedList<ScreenPoly>& polys_;
@@ -114,12 +116,15 @@ private:
 
 /// Reorders `order` (a painter order by farthest depth over polys) so that no polygon is drawn after
 /// one it lies in front of, cutting polygons into the free capacity of `polys` as needed.
-/// Precondition: order.capacity() >= polys.capacity() (else invalid_argument). When a cut does not
+/// Preconditions (else invalid_argument): order.capacity() >= polys.capacity(), and order holds at most
+/// polys.size() indices, each below polys.size(). When a cut does not
 /// fit, the pair keeps its painter order, NewellStats::dropped counts it and the result is
 /// capacity_exceeded; the frame still draws. Cost: O(n k) pair tests for k depth-overlapping
 /// neighbours, O(n^2) at worst.
 inline Status newell_order(BoundedList<ScreenPoly>& polys, BoundedList<uint32_t>& order, NewellStats& ns) {
-    if (order.capacity() < polys.capacity()) return Status::invalid_argument;
+    if (order.capacity() < polys.capacity() || order.size() > polys.size()) return Status::invalid_argument;
+    for (size_t k = 0; k < order.size(); ++k)
+        if (order[k] >= polys.size()) return Status::invalid_argument;
     return detail::Newell(polys, order, ns).run();
 }
 

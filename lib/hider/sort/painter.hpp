@@ -33,10 +33,12 @@ inline void radix_sort(Span<SortKey> keys, Span<SortKey> scratch) {
 }
 
 /// Back-to-front order of polys[0..n): order[k] = index of the k-th polygon to draw. Ties keep the
-/// mesh order. Precondition: keys and scratch hold >= polys.size() entries. Cost: O(n).
-inline void painter_order(Span<const ScreenPoly> polys, DepthKey key, Span<SortKey> keys, Span<SortKey> scratch,
-                          Span<uint32_t> order) {
+/// mesh order. Returns invalid_argument (and writes nothing) unless keys, scratch and order hold at
+/// least polys.size() entries. Cost: O(n).
+[[nodiscard]] inline Status painter_order(Span<const ScreenPoly> polys, DepthKey key, Span<SortKey> keys,
+                                          Span<SortKey> scratch, Span<uint32_t> order) {
     const size_t n = polys.size();
+    if (keys.size() < n || scratch.size() < n || order.size() < n) return Status::invalid_argument;
     for (size_t i = 0; i < n; ++i) {
         const ScreenPoly& p = polys[i];
         const uint32_t k = key == DepthKey::farthest
@@ -46,6 +48,7 @@ inline void painter_order(Span<const ScreenPoly> polys, DepthKey key, Span<SortK
     }
     radix_sort({keys.data(), n}, {scratch.data(), n});
     for (size_t i = 0; i < n; ++i) order[i] = keys[i].index;
+    return Status::ok;
 }
 
 /// Draws polys in `order` (back to front) into the band, painting every covered pixel. With kCount
@@ -54,6 +57,10 @@ template <bool kCount = false, class Format, class Depth>
 FrameStats paint_in_order(const View& view, const Mesh& mesh, Span<const ScreenPoly> polys, Span<const uint32_t> order,
                           const FrameView<Format, Depth>& frame, const DrawOptions& opt) {
     FrameStats st;
+    if (!frame.valid() || frame.width != view.width || frame.height != view.height) {
+        st.status = Status::invalid_argument;
+        return st;
+    }
     const FaceShading shading(view, opt);
     const detail::BandBounds bb = detail::band_bounds(frame);
     for (size_t k = 0; k < order.size(); ++k) {

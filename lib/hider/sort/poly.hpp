@@ -85,8 +85,9 @@ inline Int128 rounding_slack(const ScreenPlane& pl) {
 }
 
 /// Side of v: +1 farther, -1 nearer, 0 on the plane or within the rounding slack of it. Exact integer
-/// arithmetic; the slack only absorbs the rounding of cut vertices, so a piece never straddles the
-/// plane it was cut by, while shared vertices and coplanar neighbours are exactly on it.
+/// arithmetic; the slack absorbs the rounding of cut vertices to the grid (the quantised cut parameter
+/// can add a little more, which side_of's collapse fallback covers), while shared vertices and
+/// coplanar neighbours are exactly on the plane.
 inline int classify(const ScreenPlane& pl, const Int128& slack, const ScreenVertex& v) {
     const Int128 d = side(pl, v);
     if ((d - slack).sign() > 0) return 1;

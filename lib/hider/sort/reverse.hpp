@@ -24,8 +24,9 @@ uint32_t span_uncovered(Pixel* crow, uint32_t* cov, int32_t x0, int32_t x1, uint
             for (int32_t k = 0; k < n; ++k, z += dz) crow[x + k] = shade(z);
             written += static_cast<uint32_t>(n);
         } else if (todo != 0) {
-            for (int32_t k = 0; k < n; ++k, z += dz)
-                if ((todo >> (bit + k)) & 1u) { crow[x + k] = shade(z); ++written; }
+            uint32_t bits = todo >> bit;
+            for (int32_t k = 0; k < n; ++k, z += dz, bits >>= 1)
+                if ((bits & 1u) != 0) { crow[x + k] = shade(z); ++written; }
         } else {
             z += dz * static_cast<uint32_t>(n);
         }
@@ -38,13 +39,14 @@ uint32_t span_uncovered(Pixel* crow, uint32_t* cov, int32_t x0, int32_t x1, uint
 
 /// Draws polys in `order` from the last (nearest) to the first, writing each pixel of the band at most
 /// once. `coverage` is caller memory of rows() * coverage_words(width) words (cleared here). Stops early
-/// when the band is full. Returns invalid_argument if coverage is too small.
+/// when the band is full. Returns invalid_argument if the frame is unusable or coverage too small.
 template <class Format, class Depth>
 FrameStats paint_front_to_back(const View& view, const Mesh& mesh, Span<const ScreenPoly> polys, Span<const uint32_t> order,
                                const FrameView<Format, Depth>& frame, const DrawOptions& opt, Span<uint32_t> coverage) {
     FrameStats st;
     const int32_t wpr = coverage_words(frame.width);
-    if (coverage.size() < static_cast<size_t>(wpr) * static_cast<size_t>(frame.rows())) {
+    if (!frame.valid() || frame.width != view.width || frame.height != view.height ||
+        coverage.size() < static_cast<size_t>(wpr) * static_cast<size_t>(frame.rows())) {
         st.status = Status::invalid_argument;
         return st;
     }
