@@ -1,6 +1,6 @@
 // painter_newell firmware (big machine): the torus at 160x128 without back-face culling, drawn in
 // Newell's order (with cuts) back to front in 16-row bands with no depth buffer, streamed to
-// newell.ppm through semihosting. Host twin: host_reference.cpp.
+// newell.ppm through semihosting. Host twin: tools/firmware-hosts/painter_reference.cpp.
 #include "painter/torus.hpp"
 #include "spin/semihost_io.hpp"
 

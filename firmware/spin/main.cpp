@@ -1,6 +1,6 @@
 // spin firmware (big machine): the torus at 160x128 turning over 4 frames, full frame in RAM
 // (colour 40 KB + depth 40 KB), each frame's render bracketed by bench_begin()/bench_end() and
-// written as spin_000.ppm .. spin_003.ppm through semihosting. Host twin: host_reference.cpp.
+// written as spin_000.ppm .. spin_003.ppm through semihosting. Host twin: tools/firmware-hosts/spin_reference.cpp.
 #include "common/scenes/torus_160x128.hpp"
 #include "spin/app.hpp"
 #include "spin/semihost_io.hpp"

@@ -7,7 +7,7 @@
 #include "bands/bands.hpp"
 #include "common/scenes/torus_160x128.hpp"
 #include "spin/app.hpp"
-#include "spin/stdio_io.hpp"
+#include "stdio_io.hpp"
 
 extern "C" void bench_begin() {}
 extern "C" void bench_end() {}

@@ -9,7 +9,7 @@
 
 #include "painter/torus.hpp"
 #include "spin/app.hpp"
-#include "spin/stdio_io.hpp"
+#include "stdio_io.hpp"
 
 extern "C" void bench_begin() {}
 extern "C" void bench_end() {}

@@ -6,7 +6,7 @@
 #include "common/scenes/torus_160x128.hpp"
 #include "common/scenes/torus_320x240.hpp"
 #include "spin/app.hpp"
-#include "spin/stdio_io.hpp"
+#include "stdio_io.hpp"
 
 extern "C" void bench_begin() {}
 extern "C" void bench_end() {}
