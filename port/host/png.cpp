@@ -1,10 +1,8 @@
 // Minimal PNG encoder: IHDR, one IDAT of stored (uncompressed) deflate blocks, IEND.
 #include "host/png.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
+#include "host/ppm.hpp"
+
 
 namespace hider::port {
 namespace {
@@ -72,21 +70,7 @@ bool write_png(const std::string& path, int width, int height, const std::vector
         error = path + ": image size does not match its pixel data";
         return false;
     }
-    std::ofstream f(path, std::ios::binary);
-    if (!f) {
-        error = path + ": " + std::strerror(errno);
-        return false;
-    }
-    const std::vector<uint8_t> bytes = png_bytes(width, height, rgb);
-    f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    f.close();
-    if (!f) {
-        std::error_code ignored;  // a truncated file holds a partial image: do not leave it behind
-        if (std::filesystem::is_regular_file(path, ignored)) std::filesystem::remove(path, ignored);
-        error = path + ": write failed";
-        return false;
-    }
-    return true;
+    return write_file(path, png_bytes(width, height, rgb), error);
 }
 
 }  // namespace hider::port

@@ -16,17 +16,12 @@ std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>
     return out;
 }
 
-bool write_ppm(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, std::string& error) {
-    if (width <= 0 || height <= 0 || rgb.size() != static_cast<size_t>(width) * height * 3) {
-        error = path + ": image size does not match its pixel data";
-        return false;
-    }
+bool write_file(const std::string& path, const std::vector<uint8_t>& bytes, std::string& error) {
     std::ofstream f(path, std::ios::binary);
     if (!f) {
         error = path + ": " + std::strerror(errno);
         return false;
     }
-    const std::vector<uint8_t> bytes = ppm_bytes(width, height, rgb);
     f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
     f.close();
     if (!f) {
@@ -36,6 +31,14 @@ bool write_ppm(const std::string& path, int width, int height, const std::vector
         return false;
     }
     return true;
+}
+
+bool write_ppm(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, std::string& error) {
+    if (width <= 0 || height <= 0 || rgb.size() != static_cast<size_t>(width) * height * 3) {
+        error = path + ": image size does not match its pixel data";
+        return false;
+    }
+    return write_file(path, ppm_bytes(width, height, rgb), error);
 }
 
 bool read_ppm(const std::string& path, int& width, int& height, std::vector<uint8_t>& rgb) {

@@ -25,6 +25,10 @@ void append_rgb888(const FrameView<Format, Depth>& f, std::vector<uint8_t>& out)
 /// The bytes of a P6 file: "P6\n<W> <H>\n255\n" then W*H*3 bytes of `rgb`.
 std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>& rgb);
 
+/// Writes `bytes` to `path` (binary); on failure removes a partial file, returns false and sets `error`
+/// to "path: reason". Shared by the PPM and PNG writers.
+bool write_file(const std::string& path, const std::vector<uint8_t>& bytes, std::string& error);
+
 /// Writes a P6 file; on failure returns false and sets `error` to "path: reason".
 bool write_ppm(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, std::string& error);
 

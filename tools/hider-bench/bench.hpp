@@ -13,6 +13,7 @@
 
 #include <hider/sort/newell.hpp>
 
+#include "common/cli.hpp"
 #include "common/scene.hpp"
 
 namespace hider::tool::bench {
@@ -25,8 +26,6 @@ constexpr int kExitNoValgrind = kExitSkipped;
 using Args = std::vector<std::string>;
 
 [[noreturn]] void fail(const std::string& msg);
-bool parse_double(const std::string& s, double& out);
-bool parse_long(const std::string& s, long& out);
 
 /// Consumes a camera option (--size --eye --target --up --fov --near --far) at args[i] and its value;
 /// returns false if args[i] is not one. Exits with a message on a bad value.

@@ -90,7 +90,7 @@ int frame_command(const Args& args) {
             depth_bits = v == "16" ? 16 : 32;
         } else if (a == "--frames") {
             const std::string& v = option_value(args, i);
-            if (!parse_long(v, frames) || frames < 1 || frames > 100000)
+            if (!parse_int(v, frames) || frames < 1 || frames > 100000)
                 fail("--frames needs a count 1..100000 (got '" + v + "')");
         } else if (!a.empty() && a[0] == '-') {
             fail("frame: unknown option '" + a + "'");

@@ -39,22 +39,6 @@ const char* kUsage =
     std::exit(2);
 }
 
-bool parse_double(const std::string& s, double& out) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    errno = 0;
-    out = std::strtod(s.c_str(), &end);
-    return end == s.c_str() + s.size() && errno == 0 && std::isfinite(out);
-}
-
-bool parse_long(const std::string& s, long& out) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    errno = 0;
-    out = std::strtol(s.c_str(), &end, 10);
-    return end == s.c_str() + s.size() && errno == 0;
-}
-
 const std::string& option_value(const Args& args, size_t& i) {
     if (i + 1 >= args.size()) fail(args[i] + " needs a value\n" + kUsage);
     return args[++i];
@@ -64,15 +48,8 @@ namespace {
 
 Vec3d parse_vec(const std::string& opt, const std::string& s) {
     Vec3d v{};
-    size_t start = 0;
-    for (int i = 0; i < 3; ++i) {
-        const size_t comma = s.find(',', start);
-        const bool last = i == 2;
-        if (last != (comma == std::string::npos)) fail(opt + " needs x,y,z (got '" + s + "')");
-        const std::string part = s.substr(start, last ? std::string::npos : comma - start);
-        if (!parse_double(part, v[i])) fail(opt + ": bad number '" + part + "'");
-        start = comma + 1;
-    }
+    std::string why;
+    if (!parse_vec3(opt, s, v, why)) fail(why);
     return v;
 }
 
@@ -99,7 +76,7 @@ bool parse_camera_option(const Args& args, size_t& i, CameraArgs& cam) {
         const std::string& v = option_value(args, i);
         const size_t x = v.find('x');
         long w = 0, h = 0;
-        if (x == std::string::npos || !parse_long(v.substr(0, x), w) || !parse_long(v.substr(x + 1), h))
+        if (x == std::string::npos || !parse_int(v.substr(0, x), w) || !parse_int(v.substr(x + 1), h))
             fail("--size needs WxH (got '" + v + "')");
         if (w < 1 || h < 1 || w > kMaxFrameSide || h > kMaxFrameSide)
             fail("--size " + v + " out of range (1.." + std::to_string(kMaxFrameSide) + " per side)");

@@ -42,7 +42,7 @@ std::map<std::string, uint64_t> parse_newell_line(const std::string& out) {
         std::string key, value;
         while (words >> key >> value) {
             long parsed = 0;
-            if (!parse_long(value, parsed) || parsed < 0) fail("bad line from newell-run: " + line);
+            if (!parse_int(value, parsed) || parsed < 0) fail("bad line from newell-run: " + line);
             v[key] = static_cast<uint64_t>(parsed);
         }
     }

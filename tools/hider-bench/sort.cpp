@@ -72,7 +72,7 @@ int sort_run_command(const Args& args) {
     long n = 0;
     for (size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "--n") {
-            if (!parse_long(option_value(args, i), n) || n < 1) fail("sort-run: --n needs a count >= 1");
+            if (!parse_int(option_value(args, i), n) || n < 1) fail("sort-run: --n needs a count >= 1");
         } else if (!args[i].empty() && args[i][0] == '-') {
             camera.push_back(args[i]);
             camera.push_back(option_value(args, i));

@@ -59,8 +59,8 @@ int span_run_command(const Args& args) {
         const std::string& v = option_value(args, i);
         if (a == "--depth-bits" && (v == "16" || v == "32")) depth_bits = v == "16" ? 16 : 32;
         else if (a == "--pass" && (v == "all" || v == "none")) pass = v == "all";
-        else if (a == "--width" && parse_long(v, width) && width >= 1 && width <= kMaxFrameSide) continue;
-        else if (a == "--reps" && parse_long(v, reps) && reps >= 1) continue;
+        else if (a == "--width" && parse_int(v, width) && width >= 1 && width <= kMaxFrameSide) continue;
+        else if (a == "--reps" && parse_int(v, reps) && reps >= 1) continue;
         else fail("span-run: bad option '" + a + " " + v + "'");
     }
     AlignedBuffer<uint16_t> color(static_cast<size_t>(width));

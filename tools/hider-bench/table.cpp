@@ -40,7 +40,7 @@ std::map<std::string, uint64_t> parse_stats(const std::string& out) {
         std::string key, value;
         while (words >> key >> value) {
             long parsed = 0;
-            if (!parse_long(value, parsed) || parsed < 0) fail("bad statistics line from frame: " + line);
+            if (!parse_int(value, parsed) || parsed < 0) fail("bad statistics line from frame: " + line);
             stats[key] = static_cast<uint64_t>(parsed);
         }
     }

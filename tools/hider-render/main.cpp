@@ -8,6 +8,7 @@
 #include <iostream>
 #include <string>
 
+#include "common/cli.hpp"
 #include "common/obj.hpp"
 #include "common/render.hpp"
 #include "common/scene.hpp"
@@ -31,33 +32,10 @@ const char* kUsage =
     std::exit(2);
 }
 
-bool parse_double(const std::string& s, double& out) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    errno = 0;
-    out = std::strtod(s.c_str(), &end);
-    return end == s.c_str() + s.size() && errno == 0 && std::isfinite(out);
-}
-
-bool parse_int(const std::string& s, long& out) {
-    if (s.empty() || !(std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '-')) return false;
-    char* end = nullptr;
-    errno = 0;
-    out = std::strtol(s.c_str(), &end, 10);
-    return end == s.c_str() + s.size() && errno == 0;
-}
-
 Vec3d parse_vec(const std::string& opt, const std::string& s) {
     Vec3d v{};
-    size_t start = 0;
-    for (int i = 0; i < 3; ++i) {
-        const size_t comma = s.find(',', start);
-        const bool last = i == 2;
-        if (last != (comma == std::string::npos)) fail(opt + " needs x,y,z (got '" + s + "')");
-        const std::string part = s.substr(start, last ? std::string::npos : comma - start);
-        if (!parse_double(part, v[i])) fail(opt + ": bad number '" + part + "'");
-        start = comma + 1;
-    }
+    std::string why;
+    if (!parse_vec3(opt, s, v, why)) fail(why);
     return v;
 }
 

@@ -1,0 +1,46 @@
+// Command-line number parsing shared by the host tools.
+#include "common/cli.hpp"
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace hider::tool {
+
+bool parse_double(const std::string& s, double& out) {
+    if (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) return false;
+    char* end = nullptr;
+    errno = 0;
+    out = std::strtod(s.c_str(), &end);
+    return end == s.c_str() + s.size() && errno == 0 && std::isfinite(out);
+}
+
+bool parse_int(const std::string& s, long& out) {
+    if (s.empty() || !(std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '-')) return false;
+    char* end = nullptr;
+    errno = 0;
+    out = std::strtol(s.c_str(), &end, 10);
+    return end == s.c_str() + s.size() && errno == 0;
+}
+
+bool parse_vec3(const std::string& opt, const std::string& s, Vec3d& out, std::string& why) {
+    size_t start = 0;
+    for (int i = 0; i < 3; ++i) {
+        const size_t comma = s.find(',', start);
+        const bool last = i == 2;
+        if (last != (comma == std::string::npos)) {
+            why = opt + " needs x,y,z (got '" + s + "')";
+            return false;
+        }
+        const std::string part = s.substr(start, last ? std::string::npos : comma - start);
+        if (!parse_double(part, out[i])) {
+            why = opt + ": bad number '" + part + "'";
+            return false;
+        }
+        start = comma + 1;
+    }
+    return true;
+}
+
+}  // namespace hider::tool

@@ -1,0 +1,19 @@
+// Command-line number parsing shared by hider-render, hider-bake and hider-bench: strict (the whole
+// token must be a number), locale-independent for what the tools accept, no exceptions.
+#pragma once
+#include <string>
+
+#include "common/scene.hpp"
+
+namespace hider::tool {
+
+/// strtod syntax, the whole string, finite. False on anything else.
+bool parse_double(const std::string& s, double& out);
+
+/// Decimal integer (optional '-'), the whole string, in range of long. False on anything else.
+bool parse_int(const std::string& s, long& out);
+
+/// "x,y,z" for option `opt`; on failure returns false and sets `why` to the user message.
+bool parse_vec3(const std::string& opt, const std::string& s, Vec3d& out, std::string& why);
+
+}  // namespace hider::tool
