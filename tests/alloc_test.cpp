@@ -47,7 +47,7 @@ TEST_CASE("a whole frame makes no heap allocation") {
     for (int y0 = 0; y0 < s.height; y0 += 16) {
         const auto band = band_view<Rgb565Format>(color.data(), depth.data(), s.width, s.height, y0, std::min(s.height, y0 + 16));
         clear(band, {0, 0, 0});
-        const FrameStats st = draw_zbuffer(view, mesh, {verts.data(), verts.size()}, band, opt);
+        const FrameStats st = draw_zbuffer<true>(view, mesh, {verts.data(), verts.size()}, band, opt);
         CHECK(st.ok());
         fragments += st.fragments;
     }

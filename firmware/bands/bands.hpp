@@ -88,8 +88,6 @@ int run(Io& io, const spin::Scene& s, const BandBuffers& buf, hider::Span<uint8_
     io.print_u32(static_cast<uint32_t>((s.height + buf.rows - 1) / buf.rows));
     io.print(" bands, triangle setups ");
     io.print_u32(st.triangles_drawn);
-    io.print(", fragments ");
-    io.print_u32(st.fragments);
     io.print("\n");
     return 0;
 }

@@ -67,8 +67,6 @@ int run(Io& io, const Scene& s, const FrameBuffers& buf, uint32_t frames, const 
         io.print(path);
         io.print(": triangles drawn ");
         io.print_u32(st.triangles_drawn);
-        io.print(", fragments ");
-        io.print_u32(st.fragments);
         io.print("\n");
     }
     return 0;

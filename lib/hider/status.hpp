@@ -33,7 +33,7 @@ struct [[nodiscard]] FrameStats {
     uint32_t triangles_culled = 0;   ///< back faces removed (counted like triangles_drawn)
     uint32_t triangles_clipped = 0;  ///< triangles that needed near/far/guard clipping
     uint32_t triangles_outside = 0;  ///< wholly outside one clip plane
-    uint32_t fragments = 0;          ///< pixel centres covered (depth-tested or painted)
+    uint32_t fragments = 0;          ///< pixel centres covered (z-buffer: counted by draw_zbuffer<true> only)
     uint32_t pixels_written = 0;     ///< colour writes (only counted when the variant counts them)
 
     constexpr bool ok() const { return status == Status::ok; }

@@ -69,69 +69,39 @@ public:
 
     /// Visits every row y in [y_begin, y_end) the triangle touches, in order: rows.begin(y0) once,
     /// then rows(x0, x1, z) per row with the covered pixels [x0, x1) clipped to [0, width) (possibly
-    /// empty: x0 >= x1) and z the depth at (x0, y). Returns the number of pixels covered. This is the
-    /// hot path: a row functor keeps its own row pointers and steps them by a stride (no multiply).
+    /// empty: x0 >= x1) and z the depth at (x0, y). Returns the number of pixels covered when
+    /// RowFn::kCountFragments, else 0. This is the hot path: a row functor keeps its own row pointers
+    /// and steps them by a stride (no multiply), and triangles that cannot reach left of pixel 0 take
+    /// a loop without the depth-at-column-0 bookkeeping.
     template <class RowFn>
     uint32_t scan(int32_t y_begin, int32_t y_end, RowFn& rows_fn) const {
         const int32_t y0 = max(row_top_, y_begin), y1 = min(row_bottom_, y_end);
         if (y0 >= y1) return 0;
-        RowFn fn = rows_fn;  // a copy whose address never escapes: its fields can stay in registers
-        fn.begin(y0);
-        const int32_t y_mid = clamp(row_mid_, y0, y1);
-        // The long edge (top to bottom) and the short edge of the half holding y0; both short edges
-        // lie on the same side, so left and right never swap, only the short walker is replaced at y_mid.
-        const Walker lw = walker(edge_index(top_, bottom_), y0);
-        const Walker sw = walker(y0 < y_mid ? edge_index(top_, mid_) : edge_index(mid_, bottom_), y0);
-        const bool long_left = lw.left;
-        const Walker& l = long_left ? lw : sw;
-        const Walker& r = long_left ? sw : lw;
-        int32_t lpx = l.px, lg = l.g, la = l.a, lm = l.m, lq = l.q;
-        int32_t rpx = r.px, rg = r.g, ra = r.a, rm = r.m, rq = r.q;
-        uint32_t lz = l.z, ldz = l.dz_row;
-        const uint32_t dzdx = dzdx_, dzdy = dzdy_;
-        const int32_t width = width_;
-        uint32_t z_col0 = depth_at(0, y0);  // depth at pixel 0, for spans that start off-screen
-        uint32_t covered = 0;
-        for (int32_t y = y0;;) {
-            const int32_t x0 = lpx > 0 ? lpx : 0;
-            const int32_t x1 = rpx < width ? rpx : width;
-            fn(x0, x1, lpx < 0 ? z_col0 : lz);
-            if (x0 < x1) covered += static_cast<uint32_t>(x1 - x0);
-            if (++y == y1) break;
-            lg += lm;  // both edges step as DDAs with an exact error term
-            lpx += lq;
-            lz += ldz;
-            if (lg >= la) { lg -= la; --lpx; lz -= dzdx; }
-            rg += rm;
-            rpx += rq;
-            if (rg >= ra) { rg -= ra; --rpx; }
-            z_col0 += dzdy;
-            if (y == y_mid) {  // once per triangle: the short side continues along the other short edge
-                const Walker w = walker(edge_index(mid_, bottom_), y);
-                if (long_left) { rpx = w.px; rg = w.g; ra = w.a; rm = w.m; rq = w.q; }
-                else { lpx = w.px; lg = w.g; la = w.a; lm = w.m; lq = w.q; lz = w.z; ldz = w.dz_row; }
-            }
-        }
-        rows_fn = fn;
-        return covered;
+        if (min(x_[0], min(x_[1], x_[2])) < x_origin_) return scan_rows<true>(y0, y1, rows_fn);
+        return scan_rows<false>(y0, y1, rows_fn);
     }
 
     /// Convenience form of scan(): fn(y, x0, x1, z) for each row with a non-empty span.
     template <class Fn>
     uint32_t spans(int32_t y_begin, int32_t y_end, Fn&& fn) const {
-        struct Adapter {
-            Fn* f;
-            int32_t y;
-            void begin(int32_t first) { y = first; }
-            void operator()(int32_t x0, int32_t x1, uint32_t z) {
-                if (x0 < x1) (*f)(y, x0, x1, z);
-                ++y;
-            }
-        } adapter{&fn, 0};
-        return scan(y_begin, y_end, adapter);  // the copy in scan() holds the same reference to fn
+        SpanAdapter<Fn> adapter{&fn, 0};
+        return scan(y_begin, y_end, adapter);
     }
 
 private:
+    /// Row functor that hands non-empty spans to fn(y, x0, x1, z); counts fragments.
+    template <class Fn>
+    struct SpanAdapter {
+        static constexpr bool kCountFragments = true;
+        Fn* f;
+        int32_t y;
+        void begin(int32_t first) { y = first; }
+        void operator()(int32_t x0, int32_t x1, uint32_t z) {
+            if (x0 < x1) (*f)(y, x0, x1, z);
+            ++y;
+        }
+    };
+
     int32_t first_row_at_or_below(int32_t y_sub) const {
         return (y_sub - y_origin_ + kSubpixel - 1) >> kSubpixelBits;  // ceil((y - origin) / 16)
     }
@@ -159,6 +129,53 @@ private:
     /// Depth at pixel (px, py): exact modulo 2^32, equal to what stepping produces.
     uint32_t depth_at(int32_t px, int32_t py) const {
         return z_ref_ + dzdx_ * static_cast<uint32_t>(px - ref_px_) + dzdy_ * static_cast<uint32_t>(py - ref_py_);
+    }
+
+    /// The row loop of scan(). kClipLeft: spans may start left of pixel 0, so the depth at column 0 is
+    /// stepped along (z_col0) for them.
+    template <bool kClipLeft, class RowFn>
+    uint32_t scan_rows(int32_t y0, int32_t y1, RowFn& rows_fn) const {
+        RowFn fn = rows_fn;  // a copy whose address never escapes: its fields can stay in registers
+        fn.begin(y0);
+        const int32_t y_mid = clamp(row_mid_, y0, y1);
+        // The long edge (top to bottom) and the short edge of the half holding y0; both short edges
+        // lie on the same side, so left and right never swap, only the short walker is replaced at y_mid.
+        const Walker lw = walker(edge_index(top_, bottom_), y0);
+        const Walker sw = walker(y0 < y_mid ? edge_index(top_, mid_) : edge_index(mid_, bottom_), y0);
+        const bool long_left = lw.left;
+        const Walker& l = long_left ? lw : sw;
+        const Walker& r = long_left ? sw : lw;
+        int32_t lpx = l.px, lg = l.g, la = l.a, lm = l.m, lq = l.q;
+        int32_t rpx = r.px, rg = r.g, ra = r.a, rm = r.m, rq = r.q;
+        uint32_t lz = l.z, ldz = l.dz_row;
+        const uint32_t dzdx = dzdx_;
+        const int32_t width = width_;
+        uint32_t z_col0 = kClipLeft ? depth_at(0, y0) : 0;  // depth at pixel 0, for spans that start off-screen
+        uint32_t covered = 0;
+        for (int32_t y = y0;;) {
+            const int32_t x0 = kClipLeft && lpx < 0 ? 0 : lpx;
+            const int32_t x1 = rpx < width ? rpx : width;
+            fn(x0, x1, kClipLeft && lpx < 0 ? z_col0 : lz);
+            if constexpr (RowFn::kCountFragments) {
+                if (x0 < x1) covered += static_cast<uint32_t>(x1 - x0);
+            }
+            if (++y == y1) break;
+            lg += lm;  // both edges step as DDAs with an exact error term
+            lpx += lq;
+            lz += ldz;
+            if (lg >= la) { lg -= la; --lpx; lz -= dzdx; }
+            rg += rm;
+            rpx += rq;
+            if (rg >= ra) { rg -= ra; --rpx; }
+            if constexpr (kClipLeft) z_col0 += dzdy_;
+            if (y == y_mid) {  // once per triangle: the short side continues along the other short edge
+                const Walker w = walker(edge_index(mid_, bottom_), y);
+                if (long_left) { rpx = w.px; rg = w.g; ra = w.a; rm = w.m; rq = w.q; }
+                else { lpx = w.px; lg = w.g; la = w.a; lm = w.m; lq = w.q; lz = w.z; ldz = w.dz_row; }
+            }
+        }
+        rows_fn = fn;
+        return covered;
     }
 
     /// One edge as a DDA with an exact error term. g is the (top-left biased) edge function turned so

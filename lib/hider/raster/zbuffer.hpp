@@ -69,6 +69,7 @@ void for_each_piece(const View& view, const Mesh& mesh, Span<const ScreenVertex>
 /// Row functor for TriangleRaster::scan: depth-tested spans, row pointers stepped by the stride.
 template <bool kCount, class Format, class Depth, class Shader>
 struct DepthTestRows {
+    static constexpr bool kCountFragments = kCount;  ///< the default path counts nothing per row
     // Every member set explicitly: default initialisers made GCC memset the struct per triangle.
     DepthTestRows(const FrameView<Format, Depth>& f, Shader s, uint32_t dz_q32)
         : frame(&f), shader(s), dz(dz_q32), crow(nullptr), zrow(nullptr), written(0), stride(0) {}
@@ -86,7 +87,10 @@ struct DepthTestRows {
         stride = frame->stride;
     }
     void operator()(int32_t x0, int32_t x1, uint32_t z) {
-        if (x0 < x1) written += span_depth_test<kCount>(crow, zrow, x0, x1, z, dz, shader);
+        if (x0 < x1) {
+            const uint32_t n = span_depth_test<kCount>(crow, zrow, x0, x1, z, dz, shader);
+            if constexpr (kCount) written += n;
+        }
         crow += stride;
         zrow += stride;
     }
