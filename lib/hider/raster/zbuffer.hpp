@@ -86,7 +86,7 @@ struct DepthTestRows {
         zrow = frame->depth_row(y);
         stride = frame->stride;
     }
-    void operator()(int32_t x0, int32_t x1, uint32_t z) {
+    __attribute__((always_inline)) void operator()(int32_t x0, int32_t x1, uint32_t z) {
         if (x0 < x1) {
             const uint32_t n = span_depth_test<kCount>(crow, zrow, x0, x1, z, dz, shader);
             if constexpr (kCount) written += n;
