@@ -1,6 +1,7 @@
 // Fixed<F> and the integer helpers: exact raw results, the rounding rules, saturation, and accuracy
 // against a double reference across the whole range (tolerances in LSBs).
 #include <hider/fixed.hpp>
+#include <hider/view.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -186,4 +187,22 @@ TEST_CASE("div_round through udiv64_32 equals native division (the 32-bit target
         const int64_t fast = ((n < 0) != (d < 0)) ? -static_cast<int64_t>(q) : static_cast<int64_t>(q);
         CHECK(fast == hider::div_round(n, d));
     }
+}
+
+TEST_CASE("the 32-bit targets' projection division equals div_round(n, 256 w)") {
+    std::mt19937_64 rng(53);
+    for (int i = 0; i < 200000; ++i) {
+        const auto n = static_cast<int64_t>(rng()) >> (1 + rng() % 40);
+        const auto w = static_cast<int32_t>(rng() >> (33 + rng() % 31)) | 1;
+        int64_t q = 0;
+        if (!hider::detail::div_round_w256_by_parts(n, w, q)) continue;
+        CHECK(q == hider::div_round(n, int64_t{w} * 256));
+    }
+    int64_t q = 0;
+    REQUIRE(hider::detail::div_round_w256_by_parts(128, 1, q));
+    CHECK(q == 1);  // 0.5 rounds away from zero
+    REQUIRE(hider::detail::div_round_w256_by_parts(-128, 1, q));
+    CHECK(q == -1);
+    REQUIRE(hider::detail::div_round_w256_by_parts(127, 1, q));
+    CHECK(q == 0);
 }

@@ -55,12 +55,13 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
     DepthRange r;
     for (size_t i = 0; i < positions.size(); ++i) {
         const ViewPoint p = to_view_point(view, positions[i]);
-        const uint8_t code = outcode(view, p);
+        const ScaledXY xy = scaled_xy(view, p);
+        const uint8_t code = outcode(view, p, xy);
         if (code != 0) {
             out[i].outside = code;  // x, y, z are not used for vertices outside a plane
             continue;
         }
-        out[i] = project(view, p);
+        out[i] = project(view, p, xy);
         r.min = min(r.min, out[i].z);
         r.max = max(r.max, out[i].z);
     }

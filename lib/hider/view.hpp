@@ -99,33 +99,45 @@ inline int64_t clip_distance(const View& v, const ViewPoint& p, uint8_t plane) {
     }
 }
 
+/// The products x k and y k of a view point, which the clip tests and the projection both need.
+struct ScaledXY {
+    int64_t xk, yk;
+};
+inline ScaledXY scaled_xy(const View& v, const ViewPoint& p) { return {mul_wide(p.x, v.k_q8), mul_wide(p.y, v.k_q8)}; }
+
 /// The set of clip planes p lies outside of (0 = inside the view volume and the guard band).
-inline uint8_t outcode(const View& v, const ViewPoint& p) {
+inline uint8_t outcode(const View& v, const ViewPoint& p, const ScaledXY& s) {
     uint8_t code = 0;
     if (p.w < v.near_raw) code |= kClipNear;
     if (p.w > v.far_raw) code |= kClipFar;
     const int64_t guard = int64_t{p.w} * (int64_t{kGuardBand} * 256);
-    const int64_t xk = mul_wide(p.x, v.k_q8), yk = mul_wide(p.y, v.k_q8);
-    if (xk < -guard) code |= kClipLeft;
-    if (xk > guard) code |= kClipRight;
-    if (yk > guard) code |= kClipTop;
-    if (yk < -guard) code |= kClipBottom;
+    if (s.xk < -guard) code |= kClipLeft;
+    if (s.xk > guard) code |= kClipRight;
+    if (s.yk > guard) code |= kClipTop;
+    if (s.yk < -guard) code |= kClipBottom;
     return code;
 }
+inline uint8_t outcode(const View& v, const ViewPoint& p) { return outcode(v, p, scaled_xy(v, p)); }
 
 namespace detail {
-/// div_round(n, 256 w) for w > 0. On 32-bit targets it divides n / 256 by w with udiv64_32 and folds
-/// the low 8 bits into the remainder: exact, and no library 64-bit division (the quotient is a screen
-/// coordinate, far below 2^32).
-inline int64_t div_round_w256(int64_t n, int32_t w) {
+/// div_round(n, 256 w) for w > 0: |n| / (256 w) rounded half away from zero is
+/// floor(floor((|n| + 128 w) / 256) / w) (nested floors), so one 64/32 division with udiv64_32 does it on
+/// 32-bit targets, no library 64-bit division (the quotient is a screen coordinate, far below 2^32).
+/// Returns false (nothing computed) when the quotient would not fit 32 bits.
+inline bool div_round_w256_by_parts(int64_t n, int32_t w, int64_t& out) {
     const uint64_t un = n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
     const uint32_t uw = static_cast<uint32_t>(w);
-    if (!kSlow64BitDivide || (un >> 40) >= uw) return div_round(n, int64_t{w} * 256);
+    const uint64_t m = (un + (uint64_t{uw} << 7)) >> 8;
+    if ((m >> 32) >= uw) return false;
     uint32_t r = 0;
-    const uint64_t q = udiv64_32(un >> 8, uw, r);
-    const uint64_t rem = (uint64_t{r} << 8) | (un & 255u), den = uint64_t{uw} << 8;
-    const int64_t rounded = static_cast<int64_t>(q + (rem >= den - rem ? 1u : 0u));
-    return n < 0 ? -rounded : rounded;
+    const int64_t q = udiv64_32(m, uw, r);
+    out = n < 0 ? -q : q;
+    return true;
+}
+inline int64_t div_round_w256(int64_t n, int32_t w) {
+    int64_t q = 0;
+    if (kSlow64BitDivide && div_round_w256_by_parts(n, w, q)) return q;
+    return div_round(n, int64_t{w} * 256);
 }
 
 /// floor(near * 2^31 / w) for w > near (so below 2^31), without a library 64-bit division.
@@ -139,11 +151,11 @@ inline uint32_t near_over_w_q31(int32_t near_raw, int32_t w) {
 
 /// Projects a point inside (or, after clipping, on) the view volume; coordinates are clamped to the
 /// guard band and depth to [kDepthNear, kDepthFar], so rounding at clip planes never overflows.
-inline ScreenVertex project(const View& v, const ViewPoint& p) {
+inline ScreenVertex project(const View& v, const ViewPoint& p, const ScaledXY& xy) {
     const int32_t w = max(p.w, int32_t{1});
     ScreenVertex s;
-    s.x = static_cast<int16_t>(clamp<int64_t>(detail::div_round_w256(mul_wide(p.x, v.k_q8), w), -kCoordLimit, kCoordLimit));
-    s.y = static_cast<int16_t>(clamp<int64_t>(detail::div_round_w256(-mul_wide(p.y, v.k_q8), w), -kCoordLimit, kCoordLimit));
+    s.x = static_cast<int16_t>(clamp<int64_t>(detail::div_round_w256(xy.xk, w), -kCoordLimit, kCoordLimit));
+    s.y = static_cast<int16_t>(clamp<int64_t>(detail::div_round_w256(-xy.yk, w), -kCoordLimit, kCoordLimit));
     // u = n / w in Q31 (1 when w <= n), then z = near + scale (1 - u) / (1 - n/f).
     uint64_t u = w <= v.near_raw ? (uint64_t{1} << 31) : detail::near_over_w_q31(v.near_raw, w);
     u = clamp<uint64_t>(u, v.near_over_far_q31, uint64_t{1} << 31);
@@ -152,5 +164,8 @@ inline ScreenVertex project(const View& v, const ViewPoint& p) {
     s.outside = 0;
     return s;
 }
+
+/// project() for a point whose products are not at hand.
+inline ScreenVertex project(const View& v, const ViewPoint& p) { return project(v, p, scaled_xy(v, p)); }
 
 }  // namespace hider
