@@ -206,3 +206,22 @@ TEST_CASE("the 32-bit targets' projection division equals div_round(n, 256 w)") 
     REQUIRE(hider::detail::div_round_w256_by_parts(127, 1, q));
     CHECK(q == 0);
 }
+
+TEST_CASE("div_round_u32's 32-bit path equals div_round for every sign and tie") {
+    std::mt19937_64 rng(59);
+    for (int i = 0; i < 200000; ++i) {
+        const auto n = static_cast<int64_t>(rng()) >> (rng() % 63);
+        const auto d = static_cast<uint32_t>(rng() >> (32 + rng() % 32)) | 1u;
+        for (uint32_t dd : {d, d & ~1u ? d & ~1u : 2u}) {
+            int64_t q = 0;
+            if (!hider::div_round_u32_by_parts(n, dd, q)) continue;
+            CHECK(q == hider::div_round(n, int64_t{dd}));
+        }
+    }
+    int64_t q = 0;
+    REQUIRE(hider::div_round_u32_by_parts(5, 2, q));
+    CHECK(q == 3);
+    REQUIRE(hider::div_round_u32_by_parts(-5, 2, q));
+    CHECK(q == -3);
+    CHECK_FALSE(hider::div_round_u32_by_parts(int64_t{1} << 40, 16, q));  // quotient past 32 bits
+}

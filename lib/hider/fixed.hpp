@@ -117,6 +117,25 @@ constexpr int64_t div_round(int64_t n, int64_t d) {
     return q > static_cast<uint64_t>(INT64_MAX) ? INT64_MIN : -static_cast<int64_t>(q);
 }
 
+/// div_round(n, d) for d > 0 through one udiv64_32: round(|n| / d) = floor((|n| + d / 2) / d). False (out
+/// untouched) when the quotient would not fit 32 bits.
+constexpr bool div_round_u32_by_parts(int64_t n, uint32_t d, int64_t& out) {
+    const uint64_t un = n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
+    const uint64_t m = un + (d >> 1);
+    if (m < un || (m >> 32) >= d) return false;
+    uint32_t r = 0;
+    const int64_t q = udiv64_32(m, d, r);
+    out = n < 0 ? -q : q;
+    return true;
+}
+
+/// div_round(n, d) for d > 0, with the 32-bit targets' single long division when the quotient allows.
+constexpr int64_t div_round_u32(int64_t n, uint32_t d) {
+    int64_t q = 0;
+    if (kSlow64BitDivide && div_round_u32_by_parts(n, d, q)) return q;
+    return div_round(n, int64_t{d});
+}
+
 /// n / 2^shift rounded to nearest, ties away from zero (div_round for a power of two, with shifts).
 constexpr int64_t div_round_pow2(int64_t n, int shift) {
     const int64_t half = int64_t{1} << (shift - 1);

@@ -114,8 +114,8 @@ private:
         const int64_t dx2 = x_[2] - x_[0], dy2 = y_[2] - y_[0];
         const int64_t dz1 = int64_t{v[1]->z} - v[0]->z, dz2 = int64_t{v[2]->z} - v[0]->z;
         // Plane through the vertices: z = z0 + p (x - x0) + q (y - y0); per pixel = 16 p, 16 q.
-        const int64_t px = div_round((dz1 * dy2 - dz2 * dy1) * kSubpixel, area);
-        const int64_t qy = div_round((dz2 * dx1 - dz1 * dx2) * kSubpixel, area);
+        const int64_t px = div_round_u32((dz1 * dy2 - dz2 * dy1) * kSubpixel, static_cast<uint32_t>(area));
+        const int64_t qy = div_round_u32((dz2 * dx1 - dz1 * dx2) * kSubpixel, static_cast<uint32_t>(area));
         dzdx_ = static_cast<uint32_t>(px);
         dzdy_ = static_cast<uint32_t>(qy);
         // Reference pixel: the one whose cell holds v0; its centre is within 8 subpixels of v0.
