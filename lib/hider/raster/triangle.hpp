@@ -209,8 +209,12 @@ private:
         else if (dg < 0 && dg >= -w.a) w.q = 1;
         else w.q = -div_floor32(dg, w.a);
         w.m = dg + w.q * w.a;  // dg mod a, in [0, a)
-        w.z = depth_at(w.px, py);
-        w.dz_row = dzdy_ + dzdx_ * static_cast<uint32_t>(w.q);
+        if (w.left) {  // only the left edge carries depth
+            w.z = depth_at(w.px, py);
+            w.dz_row = dzdy_ + dzdx_ * static_cast<uint32_t>(w.q);
+        } else {
+            w.z = w.dz_row = 0;
+        }
         return w;
     }
 
