@@ -77,8 +77,10 @@ public:
     uint32_t scan(int32_t y_begin, int32_t y_end, RowFn& rows_fn) const {
         const int32_t y0 = max(row_top_, y_begin), y1 = min(row_bottom_, y_end);
         if (y0 >= y1) return 0;
-        if (min(x_[0], min(x_[1], x_[2])) < x_origin_) return scan_rows<true>(y0, y1, rows_fn);
-        return scan_rows<false>(y0, y1, rows_fn);
+        const bool left = min(x_[0], min(x_[1], x_[2])) < x_origin_;
+        const bool right = max(x_[0], max(x_[1], x_[2])) > x_origin_ + (width_ - 1) * kSubpixel;
+        if (left) return right ? scan_rows<true, true>(y0, y1, rows_fn) : scan_rows<true, false>(y0, y1, rows_fn);
+        return right ? scan_rows<false, true>(y0, y1, rows_fn) : scan_rows<false, false>(y0, y1, rows_fn);
     }
 
     /// Convenience form of scan(): fn(y, x0, x1, z) for each row with a non-empty span.
@@ -132,8 +134,8 @@ private:
     }
 
     /// The row loop of scan(). kClipLeft: spans may start left of pixel 0, so the depth at column 0 is
-    /// stepped along (z_col0) for them.
-    template <bool kClipLeft, class RowFn>
+    /// stepped along (z_col0) for them. kClipRight: spans may end past the last column.
+    template <bool kClipLeft, bool kClipRight, class RowFn>
     uint32_t scan_rows(int32_t y0, int32_t y1, RowFn& rows_fn) const {
         RowFn fn = rows_fn;  // a copy whose address never escapes: its fields can stay in registers
         fn.begin(y0);
@@ -154,7 +156,7 @@ private:
         uint32_t covered = 0;
         for (int32_t y = y0;;) {
             const int32_t x0 = kClipLeft && lpx < 0 ? 0 : lpx;
-            const int32_t x1 = rpx < width ? rpx : width;
+            const int32_t x1 = kClipRight && rpx > width ? width : rpx;
             fn(x0, x1, kClipLeft && lpx < 0 ? z_col0 : lz);
             if constexpr (RowFn::kCountFragments) {
                 if (x0 < x1) covered += static_cast<uint32_t>(x1 - x0);
