@@ -119,6 +119,21 @@ void fill(T* p, size_t n, T v) {
         const uint32_t word = bits * 0x00010001u;
         AliasWord* w = reinterpret_cast<AliasWord*>(p);
         size_t words = n / 2;
+#if defined(__arm__) && defined(__thumb__)
+        // Cortex-M: two 4-register store-multiples per 8 words (GCC -Os emits one str per word).
+        if (size_t blocks = words / 8) {
+            register uint32_t w0 asm("r2") = word;
+            register uint32_t w1 asm("r3") = word;
+            register uint32_t w2 asm("r4") = word;
+            register uint32_t w3 asm("r5") = word;
+            __asm__ volatile(".syntax unified\n1:\n\tstmia %0!, {r2, r3, r4, r5}\n\tstmia %0!, {r2, r3, r4, r5}\n\t"
+                             "subs %1, %1, #1\n\tbne 1b"
+                             : "+l"(w), "+l"(blocks)
+                             : "r"(w0), "r"(w1), "r"(w2), "r"(w3)
+                             : "memory", "cc");
+            words %= 8;
+        }
+#endif
         for (; words >= 8; words -= 8, w += 8) {
             w[0] = word; w[1] = word; w[2] = word; w[3] = word;
             w[4] = word; w[5] = word; w[6] = word; w[7] = word;
