@@ -57,7 +57,7 @@ template <bool kCount = false, class Format, class Depth>
 FrameStats paint_in_order(const View& view, const Mesh& mesh, Span<const ScreenPoly> polys, Span<const uint32_t> order,
                           const FrameView<Format, Depth>& frame, const DrawOptions& opt) {
     FrameStats st;
-    if (!frame.valid() || frame.width != view.width || frame.height != view.height) {
+    if (!detail::frame_matches(view, frame)) {
         st.status = Status::invalid_argument;
         return st;
     }
@@ -65,20 +65,14 @@ FrameStats paint_in_order(const View& view, const Mesh& mesh, Span<const ScreenP
     const detail::BandBounds bb = detail::band_bounds(frame);
     for (size_t k = 0; k < order.size(); ++k) {
         const ScreenPoly& p = polys[order[k]];
-        if (p.ymax < bb.y_first || p.ymin > bb.y_last) continue;
         TriangleRaster tr;
-        if (!tr.setup(p.v[0], p.v[1], p.v[2], frame.width, frame.height)) continue;
+        int32_t y0 = 0, y1 = 0;
+        if (!detail::setup_in_band(p, bb, frame, tr, y0, y1)) continue;
         ++st.triangles_drawn;
         const uint32_t dz = tr.dzdx();
-        const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
-        uint32_t n = 0;
-        if (opt.shade == Shade::depth) {
-            const DepthShader<Format> shader(opt.depth_range);
-            n = tr.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) { span_paint(frame.row(y), x0, x1, z, dz, shader); });
-        } else {
-            const FlatShader<typename Format::Pixel> shader{Format::pack(shading.color(mesh, p.tri, (p.flags & kPolyFront) != 0))};
-            n = tr.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) { span_paint(frame.row(y), x0, x1, z, dz, shader); });
-        }
+        const uint32_t n = detail::with_poly_shader<Format>(opt, shading, mesh, p, [&](const auto& shader) {
+            return tr.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) { span_paint(frame.row(y), x0, x1, z, dz, shader); });
+        });
         st.fragments += n;
         if constexpr (kCount) st.pixels_written += n;
     }

@@ -45,7 +45,7 @@ FrameStats paint_front_to_back(const View& view, const Mesh& mesh, Span<const Sc
                                const FrameView<Format, Depth>& frame, const DrawOptions& opt, Span<uint32_t> coverage) {
     FrameStats st;
     const int32_t wpr = coverage_words(frame.width);
-    if (!frame.valid() || frame.width != view.width || frame.height != view.height ||
+    if (!detail::frame_matches(view, frame) ||
         coverage.size() < static_cast<size_t>(wpr) * static_cast<size_t>(frame.rows())) {
         st.status = Status::invalid_argument;
         return st;
@@ -56,20 +56,17 @@ FrameStats paint_front_to_back(const View& view, const Mesh& mesh, Span<const Sc
     const detail::BandBounds bb = detail::band_bounds(frame);
     for (size_t k = order.size(); k-- > 0 && remaining != 0;) {
         const ScreenPoly& p = polys[order[k]];
-        if (p.ymax < bb.y_first || p.ymin > bb.y_last) continue;
         TriangleRaster tr;
-        if (!tr.setup(p.v[0], p.v[1], p.v[2], frame.width, frame.height)) continue;
+        int32_t y0 = 0, y1 = 0;
+        if (!detail::setup_in_band(p, bb, frame, tr, y0, y1)) continue;
         ++st.triangles_drawn;
         const uint32_t dz = tr.dzdx();
-        const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
         uint32_t written = 0;
-        auto draw = [&](const auto& shader) {
+        st.fragments += detail::with_poly_shader<Format>(opt, shading, mesh, p, [&](const auto& shader) {
             return tr.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) {
                 written += detail::span_uncovered(frame.row(y), coverage.data() + static_cast<size_t>(y - frame.y0) * wpr, x0, x1, z, dz, shader);
             });
-        };
-        if (opt.shade == Shade::depth) st.fragments += draw(DepthShader<Format>(opt.depth_range));
-        else st.fragments += draw(FlatShader<typename Format::Pixel>{Format::pack(shading.color(mesh, p.tri, (p.flags & kPolyFront) != 0))});
+        });
         st.pixels_written += written;
         remaining -= written;
     }
