@@ -60,7 +60,7 @@ inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVer
 namespace detail {
 /// Sets `tr` up for polygon p when p can touch the band; [y0, y1) are then its rows inside the band.
 template <class Frame>
-bool setup_in_band(const ScreenPoly& p, const BandBounds& bb, const Frame& frame, TriangleRaster& tr, int32_t& y0,
+__attribute__((always_inline)) inline bool setup_in_band(const ScreenPoly& p, const BandBounds& bb, const Frame& frame, TriangleRaster& tr, int32_t& y0,
                    int32_t& y1) {
     if (p.ymax < bb.y_first || p.ymin > bb.y_last) return false;
     if (!tr.setup(p.v[0], p.v[1], p.v[2], frame.width, frame.height)) return false;
@@ -71,7 +71,7 @@ bool setup_in_band(const ScreenPoly& p, const BandBounds& bb, const Frame& frame
 
 /// Returns draw(shader) with polygon p's shader: grey by depth per pixel, or its flat face colour.
 template <class Format, class Draw>
-uint32_t with_poly_shader(const DrawOptions& opt, const FaceShading& shading, const Mesh& mesh, const ScreenPoly& p,
+__attribute__((always_inline)) inline uint32_t with_poly_shader(const DrawOptions& opt, const FaceShading& shading, const Mesh& mesh, const ScreenPoly& p,
                           Draw&& draw) {
     if (opt.shade == Shade::depth) return draw(DepthShader<Format>(opt.depth_range));
     return draw(FlatShader<typename Format::Pixel>{Format::pack(shading.color(mesh, p.tri, (p.flags & kPolyFront) != 0))});
