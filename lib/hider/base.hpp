@@ -24,6 +24,8 @@ template <class T> constexpr T max(T a, T b) { return a < b ? b : a; }
 template <class T> constexpr T clamp(T v, T lo, T hi) { return v < lo ? lo : (hi < v ? hi : v); }
 template <class T> constexpr void swap_values(T& a, T& b) { T t = a; a = b; b = t; }
 template <class T> constexpr T abs_value(T v) { return v < 0 ? -v : v; }
+/// (i + 1) % 3 for i in [0, 3) without a division (a library call on ARMv6-M).
+constexpr int next3(int i) { return i == 2 ? 0 : i + 1; }
 
 /// Non-owning view of `size` contiguous elements (pointer + size). Borrowed, never freed.
 template <class T>

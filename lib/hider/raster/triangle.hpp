@@ -109,7 +109,7 @@ private:
     }
 
     /// Index i of the edge (v[i] -> v[i+1]) joining vertices p and q.
-    static int edge_index(int p, int q) { return (p + 1) % 3 == q ? p : q; }
+    static int edge_index(int p, int q) { return next3(p) == q ? p : q; }
 
     void setup_depth(const ScreenVertex* const* v, int32_t area) {
         const int64_t dx1 = x_[1] - x_[0], dy1 = y_[1] - y_[0];
@@ -194,7 +194,7 @@ private:
     /// Walker for edge (v[edge] -> v[edge + 1]) on row py. Cost: one int32 division, two for edges
     /// flatter than one pixel per row.
     Walker walker(int edge, int32_t py) const {
-        const int a = edge, b = (edge + 1) % 3;
+        const int a = edge, b = next3(edge);
         const int32_t dx = x_[b] - x_[a], dy = y_[b] - y_[a];
         const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;  // top-left rule
         const int32_t yc = py * kSubpixel + y_origin_;

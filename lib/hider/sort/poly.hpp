@@ -129,7 +129,7 @@ inline bool projections_disjoint(const ScreenPoly& p, const ScreenPoly& q) {
         const int32_t area = TriangleRaster::signed_area(s.v[0], s.v[1], s.v[2]);
         for (int i = 0; i < 3; ++i) {
             const ScreenVertex& a = s.v[i];
-            const ScreenVertex& b = s.v[(i + 1) % 3];
+            const ScreenVertex& b = s.v[next3(i)];
             bool all_out = true;
             for (const ScreenVertex& v : o.v) {
                 const int32_t e = (b.x - a.x) * (v.y - a.y) - (b.y - a.y) * (v.x - a.x);
@@ -173,7 +173,7 @@ inline int split_by_plane(const ScreenPoly& p, const ScreenPlane& pl, ScreenPoly
     ScreenVertex far_poly[4], near_poly[4];
     int nf = 0, nn = 0;
     for (int i = 0; i < 3; ++i) {
-        const int j = (i + 1) % 3;
+        const int j = next3(i);
         if (sgn[i] >= 0) far_poly[nf++] = p.v[i];
         if (sgn[i] <= 0) near_poly[nn++] = p.v[i];
         if (sgn[i] * sgn[j] < 0) {
