@@ -189,39 +189,86 @@ TEST_CASE("div_round through udiv64_32 equals native division (the 32-bit target
     }
 }
 
-TEST_CASE("the 32-bit targets' projection division equals div_round(n, 256 w)") {
+TEST_CASE_TEMPLATE("the 32-bit targets' projection division equals div_round(n, 256 w)", D, hider::Divisor32,
+                   hider::LongDivisor32) {
     std::mt19937_64 rng(53);
     for (int i = 0; i < 200000; ++i) {
         const auto n = static_cast<int64_t>(rng()) >> (1 + rng() % 40);
         const auto w = static_cast<int32_t>(rng() >> (33 + rng() % 31)) | 1;
         int64_t q = 0;
-        if (!hider::detail::div_round_w256_by_parts(n, w, q)) continue;
+        if (!hider::detail::div_round_w256_by_parts(n, D(static_cast<uint32_t>(w)), q)) continue;
         CHECK(q == hider::div_round(n, int64_t{w} * 256));
     }
     int64_t q = 0;
-    REQUIRE(hider::detail::div_round_w256_by_parts(128, 1, q));
+    REQUIRE(hider::detail::div_round_w256_by_parts(128, D(1), q));
     CHECK(q == 1);  // 0.5 rounds away from zero
-    REQUIRE(hider::detail::div_round_w256_by_parts(-128, 1, q));
+    REQUIRE(hider::detail::div_round_w256_by_parts(-128, D(1), q));
     CHECK(q == -1);
-    REQUIRE(hider::detail::div_round_w256_by_parts(127, 1, q));
+    REQUIRE(hider::detail::div_round_w256_by_parts(127, D(1), q));
     CHECK(q == 0);
 }
 
-TEST_CASE("div_round_u32's 32-bit path equals div_round for every sign and tie") {
+TEST_CASE_TEMPLATE("div_round_prepared's 32-bit path equals div_round for every sign and tie", D, hider::Divisor32,
+                   hider::LongDivisor32) {
     std::mt19937_64 rng(59);
     for (int i = 0; i < 200000; ++i) {
         const auto n = static_cast<int64_t>(rng()) >> (rng() % 63);
         const auto d = static_cast<uint32_t>(rng() >> (32 + rng() % 32)) | 1u;
         for (uint32_t dd : {d, d & ~1u ? d & ~1u : 2u}) {
             int64_t q = 0;
-            if (!hider::div_round_u32_by_parts(n, dd, q)) continue;
+            if (!hider::div_round_prepared_by_parts(n, D(dd), q)) continue;
             CHECK(q == hider::div_round(n, int64_t{dd}));
+            CHECK(hider::div_round_prepared(n, D(dd)) == q);
         }
     }
     int64_t q = 0;
-    REQUIRE(hider::div_round_u32_by_parts(5, 2, q));
+    REQUIRE(hider::div_round_prepared_by_parts(5, D(2), q));
     CHECK(q == 3);
-    REQUIRE(hider::div_round_u32_by_parts(-5, 2, q));
+    REQUIRE(hider::div_round_prepared_by_parts(-5, D(2), q));
     CHECK(q == -3);
-    CHECK_FALSE(hider::div_round_u32_by_parts(int64_t{1} << 40, 16, q));  // quotient past 32 bits
+    CHECK_FALSE(hider::div_round_prepared_by_parts(int64_t{1} << 40, D(16), q));  // quotient past 32 bits
+    CHECK(hider::div_round_prepared(int64_t{1} << 40, D(16)) == int64_t{1} << 36);  // then div_round
+    CHECK(hider::div_round_prepared(-(int64_t{1} << 40) - 8, D(16)) == -(int64_t{1} << 36) - 1);
+}
+
+TEST_CASE("Divisor32 (ARMv6-M's prepared reciprocal) equals native division for every divisor shape") {
+    std::mt19937_64 rng(61);
+    auto check = [](uint64_t n, uint32_t d) {
+        const hider::Divisor32 div(d);
+        uint32_t r = 0;
+        const uint32_t q = div.divide(n, r);
+        CHECK(div.value() == d);
+        CHECK(q == n / d);
+        CHECK(r == n % d);
+    };
+    for (int i = 0; i < 200000; ++i) {
+        const uint32_t d = static_cast<uint32_t>(rng() >> (rng() % 64)) | 1u;
+        const uint64_t hi = (rng() >> 32) % d;  // keeps n < d * 2^32
+        check((hi << 32) | (rng() & 0xFFFFFFFFu), d);
+    }
+    for (uint32_t d : {1u, 2u, 3u, 7u, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u, 0x80000001u, 0xFFFFFFFFu})
+        for (uint64_t k : {0ull, 1ull, 0xFFFFull, 0xFFFFFFFEull, 0xFFFFFFFFull}) {
+            const uint64_t top = (uint64_t{d} << 32) - 1;  // largest n with a 32-bit quotient
+            check(std::min<uint64_t>(k * d, top), d);
+            check(std::min<uint64_t>(k * d + (d - 1), top), d);
+            if (k * d > 0 && k * d <= top) check(k * d - 1, d);
+        }
+}
+
+TEST_CASE("the ARMv6-M 64-bit products by parts equal the native products") {
+    std::mt19937_64 rng(67);
+    for (int i = 0; i < 200000; ++i) {
+        const auto b = static_cast<int32_t>(rng() >> (rng() % 33));
+        const auto a = static_cast<int64_t>(rng()) >> (31 + rng() % 33);  // |a| <= 2^32: |a b| < 2^63
+        CHECK(hider::mul_i64_i32_by_parts(a, b) == a * b);
+        CHECK(hider::mul_i64_i32(a, b) == a * b);
+        const uint64_t ub = rng() >> (rng() % 64);
+        const auto ua = static_cast<uint32_t>(rng());
+        CHECK(hider::mul_u32_u64_by_parts(ua, ub) == ua * ub);  // modulo 2^64, like the native product
+    }
+    CHECK(hider::mul_i64_i32_by_parts(-(int64_t{1} << 32) + 1, INT32_MIN) == (-(int64_t{1} << 32) + 1) * INT32_MIN);
+    CHECK(hider::mul_i64_i32_by_parts((int64_t{1} << 31) - 1, INT32_MIN) == ((int64_t{1} << 31) - 1) * INT32_MIN);
+    CHECK(hider::mul_i64_i32_by_parts(-1, -1) == 1);
+    CHECK(hider::mul_i64_i32_by_parts(INT64_MAX, 1) == INT64_MAX);
+    CHECK(hider::mul_i64_i32_by_parts(INT64_MIN, 1) == INT64_MIN);
 }

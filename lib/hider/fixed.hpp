@@ -90,6 +90,73 @@ constexpr uint32_t udiv64_32(uint64_t n, uint32_t d, uint32_t& rem) {
     return (q1 << 16) | q0;
 }
 
+/// a * b modulo 2^64 (exact whenever the product fits int64) from 32-bit parts: on ARMv6-M four 16x16
+/// products and one 32-bit multiply instead of the library's 64x64 routine.
+constexpr int64_t mul_i64_i32_by_parts(int64_t a, int32_t b) {
+    const uint64_t ua = static_cast<uint64_t>(a);
+    const uint32_t al = static_cast<uint32_t>(ua), ah = static_cast<uint32_t>(ua >> 32), ub = static_cast<uint32_t>(b);
+    uint64_t p = mul_wide_u(al, ub) + (uint64_t{ah * ub} << 32);
+    if (b < 0) p -= uint64_t{al} << 32;
+    return static_cast<int64_t>(p);
+}
+
+/// a * b for a product that fits int64.
+constexpr int64_t mul_i64_i32(int64_t a, int32_t b) {
+#if defined(__ARM_ARCH_6M__)
+    return mul_i64_i32_by_parts(a, b);
+#else
+    return a * b;
+#endif
+}
+
+/// a * b modulo 2^64 for unsigned a from 32-bit parts (see mul_i64_i32_by_parts).
+constexpr uint64_t mul_u32_u64_by_parts(uint32_t a, uint64_t b) {
+    return mul_wide_u(a, static_cast<uint32_t>(b)) + (uint64_t{a * static_cast<uint32_t>(b >> 32)} << 32);
+}
+
+/// a * b modulo 2^64 for unsigned a.
+constexpr uint64_t mul_u32_u64(uint32_t a, uint64_t b) {
+#if defined(__ARM_ARCH_6M__)
+    return mul_u32_u64_by_parts(a, b);
+#else
+    return a * b;
+#endif
+}
+
+/// A 32-bit divisor prepared for several divisions (Moller and Granlund, "Improved division by
+/// invariant integers", IEEE TC 2011, algorithm 4): one udiv64_32 makes the reciprocal, then each
+/// quotient costs a 32x32->64 multiply and two corrections. Exact: divide() == udiv64_32() always.
+class Divisor32 {
+public:
+    /// Precondition: d != 0.
+    explicit constexpr Divisor32(uint32_t d) : shift_(clz32(d)), dn_(d << shift_), v_(reciprocal(d << shift_)) {}
+    constexpr uint32_t value() const { return dn_ >> shift_; }
+
+    /// floor(n / d) and the remainder, for n < d * 2^32 (the quotient fits 32 bits).
+    constexpr uint32_t divide(uint64_t n, uint32_t& rem) const {
+        const int s = shift_;
+        const uint32_t n1 = static_cast<uint32_t>(n >> 32), n0 = static_cast<uint32_t>(n);
+        const uint32_t u1 = s == 0 ? n1 : (n1 << s) | (n0 >> (32 - s));  // n << s < dn * 2^32: two words
+        const uint32_t u0 = n0 << s;
+        const uint64_t p = mul_wide_u(v_, u1) + ((uint64_t{u1} << 32) | u0);
+        uint32_t q = static_cast<uint32_t>(p >> 32) + 1;  // estimate: the quotient or one more
+        uint32_t r = u0 - q * dn_;                        // modulo 2^32
+        if (r > static_cast<uint32_t>(p)) { --q; r += dn_; }
+        if (r >= dn_) { ++q; r -= dn_; }                  // rare
+        rem = r >> s;
+        return q;
+    }
+
+private:
+    /// floor((2^64 - 1) / dn) - 2^32 for dn with its top bit set.
+    static constexpr uint32_t reciprocal(uint32_t dn) {
+        uint32_t r = 0;
+        return udiv64_32((uint64_t{~dn} << 32) | 0xFFFFFFFFu, dn, r);
+    }
+    int shift_;
+    uint32_t dn_, v_;
+};
+
 /// floor(a * b / 2^shift) for 0 <= shift < 63, computed exactly in 64 bits.
 constexpr int64_t mul_shift(int32_t a, int32_t b, int shift) { return mul_wide(a, b) >> shift; }
 
@@ -117,23 +184,46 @@ constexpr int64_t div_round(int64_t n, int64_t d) {
     return q > static_cast<uint64_t>(INT64_MAX) ? INT64_MIN : -static_cast<int64_t>(q);
 }
 
-/// div_round(n, d) for d > 0 through one udiv64_32: round(|n| / d) = floor((|n| + d / 2) / d). False (out
-/// untouched) when the quotient would not fit 32 bits.
-constexpr bool div_round_u32_by_parts(int64_t n, uint32_t d, int64_t& out) {
+/// udiv64_32 behind Divisor32's interface: where the CPU divides 32 bits in one instruction (Cortex-M3,
+/// RV32IM), the long division costs about what a prepared reciprocal's multiply and corrections do.
+class LongDivisor32 {
+public:
+    explicit constexpr LongDivisor32(uint32_t d) : d_(d) {}
+    constexpr uint32_t value() const { return d_; }
+    constexpr uint32_t divide(uint64_t n, uint32_t& rem) const { return udiv64_32(n, d_, rem); }
+
+private:
+    uint32_t d_;
+};
+
+/// The divisor for several 64/32 quotients by one value on this target: a reciprocal where 32-bit
+/// division is itself a library call (ARMv6-M: 2 x 61 instructions saved a quotient), else udiv64_32.
+#if defined(__ARM_ARCH_6M__)
+using SharedDivisor32 = Divisor32;
+#else
+using SharedDivisor32 = LongDivisor32;
+#endif
+
+/// div_round(n, d) for d > 0 through one 64/32 quotient of the prepared divisor D (Divisor32 or
+/// LongDivisor32): round(|n| / d) = floor((|n| + d / 2) / d). False (out untouched) when the quotient
+/// would not fit 32 bits.
+template <class D>
+constexpr bool div_round_prepared_by_parts(int64_t n, const D& d, int64_t& out) {
     const uint64_t un = n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
-    const uint64_t m = un + (d >> 1);
-    if (m < un || (m >> 32) >= d) return false;
+    const uint64_t m = un + (d.value() >> 1);
+    if (m < un || (m >> 32) >= d.value()) return false;
     uint32_t r = 0;
-    const int64_t q = udiv64_32(m, d, r);
+    const int64_t q = d.divide(m, r);
     out = n < 0 ? -q : q;
     return true;
 }
 
-/// div_round(n, d) for d > 0, with the 32-bit targets' single long division when the quotient allows.
-constexpr int64_t div_round_u32(int64_t n, uint32_t d) {
+/// div_round(n, d.value()) with a prepared divisor D (Divisor32 or LongDivisor32).
+template <class D>
+constexpr int64_t div_round_prepared(int64_t n, const D& d) {
     int64_t q = 0;
-    if (kSlow64BitDivide && div_round_u32_by_parts(n, d, q)) return q;
-    return div_round(n, int64_t{d});
+    if (div_round_prepared_by_parts(n, d, q)) return q;
+    return div_round(n, int64_t{d.value()});
 }
 
 /// n / 2^shift rounded to nearest, ties away from zero (div_round for a power of two, with shifts).

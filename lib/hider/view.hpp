@@ -121,33 +121,28 @@ inline uint8_t outcode(const View& v, const ViewPoint& p) { return outcode(v, p,
 
 namespace detail {
 /// div_round(n, 256 w) for w > 0: |n| / (256 w) rounded half away from zero is
-/// floor(floor((|n| + 128 w) / 256) / w) (nested floors), so one 64/32 division with udiv64_32 does it on
-/// 32-bit targets, no library 64-bit division (the quotient is a screen coordinate, far below 2^32).
-/// Returns false (nothing computed) when the quotient would not fit 32 bits. (fixed.hpp's
-/// div_round_u32_by_parts is the same idea without the scale; one function with a variable shift cost
-/// 53,000 instructions a torus frame on the M3, so each keeps its constant.)
-inline bool div_round_w256_by_parts(int64_t n, int32_t w, int64_t& out) {
+/// floor(floor((|n| + 128 w) / 256) / w) (nested floors), so one 64/32 division by the prepared w does
+/// it on 32-bit targets, no library 64-bit division (the quotient is a screen coordinate, far below 2^32).
+/// Returns false (nothing computed) when the quotient would not fit 32 bits.
+template <class D>
+inline bool div_round_w256_by_parts(int64_t n, const D& w, int64_t& out) {
     const uint64_t un = n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
-    const uint32_t uw = static_cast<uint32_t>(w);
+    const uint32_t uw = w.value();
     const uint64_t m = (un + (uint64_t{uw} << 7)) >> 8;
     if ((m >> 32) >= uw) return false;
     uint32_t r = 0;
-    const int64_t q = udiv64_32(m, uw, r);
+    const int64_t q = w.divide(m, r);
     out = n < 0 ? -q : q;
     return true;
 }
-inline int64_t div_round_w256(int64_t n, int32_t w) {
-    int64_t q = 0;
-    if (kSlow64BitDivide && div_round_w256_by_parts(n, w, q)) return q;
-    return div_round(n, int64_t{w} * 256);
-}
 
-/// floor(near * 2^31 / w) for w > near (so below 2^31), without a library 64-bit division.
-inline uint32_t near_over_w_q31(int32_t near_raw, int32_t w) {
-    const uint64_t n31 = uint64_t{static_cast<uint32_t>(near_raw)} << 31;
-    if (!kSlow64BitDivide) return static_cast<uint32_t>(n31 / static_cast<uint32_t>(w));
-    uint32_t r = 0;
-    return udiv64_32(n31, static_cast<uint32_t>(w), r);
+/// X = div_round(n, 256 w) for the prepared divisor w (SharedDivisor32: a reciprocal on ARMv6-M,
+/// udiv64_32 elsewhere), clamped to the coordinate limit; div_round when the quotient needs 64 bits.
+template <class D>
+inline int16_t project_coord(int64_t n, const D& w) {
+    int64_t q = 0;
+    if (!div_round_w256_by_parts(n, w, q)) q = div_round(n, int64_t{w.value()} * 256);
+    return static_cast<int16_t>(clamp<int64_t>(q, -kCoordLimit, kCoordLimit));
 }
 }  // namespace detail
 
@@ -155,13 +150,23 @@ inline uint32_t near_over_w_q31(int32_t near_raw, int32_t w) {
 /// guard band and depth to [kDepthNear, kDepthFar], so rounding at clip planes never overflows.
 inline ScreenVertex project(const View& v, const ViewPoint& p, const ScaledXY& xy) {
     const int32_t w = max(p.w, int32_t{1});
+    const uint64_t n31 = uint64_t{static_cast<uint32_t>(v.near_raw)} << 31;
     ScreenVertex s;
-    s.x = static_cast<int16_t>(clamp<int64_t>(detail::div_round_w256(xy.xk, w), -kCoordLimit, kCoordLimit));
-    s.y = static_cast<int16_t>(clamp<int64_t>(detail::div_round_w256(-xy.yk, w), -kCoordLimit, kCoordLimit));
-    // u = n / w in Q31 (1 when w <= n), then z = near + scale (1 - u) / (1 - n/f).
-    uint64_t u = w <= v.near_raw ? (uint64_t{1} << 31) : detail::near_over_w_q31(v.near_raw, w);
-    u = clamp<uint64_t>(u, v.near_over_far_q31, uint64_t{1} << 31);
-    const uint64_t z = kDepthNear + ((((uint64_t{1} << 31) - u) * v.depth_scale_q31 + (uint64_t{1} << 30)) >> 31);
+    uint32_t u = uint32_t{1} << 31;  // u = n / w in Q31, 1 when w <= n
+    if (kSlow64BitDivide) {  // three quotients by one prepared w; exact, so equal to the host's
+        const SharedDivisor32 dw(static_cast<uint32_t>(w));
+        s.x = detail::project_coord(xy.xk, dw);
+        s.y = detail::project_coord(-xy.yk, dw);
+        uint32_t r = 0;
+        if (w > v.near_raw) u = dw.divide(n31, r);  // n < w: below 2^31
+    } else {
+        s.x = static_cast<int16_t>(clamp<int64_t>(div_round(xy.xk, int64_t{w} * 256), -kCoordLimit, kCoordLimit));
+        s.y = static_cast<int16_t>(clamp<int64_t>(div_round(-xy.yk, int64_t{w} * 256), -kCoordLimit, kCoordLimit));
+        if (w > v.near_raw) u = static_cast<uint32_t>(n31 / static_cast<uint32_t>(w));
+    }
+    // z = near + scale (1 - u) / (1 - n/f).
+    u = clamp<uint32_t>(u, v.near_over_far_q31, uint32_t{1} << 31);
+    const uint64_t z = kDepthNear + ((mul_u32_u64((uint32_t{1} << 31) - u, v.depth_scale_q31) + (uint64_t{1} << 30)) >> 31);
     s.z = static_cast<uint32_t>(min<uint64_t>(z, kDepthFar));
     s.outside = 0;
     return s;

@@ -36,7 +36,8 @@ public:
     }
 
     /// Prepares (a, b, c) for a width x height frame. Returns false for zero area. Both windings are
-    /// accepted; front() tells which one it was. Cost: two 64-bit divisions.
+    /// accepted; front() tells which one it was. Cost: two 64-bit divisions (on 32-bit targets one
+    /// 64/32 division for a reciprocal of the area, then multiplies).
     bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t width, int32_t height) {
         row_top_ = row_mid_ = row_bottom_ = 0;  // an empty row range if we return early
         front_ = false;
@@ -112,20 +113,30 @@ private:
     static int edge_index(int p, int q) { return next3(p) == q ? p : q; }
 
     void setup_depth(const ScreenVertex* const* v, int32_t area) {
-        const int64_t dx1 = x_[1] - x_[0], dy1 = y_[1] - y_[0];
-        const int64_t dx2 = x_[2] - x_[0], dy2 = y_[2] - y_[0];
+        const int32_t dx1 = x_[1] - x_[0], dy1 = y_[1] - y_[0];
+        const int32_t dx2 = x_[2] - x_[0], dy2 = y_[2] - y_[0];
         const int64_t dz1 = int64_t{v[1]->z} - v[0]->z, dz2 = int64_t{v[2]->z} - v[0]->z;
         // Plane through the vertices: z = z0 + p (x - x0) + q (y - y0); per pixel = 16 p, 16 q.
-        const int64_t px = div_round_u32((dz1 * dy2 - dz2 * dy1) * kSubpixel, static_cast<uint32_t>(area));
-        const int64_t qy = div_round_u32((dz2 * dx1 - dz1 * dx2) * kSubpixel, static_cast<uint32_t>(area));
+        // |dz| < 2^32 and |dx|, |dy| < 2^15: every product fits 48 bits.
+        const int64_t npx = (mul_i64_i32(dz1, dy2) - mul_i64_i32(dz2, dy1)) * kSubpixel;
+        const int64_t nqy = (mul_i64_i32(dz2, dx1) - mul_i64_i32(dz1, dx2)) * kSubpixel;
+        int64_t px = 0, qy = 0;
+        if (kSlow64BitDivide) {  // 64/32 divisions (on ARMv6-M one reciprocal for both)
+            const SharedDivisor32 d(static_cast<uint32_t>(area));
+            px = div_round_prepared(npx, d);
+            qy = div_round_prepared(nqy, d);
+        } else {
+            px = div_round(npx, area);
+            qy = div_round(nqy, area);
+        }
         dzdx_ = static_cast<uint32_t>(px);
         dzdy_ = static_cast<uint32_t>(qy);
         // Reference pixel: the one whose cell holds v0; its centre is within 8 subpixels of v0.
         ref_px_ = (x_[0] - x_origin_ + kSubpixel / 2) >> kSubpixelBits;
         ref_py_ = (y_[0] - y_origin_ + kSubpixel / 2) >> kSubpixelBits;
-        const int64_t ox = ref_px_ * kSubpixel + x_origin_ - x_[0];
-        const int64_t oy = ref_py_ * kSubpixel + y_origin_ - y_[0];
-        z_ref_ = v[0]->z + static_cast<uint32_t>(div_round_pow2(px * ox + qy * oy, kSubpixelBits));
+        const int32_t ox = ref_px_ * kSubpixel + x_origin_ - x_[0];  // within [-8, 8]
+        const int32_t oy = ref_py_ * kSubpixel + y_origin_ - y_[0];
+        z_ref_ = v[0]->z + static_cast<uint32_t>(div_round_pow2(mul_i64_i32(px, ox) + mul_i64_i32(qy, oy), kSubpixelBits));
     }
 
     /// Depth at pixel (px, py): exact modulo 2^32, equal to what stepping produces.
