@@ -113,27 +113,27 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
     using Pixel = typename Format::Pixel;
     const detail::BandBounds bb = detail::band_bounds(frame);
     const FaceShading shading(view, opt);
+    const bool whole_frame = frame.y0 == 0 && frame.y1 == frame.height;
+    // Triangles are counted only by the band holding their first row, so band counts add up.
+    auto owns = [&](int32_t first_row) {
+        const int32_t first = clamp(first_row, int32_t{0}, frame.height - 1);
+        return frame.y0 <= first && first < frame.y1;
+    };
     for (size_t t = 0; t < mesh.tris.size(); ++t) {
         ++st.triangles_in;
         detail::for_each_piece(view, mesh, verts, t, st, [&](const ScreenVertex& a, const ScreenVertex& b,
                                                              const ScreenVertex& c) {
-            // Counted only by the band holding the triangle's first row, so band counts add up.
-            auto owner = [&] {
-                const int32_t first = clamp((min(a.y, min(b.y, c.y)) - bb.y_origin + kSubpixel - 1) >> kSubpixelBits,
-                                            int32_t{0}, frame.height - 1);
-                return frame.y0 <= first && first < frame.y1;
-            };
             const int32_t area = TriangleRaster::signed_area(a, b, c);
             if (area == 0) return;
             if (opt.cull && area > 0) {
-                if (frame.y0 == 0 && frame.y1 == frame.height) ++st.triangles_culled;  // whole frame: no test needed
-                else st.triangles_culled += owner();
+                st.triangles_culled += whole_frame ||
+                    owns((min(a.y, min(b.y, c.y)) - bb.y_origin + kSubpixel - 1) >> kSubpixelBits);
                 return;
             }
             if (detail::outside_band(a, b, c, bb) || detail::misses_all_centres(a, b, c, bb)) return;
             TriangleRaster tr;
             tr.setup(a, b, c, frame.width, frame.height);
-            st.triangles_drawn += owner();
+            st.triangles_drawn += whole_frame || owns(tr.first_row());  // first_row(): the same rounding
             const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
             if (opt.shade == Shade::depth) {
                 detail::DepthTestRows<kCount, Format, Depth, DepthShader<Format>> rows(frame, DepthShader<Format>(opt.depth_range), tr.dzdx());
