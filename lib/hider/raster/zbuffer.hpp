@@ -22,22 +22,24 @@ BandBounds band_bounds(const Frame& f) {
     return {f.y0 * kSubpixel + oy, (f.y1 - 1) * kSubpixel + oy, ox, (f.width - 1) * kSubpixel + ox, oy};
 }
 
-/// True when no pixel centre of the band can lie in the triangle's bounding box.
-inline bool outside_band(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const BandBounds& bb) {
-    const int32_t y_min = min(a.y, min(b.y, c.y)), y_max = max(a.y, max(b.y, c.y));
-    const int32_t x_min = min(a.x, min(b.x, c.x)), x_max = max(a.x, max(b.x, c.x));
-    return y_max < bb.y_first || y_min > bb.y_last || x_max < bb.x_first || x_min > bb.x_last;
+/// A triangle's bounding box in centre-relative subpixels.
+struct ScreenBox {
+    int32_t x_min, x_max, y_min, y_max;
+};
+inline ScreenBox screen_box(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    return {min<int32_t>(a.x, min<int32_t>(b.x, c.x)), max<int32_t>(a.x, max<int32_t>(b.x, c.x)),
+            min<int32_t>(a.y, min<int32_t>(b.y, c.y)), max<int32_t>(a.y, max<int32_t>(b.y, c.y))};
 }
 
-/// True when no pixel centre lies inside the triangle's bounding box (tiny triangles between centres);
-/// shifts and compares only, so such triangles skip the setup and its divisions.
-inline bool misses_all_centres(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const BandBounds& bb) {
-    const int32_t x_min = min(a.x, min(b.x, c.x)), x_max = max(a.x, max(b.x, c.x));
-    const int32_t y_min = min(a.y, min(b.y, c.y)), y_max = max(a.y, max(b.y, c.y));
+/// True when no pixel centre of the band lies in the box: the box is outside the band, or a tiny
+/// triangle's box falls between centres. Shifts and compares only, so such triangles skip the setup
+/// and its divisions.
+inline bool misses_band(const ScreenBox& box, const BandBounds& bb) {
+    if (box.y_max < bb.y_first || box.y_min > bb.y_last || box.x_max < bb.x_first || box.x_min > bb.x_last) return true;
     // First centre at or after the minimum: centres sit at origin + 16 k.
-    const int32_t cx = ((x_min - bb.x_first + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.x_first;
-    const int32_t cy = ((y_min - bb.y_origin + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.y_origin;
-    return cx > x_max || cy > y_max;
+    const int32_t cx = ((box.x_min - bb.x_first + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.x_first;
+    const int32_t cy = ((box.y_min - bb.y_origin + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.y_origin;
+    return cx > box.x_max || cy > box.y_max;
 }
 
 /// Calls piece(a, b, c) for each drawable triangle of mesh triangle t: the triangle itself, or the fan
@@ -130,7 +132,7 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
                     owns((min(a.y, min(b.y, c.y)) - bb.y_origin + kSubpixel - 1) >> kSubpixelBits);
                 return;
             }
-            if (detail::outside_band(a, b, c, bb) || detail::misses_all_centres(a, b, c, bb)) return;
+            if (detail::misses_band(detail::screen_box(a, b, c), bb)) return;
             TriangleRaster tr;
             tr.setup(a, b, c, frame.width, frame.height);
             st.triangles_drawn += whole_frame || owns(tr.first_row());  // first_row(): the same rounding

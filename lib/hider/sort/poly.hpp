@@ -48,7 +48,7 @@ inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVer
             const int32_t area = TriangleRaster::signed_area(a, b, c);
             if (area == 0) return;
             if (cull && area > 0) { ++st.triangles_culled; return; }
-            if (detail::outside_band(a, b, c, bb) || detail::misses_all_centres(a, b, c, bb)) return;
+            if (detail::misses_band(detail::screen_box(a, b, c), bb)) return;
             ScreenPoly p{{a, b, c}, 0, 0, 0, 0, 0, 0, static_cast<uint32_t>(t), kNotMoved,
                          static_cast<uint8_t>(area < 0 ? kPolyFront : 0)};
             update_extents(p);
