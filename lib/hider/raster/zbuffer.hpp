@@ -69,7 +69,10 @@ void for_each_piece(const View& view, const Mesh& mesh, Span<const ScreenVertex>
 }
 
 /// Row functor for TriangleRaster::scan: depth-tested spans, row pointers stepped by the stride.
-template <bool kCount, class Format, class Depth, class Shader>
+/// kPaired (colour and depth elements of one size, so a pixel's colour sits a fixed number of bytes
+/// from its depth): only the depth row is stepped and the span gets four register arguments.
+template <bool kCount, class Format, class Depth, class Shader,
+          bool kPaired = sizeof(typename Format::Pixel) == sizeof(Depth)>
 struct DepthTestRows {
     static constexpr bool kCountFragments = kCount;  ///< the default path counts nothing per row
     // Every member set explicitly: default initialisers made GCC memset the struct per triangle.
@@ -83,7 +86,7 @@ struct DepthTestRows {
     uint32_t written;
     int32_t stride;
 
-    void begin(int32_t y) {
+    __attribute__((always_inline)) void begin(int32_t y) {
         crow = frame->row(y);
         zrow = frame->depth_row(y);
         stride = frame->stride;
@@ -97,6 +100,57 @@ struct DepthTestRows {
         zrow += stride;
     }
 };
+
+template <bool kCount, class Format, class Depth, class Shader>
+struct DepthTestRows<kCount, Format, Depth, Shader, true> {
+    static constexpr bool kCountFragments = kCount;
+    using Pixel = typename Format::Pixel;
+    /// `span` (dz, colour offset, shader) stays with the caller: a copy of this functor then has no
+    /// member whose address escapes, so its fields live in registers.
+    DepthTestRows(const FrameView<Format, Depth>& f, const PairedSpan<Pixel, Shader>& s)
+        : frame(&f), span(&s), zrow(nullptr), written(0), stride(0) {}
+    const FrameView<Format, Depth>* frame;
+    const PairedSpan<Pixel, Shader>* span;
+    Depth* zrow;
+    uint32_t written;
+    int32_t stride;
+
+    __attribute__((always_inline)) void begin(int32_t y) {
+        zrow = frame->depth_row(y);
+        stride = frame->stride;
+    }
+    __attribute__((always_inline)) void operator()(int32_t x0, int32_t x1, uint32_t z) {
+        const int32_t n = x1 - x0;
+        if (n > 0) {
+            const uint32_t w = span_depth_test_paired<kCount>(zrow + x0, n, z, *span);
+            if constexpr (kCount) written += w;
+        }
+        zrow += stride;
+    }
+};
+
+/// Depth-tested rows [y_begin, y_end) of a set-up triangle with `shader`; returns the fragments
+/// (counted when kCount) and adds the pixels written to `written`.
+template <bool kCount, class Format, class Depth, class Shader>
+uint32_t scan_depth_tested(const TriangleRaster& tr, int32_t y_begin, int32_t y_end,
+                           const FrameView<Format, Depth>& frame, Shader shader, uint32_t& written) {
+    using Pixel = typename Format::Pixel;
+    if constexpr (sizeof(Pixel) == sizeof(Depth)) {
+        // Same stride, same element size: every pixel's colour is this many bytes after its depth.
+        const intptr_t offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(frame.color) -
+                                                      reinterpret_cast<uintptr_t>(frame.depth));
+        const PairedSpan<Pixel, Shader> span{tr.dzdx(), offset, shader};
+        DepthTestRows<kCount, Format, Depth, Shader> rows(frame, span);
+        const uint32_t fragments = tr.scan(y_begin, y_end, rows);
+        written += rows.written;
+        return fragments;
+    } else {
+        DepthTestRows<kCount, Format, Depth, Shader> rows(frame, shader, tr.dzdx());
+        const uint32_t fragments = tr.scan(y_begin, y_end, rows);
+        written += rows.written;
+        return fragments;
+    }
+}
 
 }  // namespace detail
 
@@ -138,15 +192,13 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
             st.triangles_drawn += whole_frame || owns(tr.first_row());  // first_row(): the same rounding
             const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
             if (opt.shade == Shade::depth) {
-                detail::DepthTestRows<kCount, Format, Depth, DepthShader<Format>> rows(frame, DepthShader<Format>(opt.depth_range), tr.dzdx());
-                st.fragments += tr.scan(y_begin, y_end, rows);
-                st.pixels_written += rows.written;
+                st.fragments += detail::scan_depth_tested<kCount>(tr, y_begin, y_end, frame,
+                                                                  DepthShader<Format>(opt.depth_range), st.pixels_written);
                 return;
             }
-            detail::DepthTestRows<kCount, Format, Depth, FlatShader<Pixel>> rows(
-                frame, FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))}, tr.dzdx());
-            st.fragments += tr.scan(y_begin, y_end, rows);
-            st.pixels_written += rows.written;
+            st.fragments += detail::scan_depth_tested<kCount>(
+                tr, y_begin, y_end, frame, FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))},
+                st.pixels_written);
         });
     }
     return st;
