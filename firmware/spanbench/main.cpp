@@ -1,5 +1,5 @@
-// spanbench firmware (big machine): one call of the z-buffer inner span, span_depth_test<false> (RGB565
-// pixels, uint16_t depth, flat colour), on pixels [0, kPixels) of a row, bracketed by bench_begin() /
+// spanbench firmware (big machine): one call of the z-buffer inner span as draw_zbuffer runs it for RGB565
+// pixels and uint16_t depth, span_depth_test_paired<false> (flat colour), on pixels [0, kPixels) of a row, bracketed by bench_begin() /
 // bench_end(). The case (HIDER_SPANBENCH_PIXELS, HIDER_SPANBENCH_PASS) is fixed per ELF by CMake, so
 // the plugin's one region count is one call; hider-bench targets derives instructions per pixel as
 // (count at 320 px - count at 1 px) / 319 for each of "all fragments pass" and "none passes".
@@ -27,7 +27,7 @@ uint16_t g_color[kRowPixels];
 uint16_t g_depth[kRowPixels];
 
 // Every argument of the measured call is read through a volatile, so the compiler knows neither the
-// values nor the buffers: it cannot specialise span_depth_test for them (constant propagation), hoist
+// values nor the buffers: it cannot specialise the span for them (constant propagation), hoist
 // the work or drop the stores. The call itself compiles as in the rasterizer (one call site, .isra).
 uint16_t* volatile g_color_row = g_color;
 uint16_t* volatile g_depth_row = g_depth;
@@ -69,9 +69,11 @@ int main() {
     const int32_t x1 = g_x1;
     const uint32_t z_q32 = g_z_q32, dz_q32 = g_dz_q32;
     const hider::FlatShader<uint16_t> shader{g_shade};
+    const hider::PairedSpan<uint16_t, hider::FlatShader<uint16_t>> span{
+        dz_q32, static_cast<intptr_t>(reinterpret_cast<uintptr_t>(crow) - reinterpret_cast<uintptr_t>(zrow)), shader};
 
     bench_begin();
-    const uint32_t written = hider::span_depth_test<false>(crow, zrow, 0, x1, z_q32, dz_q32, shader);
+    const uint32_t written = hider::span_depth_test_paired<false>(zrow, x1, z_q32, span);
     bench_end();
     g_written = written;
 
@@ -79,7 +81,7 @@ int main() {
         sh::print("spanbench: the row is not what the depth test should give\n");
         return 1;
     }
-    sh::print("spanbench: span_depth_test<false>, RGB565 + 16-bit depth, ");
+    sh::print("spanbench: span_depth_test_paired<false>, RGB565 + 16-bit depth, ");
     sh::print_u32(static_cast<uint32_t>(kPixels));
     sh::print(kPass ? " px, all pass\n" : " px, none pass\n");
     return 0;

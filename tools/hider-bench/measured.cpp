@@ -29,8 +29,11 @@ extern "C" __attribute__((noinline)) void hider_bench_span(const hider::tool::be
     const FlatShader<uint16_t> shader{job->pixel};
     if (job->depth32 != nullptr) {
         (void)span_depth_test<false>(job->color, job->depth32, job->x0, job->x1, job->z_q32, job->dz_q32, shader);
-    } else {
-        (void)span_depth_test<false>(job->color, job->depth16, job->x0, job->x1, job->z_q32, job->dz_q32, shader);
+    } else {  // what draw_zbuffer runs for RGB565 + 16-bit depth
+        const PairedSpan<uint16_t, FlatShader<uint16_t>> span{
+            job->dz_q32,
+            static_cast<intptr_t>(reinterpret_cast<uintptr_t>(job->color) - reinterpret_cast<uintptr_t>(job->depth16)), shader};
+        (void)span_depth_test_paired<false>(job->depth16 + job->x0, job->x1 - job->x0, job->z_q32, span);
     }
 }
 

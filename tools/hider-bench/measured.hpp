@@ -23,7 +23,8 @@ struct FrameJob {
     FrameStats stats{};          ///< out: draw_zbuffer result
 };
 
-/// One call of span_depth_test<false> on pixels [x0, x1) of a row with a flat RGB565 colour.
+/// One call of the z-buffer span on pixels [x0, x1) of a row with a flat RGB565 colour (the paired span
+/// for 16-bit depth, span_depth_test<false> for 32-bit).
 struct SpanJob {
     uint16_t* color = nullptr;
     uint16_t* depth16 = nullptr;  ///< used when depth32 is null
@@ -54,7 +55,7 @@ struct NewellJob {
 /// make_view, project_vertices, clear (colour + depth), draw_zbuffer<false>: exactly one frame.
 extern "C" __attribute__((noinline)) void hider_bench_frame(hider::tool::bench::FrameJob* job);
 
-/// One span_depth_test<false> call as described by `job`.
+/// One z-buffer span call as described by `job`.
 extern "C" __attribute__((noinline)) void hider_bench_span(const hider::tool::bench::SpanJob* job);
 
 /// painter_order(job->polys, DepthKey::farthest, ...) into job->order.

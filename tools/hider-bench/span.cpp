@@ -1,4 +1,5 @@
-// hider-bench span: Ir per pixel of the z-buffer inner loop (span_depth_test<false>) on this host.
+// hider-bench span: Ir per pixel of the z-buffer inner loop on this host (span_depth_test_paired<false> for
+// RGB565 + 16-bit depth, span_depth_test<false> for 32-bit depth).
 // Each case runs `span-run` under callgrind: the row is reset outside the measured call, then one
 // hider_bench_span call draws it. Per pixel = (Ir of a 320-pixel call - Ir of a 1-pixel call) / 319,
 // which removes the call and setup overhead (the span requires x0 < x1, so 1 pixel is the baseline).
@@ -12,7 +13,7 @@ namespace hider::tool::bench {
 namespace {
 
 constexpr long kRowPixels = 320;
-constexpr long kBasePixels = 1;  // the smallest span: span_depth_test requires x0 < x1
+constexpr long kBasePixels = 1;  // the smallest span: the spans require x0 < x1
 constexpr long kReps = 1000;
 constexpr uint16_t kPixel = 0xF81F;
 
@@ -92,7 +93,7 @@ int span_command(const Args& args) {
         else fail("span: unknown argument '" + args[i] + "'");
     }
     valgrind = find_valgrind(valgrind);
-    std::printf("span_depth_test<false> on %s: RGB565 row, flat colour, callgrind Ir per call over %ld calls;\n"
+    std::printf("z-buffer span on %s: RGB565 row, flat colour, callgrind Ir per call over %ld calls;\n"
                 "Ir/pixel = (Ir/call at %ld px - Ir/call at %ld px) / %ld.\n\n",
                 kHost, kReps, kRowPixels, kBasePixels, kRowPixels - kBasePixels);
     std::printf("| depth | fragments | Ir/call, %ld px | Ir/call, %ld px | Ir/pixel |\n", kRowPixels, kBasePixels);

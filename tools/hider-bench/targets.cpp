@@ -158,7 +158,8 @@ int targets_command(const Args& args) {
                 "  divides that mean by the covered pixels of frame 0.\n"
                 "- covered px from the host (hider-bench frame code, same view, 16-bit depth): 320x240 %" PRIu32
                 ", 160x128 %" PRIu32 ".\n"
-                "- span: span_depth_test<false>, RGB565 + 16-bit depth, flat colour (firmware/spanbench); instr/px =\n"
+                "- span: span_depth_test_paired<false> (the z-buffer's span for RGB565 + 16-bit depth), flat colour\n"
+                "  (firmware/spanbench); instr/px =\n"
                 "  (count of a 320-px call - count of a 1-px call) / 319.\n",
                 spin_frames, large.covered, small.covered);
     if (!missing.empty()) {
