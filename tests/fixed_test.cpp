@@ -265,7 +265,15 @@ TEST_CASE("the ARMv6-M 64-bit products by parts equal the native products") {
         const uint64_t ub = rng() >> (rng() % 64);
         const auto ua = static_cast<uint32_t>(rng());
         CHECK(hider::mul_u32_u64_by_parts(ua, ub) == ua * ub);  // modulo 2^64, like the native product
+        const auto a33 = static_cast<int64_t>(rng()) >> 32;     // |a| <= 2^31 ...
+        const auto a33b = a33 * 2 + static_cast<int64_t>(rng() & 1);  // ... and up to 2^32 - 1
+        const auto b16 = static_cast<int32_t>(static_cast<int64_t>(rng()) >> 49);  // |b| <= 2^14
+        CHECK(hider::mul_i33_i16_by_parts(a33b, b16) == a33b * b16);
+        CHECK(hider::mul_i33_i16(a33b, b16) == a33b * b16);
     }
+    for (int64_t a : {-(int64_t{1} << 32) + 1, (int64_t{1} << 32) - 1, int64_t{-1}, int64_t{65535}, int64_t{-65536}})
+        for (int32_t b : {-32767, 32767, -1, 0, 1})
+            CHECK(hider::mul_i33_i16_by_parts(a, b) == a * b);
     CHECK(hider::mul_i64_i32_by_parts(-(int64_t{1} << 32) + 1, INT32_MIN) == (-(int64_t{1} << 32) + 1) * INT32_MIN);
     CHECK(hider::mul_i64_i32_by_parts((int64_t{1} << 31) - 1, INT32_MIN) == ((int64_t{1} << 31) - 1) * INT32_MIN);
     CHECK(hider::mul_i64_i32_by_parts(-1, -1) == 1);

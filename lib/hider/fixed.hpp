@@ -109,6 +109,23 @@ constexpr int64_t mul_i64_i32(int64_t a, int32_t b) {
 #endif
 }
 
+/// a * b for |a| < 2^32 and |b| < 2^15 from two 32-bit products (a = ah 2^16 + al; both ah b and al b
+/// fit int32): the depth-plane products of a triangle's setup, on ARMv6-M without a wide multiply.
+constexpr int64_t mul_i33_i16_by_parts(int64_t a, int32_t b) {
+    const int32_t ah = static_cast<int32_t>(a >> 16);     // |ah| <= 2^16
+    const int32_t al = static_cast<int32_t>(a & 0xFFFF);  // [0, 2^16)
+    return int64_t{ah * b} * 65536 + al * b;
+}
+
+/// a * b for |a| < 2^32 and |b| < 2^15.
+constexpr int64_t mul_i33_i16(int64_t a, int32_t b) {
+#if defined(__ARM_ARCH_6M__)
+    return mul_i33_i16_by_parts(a, b);
+#else
+    return a * b;
+#endif
+}
+
 /// a * b modulo 2^64 for unsigned a from 32-bit parts (see mul_i64_i32_by_parts).
 constexpr uint64_t mul_u32_u64_by_parts(uint32_t a, uint64_t b) {
     return mul_wide_u(a, static_cast<uint32_t>(b)) + (uint64_t{a * static_cast<uint32_t>(b >> 32)} << 32);

@@ -117,9 +117,9 @@ private:
         const int32_t dx2 = x_[2] - x_[0], dy2 = y_[2] - y_[0];
         const int64_t dz1 = int64_t{v[1]->z} - v[0]->z, dz2 = int64_t{v[2]->z} - v[0]->z;
         // Plane through the vertices: z = z0 + p (x - x0) + q (y - y0); per pixel = 16 p, 16 q.
-        // |dz| < 2^32 and |dx|, |dy| < 2^15: every product fits 48 bits.
-        const int64_t npx = (mul_i64_i32(dz1, dy2) - mul_i64_i32(dz2, dy1)) * kSubpixel;
-        const int64_t nqy = (mul_i64_i32(dz2, dx1) - mul_i64_i32(dz1, dx2)) * kSubpixel;
+        // |dz| < 2^32 and |dx|, |dy| < 2^15 (kCoordLimit): every product fits 47 bits.
+        const int64_t npx = (mul_i33_i16(dz1, dy2) - mul_i33_i16(dz2, dy1)) * kSubpixel;
+        const int64_t nqy = (mul_i33_i16(dz2, dx1) - mul_i33_i16(dz1, dx2)) * kSubpixel;
         int64_t px = 0, qy = 0;
         if (kSlow64BitDivide) {  // 64/32 divisions (on ARMv6-M one reciprocal for both)
             const SharedDivisor32 d(static_cast<uint32_t>(area));
