@@ -10,7 +10,7 @@ namespace hider {
 
 /// Exact 32x32 -> 64-bit unsigned product from four 16x16 products (what ARMv6-M uses: it has no
 /// long multiply instruction, and __aeabi_lmul is a full 64x64 routine).
-constexpr uint64_t mul_wide_u_by_parts(uint32_t a, uint32_t b) {
+__attribute__((always_inline)) constexpr uint64_t mul_wide_u_by_parts(uint32_t a, uint32_t b) {
     const uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
     const uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
     const uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu);
