@@ -5,6 +5,7 @@
 // stepped by dz/dx per pixel and dz/dy per row (Giesen, "Triangle rasterization in practice").
 #pragma once
 #include <hider/fixed.hpp>
+#include <hider/raster/row_kernel.hpp>
 
 namespace hider {
 
@@ -81,7 +82,9 @@ public:
         const bool left = min(x_[0], min(x_[1], x_[2])) < x_origin_;
         const bool right = max(x_[0], max(x_[1], x_[2])) > x_origin_ + (width_ - 1) * kSubpixel;
         if (left) return right ? scan_rows<true, true>(y0, y1, rows_fn) : scan_rows<true, false>(y0, y1, rows_fn);
-        return right ? scan_rows<false, true>(y0, y1, rows_fn) : scan_rows<false, false>(y0, y1, rows_fn);
+        if (right) return scan_rows<false, true>(y0, y1, rows_fn);
+        if constexpr (RowFn::kRowKernel) return scan_kernel(y0, y1, rows_fn);
+        return scan_rows<false, false>(y0, y1, rows_fn);
     }
 
     /// Convenience form of scan(): fn(y, x0, x1, z) for each row with a non-empty span.
@@ -96,6 +99,7 @@ private:
     template <class Fn>
     struct SpanAdapter {
         static constexpr bool kCountFragments = true;
+        static constexpr bool kRowKernel = false;
         Fn* f;
         int32_t y;
         void begin(int32_t first) { y = first; }
@@ -142,6 +146,38 @@ private:
     /// Depth at pixel (px, py): exact modulo 2^32, equal to what stepping produces.
     uint32_t depth_at(int32_t px, int32_t py) const {
         return z_ref_ + dzdx_ * static_cast<uint32_t>(px - ref_px_) + dzdy_ * static_cast<uint32_t>(py - ref_py_);
+    }
+
+    /// scan() through the row functor's RowKernel (row_kernel.hpp) for triangles inside the frame's
+    /// columns: the walkers fill the kernel's edges, then one kernel run per half of the triangle.
+    /// Same rows, spans and depths as scan_rows<false, false>.
+    template <class RowFn>
+    uint32_t scan_kernel(int32_t y0, int32_t y1, RowFn& rows_fn) const {
+        rows_fn.begin(y0);
+        RowKernel k;
+        rows_fn.fill_kernel(k);
+        const int32_t y_mid = clamp(row_mid_, y0, y1);
+        const Walker lw = walker(edge_index(top_, bottom_), y0);
+        const Walker sw = walker(y0 < y_mid ? edge_index(top_, mid_) : edge_index(mid_, bottom_), y0);
+        const bool long_left = lw.left;
+        set_kernel_left(k, long_left ? lw : sw);
+        set_kernel_right(k, long_left ? sw : lw);
+        k.dzdx = dzdx_;
+        if (y0 < y_mid) {
+            k.rows = y_mid - y0;
+            run_row_kernel(k);
+            if (y_mid < y1) {  // the short side continues along the other short edge
+                const Walker w = walker(edge_index(mid_, bottom_), y_mid);
+                if (long_left) set_kernel_right(k, w);
+                else set_kernel_left(k, w);
+                k.rows = y1 - y_mid;
+                run_row_kernel(k);
+            }
+        } else {
+            k.rows = y1 - y0;
+            run_row_kernel(k);
+        }
+        return 0;
     }
 
     /// The row loop of scan(). kClipLeft: spans may start left of pixel 0, so the depth at column 0 is
@@ -229,6 +265,14 @@ private:
             w.z = w.dz_row = 0;
         }
         return w;
+    }
+
+    /// The kernel's left (with depth) and right edge from walkers.
+    static void set_kernel_left(RowKernel& k, const Walker& w) {
+        k.lpx = w.px; k.lg = w.g; k.la = w.a; k.lm = w.m; k.lq = w.q; k.lz = w.z; k.ldz = w.dz_row;
+    }
+    static void set_kernel_right(RowKernel& k, const Walker& w) {
+        k.rpx = w.px; k.rg = w.g; k.ra = w.a; k.rm = w.m; k.rq = w.q;
     }
 
     // No default initialisers: setup() writes every member, and a per-triangle memset costs real time.

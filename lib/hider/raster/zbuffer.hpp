@@ -75,6 +75,7 @@ template <bool kCount, class Format, class Depth, class Shader,
           bool kPaired = sizeof(typename Format::Pixel) == sizeof(Depth)>
 struct DepthTestRows {
     static constexpr bool kCountFragments = kCount;  ///< the default path counts nothing per row
+    static constexpr bool kRowKernel = false;
     // Every member set explicitly: default initialisers made GCC memset the struct per triangle.
     DepthTestRows(const FrameView<Format, Depth>& f, Shader s, uint32_t dz_q32)
         : frame(&f), shader(s), dz(dz_q32), crow(nullptr), zrow(nullptr), written(0), stride(0) {}
@@ -115,6 +116,7 @@ struct DepthTestRows<kCount, Format, Depth, Shader, true> {
     uint32_t written;
     int32_t stride;
 
+    static constexpr bool kRowKernel = false;
     __attribute__((always_inline)) void begin(int32_t y) {
         zrow = frame->depth_row(y);
         stride = frame->stride;
@@ -129,6 +131,44 @@ struct DepthTestRows<kCount, Format, Depth, Shader, true> {
     }
 };
 
+/// Flat-coloured rows of 16-bit pixels over 16-bit depth without fragment counting: TriangleRaster
+/// runs triangles inside the frame's columns through the RowKernel (row_kernel.hpp), the rest
+/// through operator() like the other functors.
+template <class Format>
+struct FlatRows16 {
+    static constexpr bool kCountFragments = false;
+    static constexpr bool kRowKernel = kUseRowKernel;
+    using Pixel = typename Format::Pixel;
+    FlatRows16(const FrameView<Format, uint16_t>& f, const PairedSpan<Pixel, FlatShader<Pixel>>& s)
+        : frame(&f), span(&s), zrow(nullptr), written(0), stride(0) {}
+    const FrameView<Format, uint16_t>* frame;
+    const PairedSpan<Pixel, FlatShader<Pixel>>* span;
+    uint16_t* zrow;
+    uint32_t written;  ///< stays 0 (no counting)
+    int32_t stride;
+
+    __attribute__((always_inline)) void begin(int32_t y) {
+        zrow = frame->depth_row(y);
+        stride = frame->stride;
+    }
+    __attribute__((always_inline)) void operator()(int32_t x0, int32_t x1, uint32_t z) {
+        const int32_t n = x1 - x0;
+        if (n > 0) (void)span_depth_test_paired<false>(zrow + x0, n, z, *span);
+        zrow += stride;
+    }
+    /// Fills k's row and span fields for rows from begin()'s row on (the caller fills edges and rows).
+    void fill_kernel(RowKernel& k) const {
+        k.zrow = zrow;
+        k.stride_bytes = stride * static_cast<int32_t>(sizeof(uint16_t));
+        k.dz = span->dz_q32;
+        k.color_offset = span->color_offset;
+        k.color = span->shader.color;
+    }
+};
+
+template <class Shader> struct is_flat_shader { static constexpr bool value = false; };
+template <class Pixel> struct is_flat_shader<FlatShader<Pixel>> { static constexpr bool value = true; };
+
 /// Depth-tested rows [y_begin, y_end) of a set-up triangle with `shader`; returns the fragments
 /// (counted when kCount) and adds the pixels written to `written`.
 template <bool kCount, class Format, class Depth, class Shader>
@@ -140,10 +180,15 @@ uint32_t scan_depth_tested(const TriangleRaster& tr, int32_t y_begin, int32_t y_
         const intptr_t offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(frame.color) -
                                                       reinterpret_cast<uintptr_t>(frame.depth));
         const PairedSpan<Pixel, Shader> span{tr.dzdx(), offset, shader};
-        DepthTestRows<kCount, Format, Depth, Shader> rows(frame, span);
-        const uint32_t fragments = tr.scan(y_begin, y_end, rows);
-        written += rows.written;
-        return fragments;
+        if constexpr (!kCount && sizeof(Depth) == 2 && is_flat_shader<Shader>::value) {
+            FlatRows16<Format> rows(frame, span);
+            return tr.scan(y_begin, y_end, rows);
+        } else {
+            DepthTestRows<kCount, Format, Depth, Shader> rows(frame, span);
+            const uint32_t fragments = tr.scan(y_begin, y_end, rows);
+            written += rows.written;
+            return fragments;
+        }
     } else {
         DepthTestRows<kCount, Format, Depth, Shader> rows(frame, shader, tr.dzdx());
         const uint32_t fragments = tr.scan(y_begin, y_end, rows);
