@@ -1,0 +1,93 @@
+// Random row-kernel cases shared by the kernelcheck firmware and its host twin: each case is a
+// RowKernel state (edges that stay inside a 64-pixel row for its rows, random steps, corrections and
+// depths) over depth and colour rows filled with random values. run_cases() runs every case through
+// `run` and folds the buffers and the final states into one 32-bit digest per case.
+#pragma once
+#include <hider/raster/row_kernel.hpp>
+
+namespace kernelcheck {
+
+constexpr int kCases = 400;
+constexpr int32_t kWidth = 64;
+constexpr int32_t kMaxRows = 9;
+constexpr uint32_t kSeed = 0x9E3779B9u;
+
+/// xorshift32: the same sequence on every target.
+struct Rng {
+    uint32_t s;
+    uint32_t next() {
+        s ^= s << 13;
+        s ^= s >> 17;
+        s ^= s << 5;
+        return s;
+    }
+    int32_t range(int32_t lo, int32_t hi) { return lo + static_cast<int32_t>(next() % static_cast<uint32_t>(hi - lo + 1)); }
+};
+
+/// Buffers of one case: depth and colour rows share the stride, colour sits `offset` bytes after depth.
+struct Buffers {
+    uint16_t depth[kMaxRows * kWidth];
+    uint16_t color[kMaxRows * kWidth];
+};
+
+/// The next case of the sequence: fills `b` and returns the kernel state (zrow = b.depth).
+inline hider::RowKernel make_case(Rng& rng, Buffers& b) {
+    hider::RowKernel k{};
+    k.lz = rng.next();
+    // Half the cases hold depths near the span's own (z >> 16 +- 3): ties, which must keep the stored pixel.
+    const bool near = (rng.next() & 1u) != 0;
+    for (int32_t i = 0; i < kMaxRows * kWidth; ++i) {
+        b.depth[i] = near ? static_cast<uint16_t>((k.lz >> 16) + static_cast<uint32_t>(rng.range(-3, 3)))
+                          : static_cast<uint16_t>(rng.next());
+        b.color[i] = static_cast<uint16_t>(rng.next());
+    }
+    k.rows = rng.range(1, kMaxRows - 1);
+    // |q| <= 2 and one correction a row: px moves by -3 .. +2 a row, so over at most 7 steps a left edge
+    // from [21, 38] stays >= 0 and a right edge from [20, 50] <= 64: every pixel touched is in the row.
+    k.la = rng.range(1, 1 << 19);
+    k.lm = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.la));
+    k.lg = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.la));
+    k.lq = rng.range(-2, 2);
+    k.lpx = rng.range(21, 38);
+    k.ra = rng.range(1, 1 << 19);
+    k.rm = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.ra));
+    k.rg = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.ra));
+    k.rq = rng.range(-2, 2);
+    k.rpx = rng.range(20, 50);  // empty, one-pixel and long spans
+    k.dzdx = rng.next() >> rng.range(8, 31);
+    k.ldz = near ? rng.next() >> rng.range(12, 31) : rng.next();
+    k.dz = k.dzdx;
+    k.stride_bytes = kWidth * 2;
+    k.zrow = b.depth;
+    k.color_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(b.color) - reinterpret_cast<uintptr_t>(b.depth));
+    k.color = rng.next() & 0xFFFFu;
+    return k;
+}
+
+/// FNV-1a over the buffers and the final edge state (zrow as a row count, so the digest is address-free).
+inline uint32_t digest(const Buffers& b, const hider::RowKernel& k) {
+    uint32_t h = 2166136261u;
+    auto add = [&h](uint32_t v) {
+        for (int i = 0; i < 4; ++i) { h ^= (v >> (8 * i)) & 0xFFu; h *= 16777619u; }
+    };
+    for (int32_t i = 0; i < kMaxRows * kWidth; ++i) add(uint32_t{b.depth[i]} | (uint32_t{b.color[i]} << 16));
+    const uint32_t rows_done = static_cast<uint32_t>(reinterpret_cast<uintptr_t>(k.zrow) - reinterpret_cast<uintptr_t>(b.depth)) /
+                               static_cast<uint32_t>(k.stride_bytes);
+    const uint32_t fields[] = {static_cast<uint32_t>(k.lpx), static_cast<uint32_t>(k.lg), k.lz,
+                               static_cast<uint32_t>(k.rpx), static_cast<uint32_t>(k.rg), rows_done};
+    for (uint32_t f : fields) add(f);
+    return h;
+}
+
+/// Digest of every case run through `run` (a function of RowKernel&), into out[kCases].
+template <class Run>
+void run_cases(Run&& run, Buffers& b, uint32_t* out) {
+    Rng rng{kSeed};
+    for (int c = 0; c < kCases; ++c) {
+        hider::RowKernel k = make_case(rng, b);
+        run(k);
+        out[c] = digest(b, k);
+    }
+}
+
+}  // namespace kernelcheck
