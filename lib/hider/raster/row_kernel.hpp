@@ -133,19 +133,110 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
 }
 #endif
 
-/// Whether the z-buffer uses the kernel on this target. Not on ARMv6-M: with eight low registers the
-/// portable loop spills more than the per-row span call it replaces (measured: torus 320x240 on the
-/// Cortex-M0+ 2,307,935 with the span call, 2,467,354 through the kernel).
 #if defined(__ARM_ARCH_6M__)
-constexpr bool kUseRowKernel = false;
-#else
-constexpr bool kUseRowKernel = true;
+/// run_row_kernel_portable() in Thumb-1 (Cortex-M0/M0+: eight low registers, no conditional execution).
+/// Between rows r0 holds the state, r1..r5 lpx lg lz rpx rg, r12 the state again, r10 zrow, r11 the
+/// zrow that ends the run, lr the stride; the constants are loaded where used. A span parks lpx..rpx in
+/// the state with one store-multiple; its pixel loop: r1 x (bytes), r3 z, r6 depth row, r2 colour row,
+/// r4 colour, r9 dz, r8 end (10 instructions a written pixel, 8 a rejected one).
+__attribute__((naked, noinline)) inline void run_row_kernel_v6m(RowKernel*) {
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "push   {r4-r7, lr}\n\t"
+        "mov    r4, r8\n\t"
+        "mov    r5, r9\n\t"
+        "mov    r6, r10\n\t"
+        "mov    r7, r11\n\t"
+        "push   {r4-r7}\n\t"
+        "mov    r12, r0\n\t"
+        "ldr    r1, [r0, #56]\n\t"        // stride bytes
+        "mov    lr, r1\n\t"
+        "ldr    r2, [r0, #60]\n\t"        // zrow
+        "mov    r10, r2\n\t"
+        "ldr    r3, [r0, #20]\n\t"        // rows
+        "muls   r3, r1, r3\n\t"
+        "adds   r3, r3, r2\n\t"
+        "mov    r11, r3\n\t"              // zrow after the last row
+        "ldm    r0!, {r1-r5}\n\t"         // lpx lg lz rpx rg
+        "mov    r0, r12\n"
+        "1:\n\t"                          // row
+        "cmp    r1, r4\n\t"
+        "bge    3f\n\t"                   // empty span
+        "stm    r0!, {r1-r4}\n\t"         // park lpx lg lz rpx; r0 = state + 16
+        "lsls   r1, r1, #1\n\t"           // x in bytes
+        "lsls   r4, r4, #1\n\t"
+        "mov    r8, r4\n\t"               // end in bytes
+        "ldr    r4, [r0, #48]\n\t"        // dz (offset 64)
+        "mov    r9, r4\n\t"
+        "ldr    r4, [r0, #56]\n\t"        // colour (offset 72)
+        "ldr    r2, [r0, #52]\n\t"        // colour offset (offset 68)
+        "mov    r6, r10\n\t"              // depth row
+        "adds   r2, r2, r6\n"              // colour row
+        "2:\n\t"                          // pixel
+        "ldrh   r7, [r6, r1]\n\t"
+        "lsrs   r0, r3, #16\n\t"
+        "cmp    r7, r0\n\t"
+        "bls    4f\n\t"                   // stored depth <= ours: keep it
+        "strh   r0, [r6, r1]\n\t"
+        "strh   r4, [r2, r1]\n"
+        "4:\n\t"
+        "add    r3, r9\n\t"
+        "adds   r1, r1, #2\n\t"
+        "cmp    r1, r8\n\t"
+        "bne    2b\n\t"
+        "mov    r0, r12\n\t"
+        "ldm    r0!, {r1-r4}\n\t"         // lpx lg lz rpx back
+        "mov    r0, r12\n"
+        "3:\n\t"                          // left edge: g += m, px += q, z += dz_row, then correct
+        "ldr    r6, [r0, #28]\n\t"        // lm
+        "adds   r2, r2, r6\n\t"
+        "ldr    r6, [r0, #32]\n\t"        // lq
+        "adds   r1, r1, r6\n\t"
+        "ldr    r6, [r0, #36]\n\t"        // ldz
+        "adds   r3, r3, r6\n\t"
+        "ldr    r6, [r0, #24]\n\t"        // la
+        "cmp    r2, r6\n\t"
+        "blt    5f\n\t"
+        "subs   r2, r2, r6\n\t"
+        "subs   r1, r1, #1\n\t"
+        "ldr    r6, [r0, #40]\n\t"        // dzdx
+        "subs   r3, r3, r6\n"
+        "5:\n\t"                          // right edge
+        "ldr    r6, [r0, #48]\n\t"        // rm
+        "adds   r5, r5, r6\n\t"
+        "ldr    r6, [r0, #52]\n\t"        // rq
+        "adds   r4, r4, r6\n\t"
+        "ldr    r6, [r0, #44]\n\t"        // ra
+        "cmp    r5, r6\n\t"
+        "blt    6f\n\t"
+        "subs   r5, r5, r6\n\t"
+        "subs   r4, r4, #1\n"
+        "6:\n\t"                          // next depth row
+        "add    r10, lr\n\t"
+        "cmp    r10, r11\n\t"
+        "bne    1b\n\t"
+        "stm    r0!, {r1-r5}\n\t"         // lpx lg lz rpx rg
+        "mov    r0, r12\n\t"
+        "mov    r1, r10\n\t"
+        "str    r1, [r0, #60]\n\t"        // zrow
+        "pop    {r4-r7}\n\t"
+        "mov    r8, r4\n\t"
+        "mov    r9, r5\n\t"
+        "mov    r10, r6\n\t"
+        "mov    r11, r7\n\t"
+        "pop    {r4-r7, pc}\n");
+}
 #endif
 
-/// Runs k.rows >= 1 rows of the kernel (Thumb-2 on ARMv7-M, else the portable loop).
+/// Whether the z-buffer uses the kernel (all targets; a switch for measuring the per-row span path).
+constexpr bool kUseRowKernel = true;
+
+/// Runs k.rows >= 1 rows of the kernel (Thumb-2 on ARMv7-M, Thumb-1 on ARMv6-M, else the portable loop).
 inline void run_row_kernel(RowKernel& k) {
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
     run_row_kernel_v7m(&k);
+#elif defined(__ARM_ARCH_6M__)
+    run_row_kernel_v6m(&k);
 #else
     run_row_kernel_portable(k);
 #endif
