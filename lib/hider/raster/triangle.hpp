@@ -40,10 +40,17 @@ public:
     /// accepted; front() tells which one it was. Cost: two 64-bit divisions (on 32-bit targets one
     /// 64/32 division for a reciprocal of the area, then multiplies).
     bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t width, int32_t height) {
+        return setup(a, b, c, signed_area(a, b, c), width, height);
+    }
+    /// setup() with the caller's signed_area(a, b, c).
+    bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, int32_t width,
+               int32_t height) {
         row_top_ = row_mid_ = row_bottom_ = 0;  // an empty row range if we return early
         front_ = false;
-        int32_t area = signed_area(a, b, c);
-        if (area == 0) return false;
+        if (area == 0) {
+            dzdx_ = 0;
+            return false;
+        }
         front_ = area < 0;
         const ScreenVertex* v[3] = {&a, &b, &c};
         if (area < 0) { swap_values(v[1], v[2]); area = -area; }  // traverse clockwise on the image

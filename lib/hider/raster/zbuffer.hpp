@@ -220,30 +220,47 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
         const int32_t first = clamp(first_row, int32_t{0}, frame.height - 1);
         return frame.y0 <= first && first < frame.y1;
     };
+    // One drawable triangle with its signed area (< 0: front face), culling already decided.
+    auto draw = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, size_t t) {
+        if (detail::misses_band(detail::screen_box(a, b, c), bb)) return;
+        TriangleRaster tr;
+        tr.setup(a, b, c, area, frame.width, frame.height);
+        st.triangles_drawn += whole_frame || owns(tr.first_row());  // first_row(): the same rounding
+        const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
+        if (opt.shade == Shade::depth) {
+            st.fragments += detail::scan_depth_tested<kCount>(tr, y_begin, y_end, frame,
+                                                              DepthShader<Format>(opt.depth_range), st.pixels_written);
+            return;
+        }
+        st.fragments += detail::scan_depth_tested<kCount>(
+            tr, y_begin, y_end, frame, FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))},
+            st.pixels_written);
+    };
+    // False for zero area and culled faces (counted).
+    auto keep = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area) {
+        if (area == 0) return false;
+        if (opt.cull && area > 0) {
+            st.triangles_culled += whole_frame ||
+                owns((min(a.y, min(b.y, c.y)) - bb.y_origin + kSubpixel - 1) >> kSubpixelBits);
+            return false;
+        }
+        return true;
+    };
     for (size_t t = 0; t < mesh.tris.size(); ++t) {
         ++st.triangles_in;
-        detail::for_each_piece(view, mesh, verts, t, st, [&](const ScreenVertex& a, const ScreenVertex& b,
-                                                             const ScreenVertex& c) {
+        const Tri& tri = mesh.tris[t];
+        const ScreenVertex& a = verts[tri.v[0]];
+        const ScreenVertex& b = verts[tri.v[1]];
+        const ScreenVertex& c = verts[tri.v[2]];
+        if ((a.outside | b.outside | c.outside) == 0) {  // the common case, without a call for culled faces
             const int32_t area = TriangleRaster::signed_area(a, b, c);
-            if (area == 0) return;
-            if (opt.cull && area > 0) {
-                st.triangles_culled += whole_frame ||
-                    owns((min(a.y, min(b.y, c.y)) - bb.y_origin + kSubpixel - 1) >> kSubpixelBits);
-                return;
-            }
-            if (detail::misses_band(detail::screen_box(a, b, c), bb)) return;
-            TriangleRaster tr;
-            tr.setup(a, b, c, frame.width, frame.height);
-            st.triangles_drawn += whole_frame || owns(tr.first_row());  // first_row(): the same rounding
-            const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
-            if (opt.shade == Shade::depth) {
-                st.fragments += detail::scan_depth_tested<kCount>(tr, y_begin, y_end, frame,
-                                                                  DepthShader<Format>(opt.depth_range), st.pixels_written);
-                return;
-            }
-            st.fragments += detail::scan_depth_tested<kCount>(
-                tr, y_begin, y_end, frame, FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))},
-                st.pixels_written);
+            if (keep(a, b, c, area)) draw(a, b, c, area, t);
+            continue;
+        }
+        detail::for_each_piece(view, mesh, verts, t, st, [&](const ScreenVertex& pa, const ScreenVertex& pb,
+                                                             const ScreenVertex& pc) {
+            const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
+            if (keep(pa, pb, pc, area)) draw(pa, pb, pc, area, t);
         });
     }
     return st;
