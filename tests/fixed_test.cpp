@@ -231,6 +231,32 @@ TEST_CASE_TEMPLATE("div_round_prepared's 32-bit path equals div_round for every 
     CHECK(hider::div_round_prepared(-(int64_t{1} << 40) - 8, D(16)) == -(int64_t{1} << 36) - 1);
 }
 
+TEST_CASE("div_small_quotient equals native division whenever the quotient is below 2^15") {
+    std::mt19937_64 rng(71);
+    int taken = 0;
+    auto check = [&taken](uint64_t m, uint32_t w) {
+        uint32_t q = 0xDEADBEEFu;
+        const bool ok = hider::div_small_quotient(m, w, q);
+        CHECK(ok == (w < (uint32_t{1} << 30) && m / w < (uint64_t{1} << 15)));
+        if (ok) {
+            CHECK(q == m / w);
+            ++taken;
+        } else {
+            CHECK(q == 0xDEADBEEFu);
+        }
+    };
+    for (int i = 0; i < 300000; ++i) {
+        const uint32_t w = static_cast<uint32_t>(rng() >> (34 + rng() % 30)) | 1u;  // 1 .. 2^30 - 1
+        const uint64_t limit = uint64_t{w} << 15;
+        check(rng() % (limit + limit / 8 + 1), w);  // mostly below the limit, some above
+    }
+    for (uint32_t w : {1u, 2u, 3u, 0xFFFFu, 0x10000u, 0x10001u, 0x1FFFFu, 0x12345678u, 0x3FFFFFFFu, 0x40000000u})
+        for (uint64_t m : {uint64_t{0}, uint64_t{w} - 1, uint64_t{w}, (uint64_t{w} << 15) - 1, uint64_t{w} << 15,
+                           (uint64_t{w} << 15) - w, (uint64_t{w} << 14) + w / 2})
+            check(m, w);
+    CHECK(taken > 200000);
+}
+
 TEST_CASE("Divisor32 (ARMv6-M's prepared reciprocal) equals native division for every divisor shape") {
     std::mt19937_64 rng(61);
     auto check = [](uint64_t n, uint32_t d) {

@@ -63,6 +63,33 @@ constexpr int clz32(uint32_t v) {
 /// True where a 64-bit division is a library call (every 32-bit target of hider).
 constexpr bool kSlow64BitDivide = sizeof(void*) < 8;
 
+/// True where the CPU divides 32 bits in one instruction (Cortex-M3/M4, RV32IM, 64-bit hosts).
+constexpr bool kHardwareDivide32 =
+#if defined(__ARM_FEATURE_IDIV) || defined(__riscv_div) || defined(__x86_64__) || defined(__aarch64__)
+    true;
+#else
+    false;
+#endif
+
+/// floor(m / w) for a quotient known to be small: false (q untouched) unless m < w * 2^15. One 32-bit
+/// hardware division of m and w shifted right until w has 16 bits gives the quotient or up to two
+/// less (the divisor is rounded up); the exact remainder, which fits 32 bits for w < 2^30, corrects it.
+/// Precondition: w > 0 (w >= 2^30 returns false).
+constexpr bool div_small_quotient(uint64_t m, uint32_t w, uint32_t& q) {
+    if (w >= (uint32_t{1} << 30) || (m >> 15) >= w) return false;
+    if (w < (uint32_t{1} << 16)) {  // m < 2^31: one exact division
+        q = static_cast<uint32_t>(m) / w;
+        return true;
+    }
+    const int s = 16 - clz32(w);  // w >> s in [2^15, 2^16)
+    uint32_t e = static_cast<uint32_t>(m >> s) / ((w >> s) + 1);
+    uint32_t r = static_cast<uint32_t>(m) - e * w;  // m - e w < 3 w < 2^32: the low words suffice
+    if (r >= w) { r -= w; ++e; }
+    if (r >= w) ++e;
+    q = e;
+    return true;
+}
+
 /// floor(n / d) and the remainder for n < d * 2^32 (so the quotient fits 32 bits), d != 0.
 /// Long division in two 16-bit digits with 32-bit divides (Hacker's Delight, divlu): exact, and far
 /// cheaper than a generic 64-bit division where the CPU has no 64-bit divide (all our targets).
