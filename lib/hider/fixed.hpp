@@ -81,8 +81,9 @@ constexpr bool div_small_quotient(uint64_t m, uint32_t w, uint32_t& q) {
         q = static_cast<uint32_t>(m) / w;
         return true;
     }
-    const int s = 16 - clz32(w);  // w >> s in [2^15, 2^16)
-    uint32_t e = static_cast<uint32_t>(m >> s) / ((w >> s) + 1);
+    const int s = 16 - clz32(w);  // w >> s in [2^15, 2^16); 1 <= s <= 14
+    const uint32_t ms = (static_cast<uint32_t>(m) >> s) | (static_cast<uint32_t>(m >> 32) << (32 - s));  // m >> s < 2^31
+    uint32_t e = ms / ((w >> s) + 1);
     uint32_t r = static_cast<uint32_t>(m) - e * w;  // m - e w < 3 w < 2^32: the low words suffice
     if (r >= w) { r -= w; ++e; }
     if (r >= w) ++e;

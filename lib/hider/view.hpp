@@ -142,14 +142,14 @@ inline bool div_round_w256_by_parts(int64_t n, const D& w, int64_t& out) {
 /// guard band) take div_small_quotient() instead.
 template <class D>
 inline int16_t project_coord(int64_t n, const D& w) {
-    int64_t q = 0;
     uint32_t small = 0;
     const uint64_t un = n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
     if (kHardwareDivide32 && div_small_quotient((un + (uint64_t{w.value()} << 7)) >> 8, w.value(), small)) {
-        q = n < 0 ? -int64_t{small} : int64_t{small};
-    } else if (!div_round_w256_by_parts(n, w, q)) {
-        q = div_round(n, int64_t{w.value()} * 256);
+        const int32_t c = static_cast<int32_t>(min<uint32_t>(small, kCoordLimit));  // 32-bit clamp
+        return static_cast<int16_t>(n < 0 ? -c : c);
     }
+    int64_t q = 0;
+    if (!div_round_w256_by_parts(n, w, q)) q = div_round(n, int64_t{w.value()} * 256);
     return static_cast<int16_t>(clamp<int64_t>(q, -kCoordLimit, kCoordLimit));
 }
 }  // namespace detail
