@@ -111,3 +111,28 @@ TEST_CASE("look_at rejects a zero direction, a zero up and an up parallel to the
     CHECK(look_at(q16(0, 0, 0), q16(0, 5, 0), q16(0, -2, 0), v) == Status::invalid_argument);
     CHECK(look_at(q16(0, 0, 0), q16(0, 5, 0), q16(0.01, 1, 0), v) == Status::ok);  // 0.57 degrees off: fine
 }
+
+TEST_CASE("the ARMv6-M row product from 16-bit halves equals the floored exact 64-bit sum") {
+    std::mt19937_64 rng(73);
+    auto check = [](const int32_t (&r)[3], const int32_t (&p)[3]) {
+        const int64_t exact = int64_t{r[0]} * p[0] + int64_t{r[1]} * p[1] + int64_t{r[2]} * p[2];
+        const int64_t floored = exact >> 30;
+        if (floored < INT32_MIN || floored > INT32_MAX) return;  // outside apply()'s precondition
+        CHECK(hider::detail::dot3_q30_floor_by_parts(r[0], r[1], r[2], p[0], p[1], p[2]) == floored);
+    };
+    for (int i = 0; i < 300000; ++i) {
+        int32_t r[3], p[3];
+        for (int j = 0; j < 3; ++j) {
+            r[j] = static_cast<int32_t>(static_cast<int64_t>(rng()) >> (33 + rng() % 31));  // |r| <= 2^30
+            p[j] = static_cast<int32_t>(static_cast<int64_t>(rng()) >> (35 + rng() % 29));  // |p| <= 2^28
+        }
+        check(r, p);
+    }
+    const int32_t one = int32_t{1} << 30, lim = (int32_t{1} << 29) - 1;
+    const int32_t rows[][3] = {{one, one, one}, {-one, -one, -one}, {one, -one, one}, {0, 0, 0}, {-1, -1, -1},
+                               {one - 1, 65535, -65536}, {-one, 65535, 1}};
+    const int32_t points[][3] = {{lim, lim, lim}, {-lim, -lim, -lim}, {lim, -lim, 65535}, {-1, 0, 1},
+                                 {65536, -65536, 0}, {-lim, 65535, -65535}};
+    for (const auto& r : rows)
+        for (const auto& p : points) check(r, p);
+}

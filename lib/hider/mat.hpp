@@ -23,11 +23,41 @@ struct Transform {
 };
 
 namespace detail {
+/// floor((r0 p0 + r1 p1 + r2 p2) / 2^30) for |r| <= 2^30 and |p| < 2^29 in 32-bit arithmetic only: with
+/// r = rh 2^16 + rl and p = ph 2^16 + pl (rl, pl in [0, 2^16)) the sum is
+/// HH 2^32 + MID 2^16 + LL, and the floor is taken in stages (nested floors are exact): LL's top bits
+/// from its parts, then MID plus those over 2^14, each term split into its floor and remainder so no
+/// sum overflows. Twelve 32-bit multiplies where the 64-bit sum takes three 32x32->64 products, which
+/// ARMv6-M (no long multiply) builds from four each.
+constexpr int32_t dot3_q30_floor_by_parts(int32_t r0, int32_t r1, int32_t r2, int32_t p0, int32_t p1, int32_t p2) {
+    const int32_t ph0 = p0 >> 16, ph1 = p1 >> 16, ph2 = p2 >> 16;
+    const int32_t pl0 = p0 & 0xFFFF, pl1 = p1 & 0xFFFF, pl2 = p2 & 0xFFFF;
+    const int32_t rh0 = r0 >> 16, rh1 = r1 >> 16, rh2 = r2 >> 16;
+    const int32_t rl0 = r0 & 0xFFFF, rl1 = r1 & 0xFFFF, rl2 = r2 & 0xFFFF;
+    // LL = sum of rl pl (each < 2^32, unsigned): floor(LL / 2^16) from the halves of each product.
+    const uint32_t ll0 = uint32_t(rl0) * uint32_t(pl0), ll1 = uint32_t(rl1) * uint32_t(pl1),
+                   ll2 = uint32_t(rl2) * uint32_t(pl2);
+    const int32_t l16 = int32_t((ll0 >> 16) + (ll1 >> 16) + (ll2 >> 16) +
+                                (((ll0 & 0xFFFFu) + (ll1 & 0xFFFFu) + (ll2 & 0xFFFFu)) >> 16));
+    // MID + l16 in three int32 partial sums (|rh pl| < 2^30, |rl ph| < 2^29, l16 < 2^18), then
+    // floor(sum / 2^14) = sum of the floors + floor(sum of the remainders).
+    const int32_t s1 = rh0 * pl0 + rh1 * pl1;
+    const int32_t s2 = rh2 * pl2 + rl0 * ph0;
+    const int32_t s3 = rl1 * ph1 + rl2 * ph2 + l16;
+    return 4 * (rh0 * ph0 + rh1 * ph1 + rh2 * ph2) + (s1 >> 14) + (s2 >> 14) + (s3 >> 14) +
+           (((s1 & 0x3FFF) + (s2 & 0x3FFF) + (s3 & 0x3FFF)) >> 14);
+}
+
 /// Row r of a Q30 matrix times a Q16 vector, plus a Q16 offset; one floor at the end.
 constexpr Q16 row_dot(const Q30 (&row)[3], Vec3q16 p, Q16 offset) {
+#if defined(__ARM_ARCH_6M__)
+    return Q16::from_raw(dot3_q30_floor_by_parts(row[0].raw(), row[1].raw(), row[2].raw(), p.x.raw(), p.y.raw(),
+                                                 p.z.raw()) + offset.raw());
+#else
     const int64_t acc = mul_wide(row[0].raw(), p.x.raw()) + mul_wide(row[1].raw(), p.y.raw()) +
                         mul_wide(row[2].raw(), p.z.raw()) + int64_t{offset.raw()} * Q30::kOne;
     return Q16::from_raw(static_cast<int32_t>(acc >> 30));
+#endif
 }
 }  // namespace detail
 
