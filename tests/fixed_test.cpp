@@ -257,6 +257,20 @@ TEST_CASE("div_small_quotient equals native division whenever the quotient is be
     CHECK(taken > 200000);
 }
 
+TEST_CASE("reciprocal_word equals floor((2^64 - 1) / d) - 2^32 for every normalised divisor shape") {
+    std::mt19937_64 rng(79);
+    auto check = [](uint32_t d) {
+        const uint64_t expected = ((uint64_t{~d} << 32) | 0xFFFFFFFFu) / d;  // < 2^32 for d >= 2^31
+        CHECK(hider::reciprocal_word(d) == expected);
+    };
+    for (int i = 0; i < 500000; ++i) check(static_cast<uint32_t>(rng()) | 0x80000000u);
+    for (uint32_t i = 0; i < 256; ++i) {  // every table bucket: both ends and the middle
+        const uint32_t lo = 0x80000000u | (i << 23);
+        for (uint32_t d : {lo, lo + 1, lo | 0x003FFFFFu, lo | 0x00400000u, lo | 0x007FFFFFu, lo | 0x007FFFFEu}) check(d);
+    }
+    for (uint32_t d : {0x80000000u, 0x80000001u, 0xFFFFFFFFu, 0xFFFFFFFEu, 0xFFFF0000u, 0x8000FFFFu, 0xC0000000u}) check(d);
+}
+
 TEST_CASE("Divisor32 (ARMv6-M's prepared reciprocal) equals native division for every divisor shape") {
     std::mt19937_64 rng(61);
     auto check = [](uint64_t n, uint32_t d) {
