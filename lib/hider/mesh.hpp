@@ -61,9 +61,14 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
             out[i].outside = code;  // x, y, z are not used for vertices outside a plane
             continue;
         }
-        out[i] = project(view, p, xy);
-        r.min = min(r.min, out[i].z);
-        r.max = max(r.max, out[i].z);
+        const ScreenVertex s = project(view, p, xy);
+        ScreenVertex& o = out[i];  // field by field: a whole-struct copy became a 9-byte memcpy call on ARMv6-M
+        o.x = s.x;
+        o.y = s.y;
+        o.z = s.z;
+        o.outside = 0;
+        r.min = min(r.min, s.z);
+        r.max = max(r.max, s.z);
     }
     if (range != nullptr) *range = r;
     return Status::ok;

@@ -86,9 +86,15 @@ inline ViewPoint to_view_point(const View& v, Vec3q16 p) {
     return {q.x.raw(), q.y.raw(), -q.z.raw()};
 }
 
+/// w kGuardBand 256 (|X| <= G  <=>  |x k| <= G w 256) by shifts: kGuardBand 256 = 2^22 - 2^14.
+inline int64_t guard_of(int32_t w) {
+    static_assert(int64_t{kGuardBand} * 256 == (int64_t{1} << 22) - (int64_t{1} << 14), "guard band constant");
+    return int64_t{w} * (int64_t{1} << 22) - int64_t{w} * (int64_t{1} << 14);
+}
+
 /// Signed distance of p to clip plane `plane` (one bit), >= 0 inside; exact in int64.
 inline int64_t clip_distance(const View& v, const ViewPoint& p, uint8_t plane) {
-    const int64_t guard = int64_t{p.w} * (int64_t{kGuardBand} * 256);  // |X| <= G  <=>  |x k| <= G w 256
+    const int64_t guard = guard_of(p.w);
     switch (plane) {
         case kClipNear: return int64_t{p.w} - v.near_raw;
         case kClipFar: return int64_t{v.far_raw} - p.w;
@@ -110,7 +116,7 @@ inline uint8_t outcode(const View& v, const ViewPoint& p, const ScaledXY& s) {
     uint8_t code = 0;
     if (p.w < v.near_raw) code |= kClipNear;
     if (p.w > v.far_raw) code |= kClipFar;
-    const int64_t guard = int64_t{p.w} * (int64_t{kGuardBand} * 256);
+    const int64_t guard = guard_of(p.w);
     if (s.xk < -guard) code |= kClipLeft;
     if (s.xk > guard) code |= kClipRight;
     if (s.yk > guard) code |= kClipTop;
