@@ -86,11 +86,8 @@ inline ViewPoint to_view_point(const View& v, Vec3q16 p) {
     return {q.x.raw(), q.y.raw(), -q.z.raw()};
 }
 
-/// w kGuardBand 256 (|X| <= G  <=>  |x k| <= G w 256) by shifts: kGuardBand 256 = 2^22 - 2^14.
-inline int64_t guard_of(int32_t w) {
-    static_assert(int64_t{kGuardBand} * 256 == (int64_t{1} << 22) - (int64_t{1} << 14), "guard band constant");
-    return int64_t{w} * (int64_t{1} << 22) - int64_t{w} * (int64_t{1} << 14);
-}
+/// w kGuardBand 256 (|X| <= G  <=>  |x k| <= G w 256), one 32x32->64 product.
+inline int64_t guard_of(int32_t w) { return mul_wide(w, kGuardBand * 256); }
 
 /// Signed distance of p to clip plane `plane` (one bit), >= 0 inside; exact in int64.
 inline int64_t clip_distance(const View& v, const ViewPoint& p, uint8_t plane) {
