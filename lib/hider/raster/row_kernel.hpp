@@ -75,8 +75,9 @@ inline void run_row_kernel_portable(RowKernel& k) {
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 /// run_row_kernel_portable() in Thumb-2. Registers: r0 the state, r1..r5 lpx lg lz rpx rg, r6 rows
-/// left, r7 zrow; per row the constants come back with one load-multiple per edge. Pixel loop: r11 x,
-/// lr z, r12 scratch, r8 dz, r9 colour row, r10 colour (10 instructions a written pixel, 7 a rejected).
+/// left, r7 zrow; per row the constants come back with one load-multiple per edge. Pixel loop: indexes
+/// back from the span's end (r7 depth, r9 colour) with r11 = -(pixels left) counting up to 0, lr z,
+/// r12 scratch, r8 dz, r10 colour (9 instructions a written pixel, 6 a rejected one).
 __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
     __asm__ volatile(
         ".syntax unified\n\t"
@@ -88,8 +89,9 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
         "bge    3f\n\t"                    // empty span
         "add    lr, r0, #64\n\t"
         "ldm    lr, {r8-r10}\n\t"          // dz, colour offset, colour
-        "add    r9, r9, r7\n\t"            // colour row
-        "mov    r11, r1\n\t"               // x = lpx
+        "add    r7, r7, r4, lsl #1\n\t"    // depth row + 2 rpx (restored after the span)
+        "add    r9, r9, r7\n\t"            // colour row + 2 rpx
+        "sub    r11, r1, r4\n\t"           // x = lpx - rpx: negative, counts up to 0
         "mov    lr, r3\n"                  // z = lz
         "2:\n\t"                           // pixel
         "ldrh   r12, [r7, r11, lsl #1]\n\t"
@@ -100,9 +102,9 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
         "strh   r10, [r9, r11, lsl #1]\n"
         "4:\n\t"
         "add    lr, lr, r8\n\t"
-        "add    r11, r11, #1\n\t"
-        "cmp    r11, r4\n\t"
-        "bne    2b\n"
+        "adds   r11, r11, #1\n\t"
+        "bne    2b\n\t"
+        "sub    r7, r7, r4, lsl #1\n"
         "3:\n\t"                           // left edge: g += m, px += q, z += dz_row, then correct
         "add    lr, r0, #24\n\t"
         "ldm    lr, {r8-r12}\n\t"          // la lm lq ldz dzdx
@@ -136,9 +138,10 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
 #if defined(__ARM_ARCH_6M__)
 /// run_row_kernel_portable() in Thumb-1 (Cortex-M0/M0+: eight low registers, no conditional execution).
 /// Between rows r0 holds the state, r1..r5 lpx lg lz rpx rg, r12 the state again, r10 zrow, r11 the
-/// zrow that ends the run, lr the stride; the constants are loaded where used. A span parks lpx..rpx in
-/// the state with one store-multiple; its pixel loop: r1 x (bytes), r3 z, r6 depth row, r2 colour row,
-/// r4 colour, r9 dz, r8 end (10 instructions a written pixel, 8 a rejected one).
+/// zrow that ends the run, lr the stride, r9 dz, r8 the colour offset; the edge constants are loaded where
+/// used. A span parks lpx..rpx in the state with one store-multiple; its pixel loop indexes back from
+/// the span's end (r6 depth, r2 colour) with r1 = -2 (pixels left) counting up to 0, r3 z, r4 colour
+/// (9 instructions a written pixel, 7 a rejected one).
 __attribute__((naked, noinline)) inline void run_row_kernel_v6m(RowKernel*) {
     __asm__ volatile(
         ".syntax unified\n\t"
@@ -157,21 +160,24 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v6m(RowKernel*) {
         "muls   r3, r1, r3\n\t"
         "adds   r3, r3, r2\n\t"
         "mov    r11, r3\n\t"              // zrow after the last row
+        "ldr    r1, [r0, #64]\n\t"        // dz
+        "mov    r9, r1\n\t"
+        "ldr    r1, [r0, #68]\n\t"        // colour offset
+        "mov    r8, r1\n\t"
         "ldm    r0!, {r1-r5}\n\t"         // lpx lg lz rpx rg
         "mov    r0, r12\n"
         "1:\n\t"                          // row
         "cmp    r1, r4\n\t"
         "bge    3f\n\t"                   // empty span
         "stm    r0!, {r1-r4}\n\t"         // park lpx lg lz rpx; r0 = state + 16
-        "lsls   r1, r1, #1\n\t"           // x in bytes
+        "subs   r1, r1, r4\n\t"
+        "lsls   r1, r1, #1\n\t"           // x: bytes from the span's end, negative, counts up to 0
         "lsls   r4, r4, #1\n\t"
-        "mov    r8, r4\n\t"               // end in bytes
-        "ldr    r4, [r0, #48]\n\t"        // dz (offset 64)
-        "mov    r9, r4\n\t"
-        "ldr    r4, [r0, #56]\n\t"        // colour (offset 72)
-        "ldr    r2, [r0, #52]\n\t"        // colour offset (offset 68)
-        "mov    r6, r10\n\t"              // depth row
-        "adds   r2, r2, r6\n"              // colour row
+        "mov    r6, r10\n\t"
+        "adds   r6, r6, r4\n\t"           // depth row + 2 rpx
+        "mov    r2, r8\n\t"
+        "adds   r2, r2, r6\n\t"           // colour row + 2 rpx
+        "ldr    r4, [r0, #56]\n"           // colour (offset 72)
         "2:\n\t"                          // pixel
         "ldrh   r7, [r6, r1]\n\t"
         "lsrs   r0, r3, #16\n\t"
@@ -182,7 +188,6 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v6m(RowKernel*) {
         "4:\n\t"
         "add    r3, r9\n\t"
         "adds   r1, r1, #2\n\t"
-        "cmp    r1, r8\n\t"
         "bne    2b\n\t"
         "mov    r0, r12\n\t"
         "ldm    r0!, {r1-r4}\n\t"         // lpx lg lz rpx back
