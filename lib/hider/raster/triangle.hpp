@@ -151,7 +151,7 @@ private:
     }
 
     /// Depth at pixel (px, py): exact modulo 2^32, equal to what stepping produces.
-    uint32_t depth_at(int32_t px, int32_t py) const {
+    __attribute__((always_inline)) uint32_t depth_at(int32_t px, int32_t py) const {
         return z_ref_ + dzdx_ * static_cast<uint32_t>(px - ref_px_) + dzdy_ * static_cast<uint32_t>(py - ref_py_);
     }
 
