@@ -121,7 +121,7 @@ private:
     }
 
     /// Index i of the edge (v[i] -> v[i+1]) joining vertices p and q.
-    static int edge_index(int p, int q) { return next3(p) == q ? p : q; }
+    __attribute__((always_inline)) static int edge_index(int p, int q) { return next3(p) == q ? p : q; }
 
     void setup_depth(const ScreenVertex* const* v, int32_t area) {
         const int32_t dx1 = x_[1] - x_[0], dy1 = y_[1] - y_[0];
