@@ -21,7 +21,7 @@ static_assert(sizeof(Rgb888) == 3, "Rgb888 must pack to 3 bytes");
 /// RGB565 in a uint16_t: bits 15..11 red, 10..5 green, 4..0 blue (native byte order in memory).
 struct Rgb565Format {
     using Pixel = uint16_t;
-    static constexpr Pixel pack(Rgb c) {
+    __attribute__((always_inline)) static constexpr Pixel pack(Rgb c) {
         return static_cast<Pixel>(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3));
     }
     /// Expands by bit replication, so 0 -> 0 and 31 -> 255.
@@ -73,8 +73,8 @@ struct FrameView {
     int32_t y0 = 0;      ///< first row held
     int32_t y1 = 0;      ///< one past the last row held
 
-    Pixel* row(int32_t y) const { return color + static_cast<ptrdiff_t>(y - y0) * stride; }
-    Depth* depth_row(int32_t y) const { return depth + static_cast<ptrdiff_t>(y - y0) * stride; }
+    __attribute__((always_inline)) Pixel* row(int32_t y) const { return color + static_cast<ptrdiff_t>(y - y0) * stride; }
+    __attribute__((always_inline)) Depth* depth_row(int32_t y) const { return depth + static_cast<ptrdiff_t>(y - y0) * stride; }
     int32_t rows() const { return y1 - y0; }
     /// True when the geometry is usable: sizes in range, band inside the frame, colour memory given.
     bool valid() const {
