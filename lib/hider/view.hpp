@@ -81,7 +81,7 @@ inline View with_model(const View& v, const Transform& model) {
 }
 
 /// View-space position of p. Precondition: |p| components below kWorldLimitRaw.
-inline ViewPoint to_view_point(const View& v, Vec3q16 p) {
+__attribute__((always_inline)) inline ViewPoint to_view_point(const View& v, Vec3q16 p) {
     const Vec3q16 q = apply(v.to_view, p);
     return {q.x.raw(), q.y.raw(), -q.z.raw()};
 }
