@@ -159,7 +159,7 @@ inline int16_t project_coord(int64_t n, const D& w) {
 
 /// Projects a point inside (or, after clipping, on) the view volume; coordinates are clamped to the
 /// guard band and depth to [kDepthNear, kDepthFar], so rounding at clip planes never overflows.
-inline ScreenVertex project(const View& v, const ViewPoint& p, const ScaledXY& xy) {
+__attribute__((always_inline)) inline ScreenVertex project(const View& v, const ViewPoint& p, const ScaledXY& xy) {
     const int32_t w = max(p.w, int32_t{1});
     const uint64_t n31 = uint64_t{static_cast<uint32_t>(v.near_raw)} << 31;
     ScreenVertex s;
