@@ -52,13 +52,16 @@ public:
             return false;
         }
         front_ = area < 0;
-        const ScreenVertex* v[3] = {&a, &b, &c};
-        if (area < 0) { swap_values(v[1], v[2]); area = -area; }  // traverse clockwise on the image
-        for (int i = 0; i < 3; ++i) { x_[i] = v[i]->x; y_[i] = v[i]->y; }
+        const ScreenVertex& v1 = area < 0 ? c : b;  // traverse clockwise on the image
+        const ScreenVertex& v2 = area < 0 ? b : c;
+        if (area < 0) area = -area;
+        x_[0] = a.x; y_[0] = a.y;
+        x_[1] = v1.x; y_[1] = v1.y;
+        x_[2] = v2.x; y_[2] = v2.y;
         width_ = width;
         x_origin_ = kSubpixel / 2 - width * (kSubpixel / 2);
         y_origin_ = kSubpixel / 2 - height * (kSubpixel / 2);
-        setup_depth(v, area);
+        setup_depth(a.z, v1.z, v2.z, area);
         // Rows: sort vertex indices by y.
         int t = 0, m = 1, bt = 2;
         if (y_[m] < y_[t]) swap_values(m, t);
@@ -123,10 +126,10 @@ private:
     /// Index i of the edge (v[i] -> v[i+1]) joining vertices p and q.
     __attribute__((always_inline)) static int edge_index(int p, int q) { return next3(p) == q ? p : q; }
 
-    void setup_depth(const ScreenVertex* const* v, int32_t area) {
+    void setup_depth(uint32_t z0, uint32_t z1, uint32_t z2, int32_t area) {
         const int32_t dx1 = x_[1] - x_[0], dy1 = y_[1] - y_[0];
         const int32_t dx2 = x_[2] - x_[0], dy2 = y_[2] - y_[0];
-        const int64_t dz1 = int64_t{v[1]->z} - v[0]->z, dz2 = int64_t{v[2]->z} - v[0]->z;
+        const int64_t dz1 = int64_t{z1} - z0, dz2 = int64_t{z2} - z0;
         // Plane through the vertices: z = z0 + p (x - x0) + q (y - y0); per pixel = 16 p, 16 q.
         // |dz| < 2^32 and |dx|, |dy| < 2^15 (kCoordLimit): every product fits 47 bits.
         const int64_t npx = (mul_i33_i16(dz1, dy2) - mul_i33_i16(dz2, dy1)) * kSubpixel;
@@ -147,7 +150,7 @@ private:
         ref_py_ = (y_[0] - y_origin_ + kSubpixel / 2) >> kSubpixelBits;
         const int32_t ox = ref_px_ * kSubpixel + x_origin_ - x_[0];  // within [-8, 8]
         const int32_t oy = ref_py_ * kSubpixel + y_origin_ - y_[0];
-        z_ref_ = v[0]->z + static_cast<uint32_t>(div_round_pow2(mul_i64_i32(px, ox) + mul_i64_i32(qy, oy), kSubpixelBits));
+        z_ref_ = z0 + static_cast<uint32_t>(div_round_pow2(mul_i64_i32(px, ox) + mul_i64_i32(qy, oy), kSubpixelBits));
     }
 
     /// Depth at pixel (px, py): exact modulo 2^32, equal to what stepping produces.
