@@ -320,3 +320,16 @@ TEST_CASE("the ARMv6-M 64-bit products by parts equal the native products") {
     CHECK(hider::mul_i64_i32_by_parts(INT64_MAX, 1) == INT64_MAX);
     CHECK(hider::mul_i64_i32_by_parts(INT64_MIN, 1) == INT64_MIN);
 }
+
+TEST_CASE("div_floor32 floors for every sign, including INT32_MIN") {
+    std::mt19937_64 rng(83);
+    auto floor_div = [](int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); };
+    for (int i = 0; i < 300000; ++i) {
+        const auto n = static_cast<int32_t>(rng() >> (rng() % 33));
+        const auto d = static_cast<int32_t>((rng() >> (33 + rng() % 31)) | 1u);
+        CHECK(hider::div_floor32(n, d) == floor_div(n, d));
+    }
+    for (int32_t n : {0, 1, -1, 15, -15, 16, -16, 17, -17, INT32_MAX, INT32_MIN, INT32_MIN + 1})
+        for (int32_t d : {1, 2, 3, 16, 17, INT32_MAX})
+            CHECK(hider::div_floor32(n, d) == floor_div(n, d));
+}
