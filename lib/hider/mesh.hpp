@@ -58,7 +58,7 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
         const ScaledXY xy = scaled_xy(view, p);
         const uint8_t code = outcode(view, p, xy);
         if (code != 0) {
-            out[i].outside = code;  // x, y, z are not used for vertices outside a plane
+            out[i].mark_outside(code);
             continue;
         }
         const ScreenVertex s = project(view, p, xy);
@@ -66,7 +66,6 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
         o.x = s.x;
         o.y = s.y;
         o.z = s.z;
-        o.outside = 0;
         r.min = min(r.min, s.z);
         r.max = max(r.max, s.z);
     }

@@ -179,7 +179,6 @@ __attribute__((always_inline)) inline ScreenVertex project(const View& v, const 
     u = clamp<uint32_t>(u, v.near_over_far_q31, uint32_t{1} << 31);
     const uint64_t z = kDepthNear + ((mul_u32_u64((uint32_t{1} << 31) - u, v.depth_scale_q31) + (uint64_t{1} << 30)) >> 31);
     s.z = static_cast<uint32_t>(min<uint64_t>(z, kDepthFar));
-    s.outside = 0;
     return s;
 }
 

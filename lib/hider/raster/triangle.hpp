@@ -19,13 +19,23 @@ constexpr uint32_t kDepthNear = kDepthMargin;
 constexpr uint32_t kDepthFar = 0xFFFFFFFFu - kDepthMargin;
 
 /// A projected vertex: x, y in subpixels from the frame centre (y down), z in [kDepthNear, kDepthFar]
-/// (smaller = nearer, affine in screen space), and the clip planes it lies outside (0 = drawable).
+/// (smaller = nearer, affine in screen space). A vertex outside a clip plane has z == 0 and its planes
+/// in x (8 bytes a vertex: indexing is a shift, and a mesh's vertex array is a third smaller).
 struct ScreenVertex {
     int16_t x = 0;
     int16_t y = 0;
     uint32_t z = 0;
-    uint8_t outside = 0;
+
+    /// The clip planes the vertex lies outside of (0 = drawable).
+    constexpr uint8_t outside() const { return z == 0 ? static_cast<uint8_t>(x) : 0; }
+    /// Marks the vertex as outside `planes` (nonzero); x, y and z lose their meaning.
+    constexpr void mark_outside(uint8_t planes) {
+        x = planes;
+        y = 0;
+        z = 0;
+    }
 };
+static_assert(sizeof(ScreenVertex) == 8, "ScreenVertex is two halfwords and a word");
 
 /// One triangle set up for traversal. setup() once; then spans(y_begin, y_end, fn) any number of
 /// times for any row ranges (bands) with identical results per row.

@@ -51,8 +51,8 @@ void for_each_piece(const View& view, const Mesh& mesh, Span<const ScreenVertex>
     const ScreenVertex& a = verts[tri.v[0]];
     const ScreenVertex& b = verts[tri.v[1]];
     const ScreenVertex& c = verts[tri.v[2]];
-    if ((a.outside & b.outside & c.outside) != 0) { ++st.triangles_outside; return; }
-    const uint8_t planes = a.outside | b.outside | c.outside;
+    if ((a.outside() & b.outside() & c.outside()) != 0) { ++st.triangles_outside; return; }
+    const uint8_t planes = a.outside() | b.outside() | c.outside();
     if (planes == 0) { piece(a, b, c); return; }
     ++st.triangles_clipped;
     ClipPolygon poly;
@@ -252,7 +252,7 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
         const ScreenVertex& a = verts[tri.v[0]];
         const ScreenVertex& b = verts[tri.v[1]];
         const ScreenVertex& c = verts[tri.v[2]];
-        if ((a.outside | b.outside | c.outside) == 0) {  // the common case, without a call for culled faces
+        if (a.z != 0 && b.z != 0 && c.z != 0) {  // drawable vertices: the common case, no call for culled faces
             const int32_t area = TriangleRaster::signed_area(a, b, c);
             if (keep(a, b, c, area)) draw(a, b, c, area, t);
             continue;

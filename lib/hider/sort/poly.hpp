@@ -16,7 +16,7 @@ struct ScreenPoly {
     uint32_t moved_at;     ///< Newell: the output position it was last moved to (kNotMoved if never)
     uint8_t flags;         ///< kPolyFront
 };
-static_assert(sizeof(ScreenPoly) == 64, "ScreenPoly layout is documented in README.md");
+static_assert(sizeof(ScreenPoly) == 52, "ScreenPoly layout is documented in README.md");
 constexpr uint8_t kPolyFront = 1;  ///< counter-clockwise on the image
 constexpr uint32_t kNotMoved = 0xFFFFFFFFu;
 
