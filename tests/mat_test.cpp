@@ -136,3 +136,24 @@ TEST_CASE("the ARMv6-M row product from 16-bit halves equals the floored exact 6
     for (const auto& r : rows)
         for (const auto& p : points) check(r, p);
 }
+
+TEST_CASE("PreparedTransform applies exactly like apply()") {
+    std::mt19937_64 rng(89);
+    for (int i = 0; i < 2000; ++i) {
+        Transform t;
+        t.rot = mul(rotation_x(Angle::from_bam(static_cast<uint32_t>(rng()))),
+                    mul(rotation_y(Angle::from_bam(static_cast<uint32_t>(rng()))), rotation_z(Angle::from_bam(static_cast<uint32_t>(rng())))));
+        t.trans = {Q16::from_raw(static_cast<int32_t>(rng() >> 40)), Q16::from_raw(-static_cast<int32_t>(rng() >> 40)),
+                   Q16::from_raw(static_cast<int32_t>(rng() >> 41))};
+        const PreparedTransform pt(t);
+        for (int k = 0; k < 20; ++k) {
+            const Vec3q16 p{Q16::from_raw(static_cast<int32_t>(static_cast<int64_t>(rng()) >> 38)),
+                            Q16::from_raw(static_cast<int32_t>(static_cast<int64_t>(rng()) >> 38)),
+                            Q16::from_raw(static_cast<int32_t>(static_cast<int64_t>(rng()) >> 38))};
+            const Vec3q16 a = apply(t, p), b = pt.apply(p);
+            CHECK(a.x == b.x);
+            CHECK(a.y == b.y);
+            CHECK(a.z == b.z);
+        }
+    }
+}

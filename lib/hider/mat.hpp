@@ -29,23 +29,27 @@ namespace detail {
 /// from its parts, then MID plus those over 2^14, each term split into its floor and remainder so no
 /// sum overflows. Twelve 32-bit multiplies where the 64-bit sum takes three 32x32->64 products, which
 /// ARMv6-M (no long multiply) builds from four each.
-constexpr int32_t dot3_q30_floor_by_parts(int32_t r0, int32_t r1, int32_t r2, int32_t p0, int32_t p1, int32_t p2) {
-    const int32_t ph0 = p0 >> 16, ph1 = p1 >> 16, ph2 = p2 >> 16;
-    const int32_t pl0 = p0 & 0xFFFF, pl1 = p1 & 0xFFFF, pl2 = p2 & 0xFFFF;
-    const int32_t rh0 = r0 >> 16, rh1 = r1 >> 16, rh2 = r2 >> 16;
-    const int32_t rl0 = r0 & 0xFFFF, rl1 = r1 & 0xFFFF, rl2 = r2 & 0xFFFF;
+constexpr int32_t dot3_split_floor(const int32_t (&rh)[3], const int32_t (&rl)[3], const int32_t (&ph)[3],
+                                   const int32_t (&pl)[3]) {
     // LL = sum of rl pl (each < 2^32, unsigned): floor(LL / 2^16) from the halves of each product.
-    const uint32_t ll0 = uint32_t(rl0) * uint32_t(pl0), ll1 = uint32_t(rl1) * uint32_t(pl1),
-                   ll2 = uint32_t(rl2) * uint32_t(pl2);
+    const uint32_t ll0 = uint32_t(rl[0]) * uint32_t(pl[0]), ll1 = uint32_t(rl[1]) * uint32_t(pl[1]),
+                   ll2 = uint32_t(rl[2]) * uint32_t(pl[2]);
     const int32_t l16 = int32_t((ll0 >> 16) + (ll1 >> 16) + (ll2 >> 16) +
                                 (((ll0 & 0xFFFFu) + (ll1 & 0xFFFFu) + (ll2 & 0xFFFFu)) >> 16));
     // MID + l16 in three int32 partial sums (|rh pl| < 2^30, |rl ph| < 2^29, l16 < 2^18), then
     // floor(sum / 2^14) = sum of the floors + floor(sum of the remainders).
-    const int32_t s1 = rh0 * pl0 + rh1 * pl1;
-    const int32_t s2 = rh2 * pl2 + rl0 * ph0;
-    const int32_t s3 = rl1 * ph1 + rl2 * ph2 + l16;
-    return 4 * (rh0 * ph0 + rh1 * ph1 + rh2 * ph2) + (s1 >> 14) + (s2 >> 14) + (s3 >> 14) +
+    const int32_t s1 = rh[0] * pl[0] + rh[1] * pl[1];
+    const int32_t s2 = rh[2] * pl[2] + rl[0] * ph[0];
+    const int32_t s3 = rl[1] * ph[1] + rl[2] * ph[2] + l16;
+    return 4 * (rh[0] * ph[0] + rh[1] * ph[1] + rh[2] * ph[2]) + (s1 >> 14) + (s2 >> 14) + (s3 >> 14) +
            (((s1 & 0x3FFF) + (s2 & 0x3FFF) + (s3 & 0x3FFF)) >> 14);
+}
+
+/// dot3_split_floor of r and p split here.
+constexpr int32_t dot3_q30_floor_by_parts(int32_t r0, int32_t r1, int32_t r2, int32_t p0, int32_t p1, int32_t p2) {
+    const int32_t rh[3] = {r0 >> 16, r1 >> 16, r2 >> 16}, rl[3] = {r0 & 0xFFFF, r1 & 0xFFFF, r2 & 0xFFFF};
+    const int32_t ph[3] = {p0 >> 16, p1 >> 16, p2 >> 16}, pl[3] = {p0 & 0xFFFF, p1 & 0xFFFF, p2 & 0xFFFF};
+    return dot3_split_floor(rh, rl, ph, pl);
 }
 
 /// Row r of a Q30 matrix times a Q16 vector, plus a Q16 offset; one floor at the end.
@@ -66,6 +70,39 @@ constexpr Vec3q16 apply(const Transform& t, Vec3q16 p) {
     return {detail::row_dot(t.rot.m[0], p, t.trans.x), detail::row_dot(t.rot.m[1], p, t.trans.y),
             detail::row_dot(t.rot.m[2], p, t.trans.z)};
 }
+
+/// A transform prepared for many points (the vertices of a frame). On ARMv6-M its rotation is split into
+/// 16-bit halves once, so each point costs its own split and the twelve 32-bit products per row of
+/// detail::dot3_split_floor; elsewhere it is apply(). Same results as apply() everywhere.
+class PreparedTransform {
+public:
+    explicit constexpr PreparedTransform(const Transform& t) : t_(t), h_(), l_() {
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                h_[i][j] = t.rot.m[i][j].raw() >> 16;
+                l_[i][j] = t.rot.m[i][j].raw() & 0xFFFF;
+            }
+    }
+    constexpr const Transform& transform() const { return t_; }
+
+    constexpr Vec3q16 apply(Vec3q16 p) const {
+#if defined(__ARM_ARCH_6M__)
+        const int32_t ph[3] = {p.x.raw() >> 16, p.y.raw() >> 16, p.z.raw() >> 16};
+        const int32_t pl[3] = {p.x.raw() & 0xFFFF, p.y.raw() & 0xFFFF, p.z.raw() & 0xFFFF};
+        return {Q16::from_raw(row(0, ph, pl) + t_.trans.x.raw()), Q16::from_raw(row(1, ph, pl) + t_.trans.y.raw()),
+                Q16::from_raw(row(2, ph, pl) + t_.trans.z.raw())};
+#else
+        return hider::apply(t_, p);
+#endif
+    }
+
+private:
+    constexpr int32_t row(int i, const int32_t (&ph)[3], const int32_t (&pl)[3]) const {
+        return detail::dot3_split_floor(h_[i], l_[i], ph, pl);
+    }
+    Transform t_;
+    int32_t h_[3][3], l_[3][3];
+};
 
 /// Matrix product a * b (Q30, floored per entry).
 constexpr Mat3 mul(const Mat3& a, const Mat3& b) {

@@ -53,8 +53,9 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
                                DepthRange* range = nullptr) {
     if (out.size() < positions.size()) return Status::invalid_argument;
     DepthRange r;
+    const PreparedTransform to_view(view.to_view);
     for (size_t i = 0; i < positions.size(); ++i) {
-        const ViewPoint p = to_view_point(view, positions[i]);
+        const ViewPoint p = to_view_point(to_view, positions[i]);
         const ScaledXY xy = scaled_xy(view, p);
         const uint8_t code = outcode(view, p, xy);
         if (code != 0) {

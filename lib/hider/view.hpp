@@ -89,6 +89,12 @@ __attribute__((always_inline)) inline ViewPoint to_view_point(const View& v, Vec
 /// w kGuardBand 256 (|X| <= G  <=>  |x k| <= G w 256), one 32x32->64 product.
 inline int64_t guard_of(int32_t w) { return mul_wide(w, kGuardBand * 256); }
 
+/// to_view_point() through a PreparedTransform of v.to_view (many points, one view).
+__attribute__((always_inline)) inline ViewPoint to_view_point(const PreparedTransform& t, Vec3q16 p) {
+    const Vec3q16 q = t.apply(p);
+    return {q.x.raw(), q.y.raw(), -q.z.raw()};
+}
+
 /// Signed distance of p to clip plane `plane` (one bit), >= 0 inside; exact in int64.
 inline int64_t clip_distance(const View& v, const ViewPoint& p, uint8_t plane) {
     const int64_t guard = guard_of(p.w);
