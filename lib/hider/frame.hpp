@@ -120,18 +120,21 @@ void fill(T* p, size_t n, T v) {
         AliasWord* w = reinterpret_cast<AliasWord*>(p);
         size_t words = n / 2;
 #if defined(__arm__) && defined(__thumb__)
-        // Cortex-M: two 4-register store-multiples per 8 words (GCC -Os emits one str per word).
-        if (size_t blocks = words / 8) {
-            register uint32_t w0 asm("r2") = word;
-            register uint32_t w1 asm("r3") = word;
-            register uint32_t w2 asm("r4") = word;
-            register uint32_t w3 asm("r5") = word;
-            __asm__ volatile(".syntax unified\n1:\n\tstmia %0!, {r2, r3, r4, r5}\n\tstmia %0!, {r2, r3, r4, r5}\n\t"
-                             "subs %1, %1, #1\n\tbne 1b"
-                             : "+l"(w), "+l"(blocks)
-                             : "r"(w0), "r"(w1), "r"(w2), "r"(w3)
+        // Cortex-M: two 6-register store-multiples per 12 words (GCC -Os emits one str per word).
+        if (size_t blocks = words / 12) {
+            register uint32_t w0 asm("r1") = word;
+            register uint32_t w1 asm("r2") = word;
+            register uint32_t w2 asm("r3") = word;
+            register uint32_t w3 asm("r4") = word;
+            register uint32_t w4 asm("r5") = word;
+            register uint32_t w5 asm("r6") = word;
+            AliasWord* const end = w + blocks * 12;
+            __asm__ volatile(".syntax unified\n1:\n\tstmia %0!, {r1, r2, r3, r4, r5, r6}\n\t"
+                             "stmia %0!, {r1, r2, r3, r4, r5, r6}\n\tcmp %0, %1\n\tbne 1b"
+                             : "+l"(w)
+                             : "r"(end), "r"(w0), "r"(w1), "r"(w2), "r"(w3), "r"(w4), "r"(w5)
                              : "memory", "cc");
-            words %= 8;
+            words %= 12;
         }
 #endif
         for (; words >= 8; words -= 8, w += 8) {
