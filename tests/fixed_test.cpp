@@ -311,6 +311,15 @@ TEST_CASE("the ARMv6-M 64-bit products by parts equal the native products") {
         CHECK(hider::mul_i33_i16_by_parts(a33b, b16) == a33b * b16);
         CHECK(hider::mul_i33_i16(a33b, b16) == a33b * b16);
     }
+    for (int i = 0; i < 200000; ++i) {
+        const auto a = static_cast<int64_t>(rng()) >> (16 + rng() % 48);  // |a| <= 2^47
+        const auto b = static_cast<int32_t>(static_cast<int64_t>(rng()) >> (49 + rng() % 15));  // |b| <= 2^14
+        CHECK(hider::mul_i64_i16_by_parts(a, b) == a * b);
+        CHECK(hider::mul_i64_i16(a, b) == a * b);
+    }
+    for (int64_t a : {INT64_MAX >> 15, INT64_MIN >> 15, int64_t{-1}, int64_t{0x7FFFFFFF}, -(int64_t{1} << 40)})
+        for (int32_t b : {-16384, 16383, -8, 8, -1, 0})
+            CHECK(hider::mul_i64_i16_by_parts(a, b) == a * b);
     for (int64_t a : {-(int64_t{1} << 32) + 1, (int64_t{1} << 32) - 1, int64_t{-1}, int64_t{65535}, int64_t{-65536}})
         for (int32_t b : {-32767, 32767, -1, 0, 1})
             CHECK(hider::mul_i33_i16_by_parts(a, b) == a * b);

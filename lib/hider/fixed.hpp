@@ -154,6 +154,24 @@ constexpr int64_t mul_i33_i16(int64_t a, int32_t b) {
 #endif
 }
 
+/// a * b modulo 2^64 for |b| < 2^15 from three 32-bit products (a's low word in 16-bit halves): the
+/// same value as mul_i64_i32_by_parts without a wide product.
+constexpr int64_t mul_i64_i16_by_parts(int64_t a, int32_t b) {
+    const uint64_t ua = static_cast<uint64_t>(a);
+    const uint32_t al = static_cast<uint32_t>(ua), ah = static_cast<uint32_t>(ua >> 32);
+    const int64_t lo = int64_t{static_cast<int32_t>(al >> 16) * b} * 65536 + int64_t{static_cast<int32_t>(al & 0xFFFFu) * b};
+    return static_cast<int64_t>(static_cast<uint64_t>(lo) + (uint64_t{ah * static_cast<uint32_t>(b)} << 32));
+}
+
+/// a * b for |b| < 2^15 and a product that fits int64.
+constexpr int64_t mul_i64_i16(int64_t a, int32_t b) {
+#if defined(__ARM_ARCH_6M__)
+    return mul_i64_i16_by_parts(a, b);
+#else
+    return a * b;
+#endif
+}
+
 /// a * b modulo 2^64 for unsigned a from 32-bit parts (see mul_i64_i32_by_parts).
 constexpr uint64_t mul_u32_u64_by_parts(uint32_t a, uint64_t b) {
     return mul_wide_u(a, static_cast<uint32_t>(b)) + (uint64_t{a * static_cast<uint32_t>(b >> 32)} << 32);

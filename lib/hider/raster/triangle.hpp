@@ -160,7 +160,7 @@ private:
         ref_py_ = (y_[0] - y_origin_ + kSubpixel / 2) >> kSubpixelBits;
         const int32_t ox = ref_px_ * kSubpixel + x_origin_ - x_[0];  // within [-8, 8]
         const int32_t oy = ref_py_ * kSubpixel + y_origin_ - y_[0];
-        z_ref_ = z0 + static_cast<uint32_t>(div_round_pow2(mul_i64_i32(px, ox) + mul_i64_i32(qy, oy), kSubpixelBits));
+        z_ref_ = z0 + static_cast<uint32_t>(div_round_pow2(mul_i64_i16(px, ox) + mul_i64_i16(qy, oy), kSubpixelBits));
     }
 
     /// Depth at pixel (px, py): exact modulo 2^32, equal to what stepping produces.
