@@ -74,8 +74,9 @@ inline void run_row_kernel_portable(RowKernel& k) {
 }
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-/// run_row_kernel_portable() in Thumb-2. Registers: r0 the state, r1..r5 lpx lg lz rpx rg, r6 rows
-/// left, r7 zrow; per row the constants come back with one load-multiple per edge. Pixel loop: indexes
+/// run_row_kernel_portable() in Thumb-2. Registers: r0 the state's left-edge constants (offset 24),
+/// r1..r5 lpx lg lz rpx rg, r6 rows left, r7 zrow; per row the constants come back with one
+/// load-multiple per edge. Pixel loop: indexes
 /// back from the span's end (r7 depth, r9 colour) with r11 = -(pixels left) counting up to 0, lr z,
 /// r12 scratch, r8 dz, r10 colour (9 instructions a written pixel, 6 a rejected one).
 __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
@@ -83,12 +84,13 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"
         "ldm    r0, {r1-r6}\n\t"           // lpx lg lz rpx rg rows
-        "ldr    r7, [r0, #60]\n"           // zrow
+        "ldr    r7, [r0, #60]\n\t"        // zrow
+        "add    r0, r0, #24\n"            // r0: the left edge's constants (offset 24)
         "1:\n\t"                           // row
         "cmp    r1, r4\n\t"
         "bge    3f\n\t"                    // empty span
-        "add    lr, r0, #64\n\t"
-        "ldm    lr, {r8-r10}\n\t"          // dz, colour offset, colour
+        "add    lr, r0, #40\n\t"
+        "ldm    lr, {r8-r10}\n\t"          // dz, colour offset, colour (offset 64)
         "add    r7, r7, r4, lsl #1\n\t"    // depth row + 2 rpx (restored after the span)
         "add    r9, r9, r7\n\t"            // colour row + 2 rpx
         "sub    r11, r1, r4\n\t"           // x = lpx - rpx: negative, counts up to 0
@@ -106,8 +108,7 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
         "bne    2b\n\t"
         "sub    r7, r7, r4, lsl #1\n"
         "3:\n\t"                           // left edge: g += m, px += q, z += dz_row, then correct
-        "add    lr, r0, #24\n\t"
-        "ldm    lr, {r8-r12}\n\t"          // la lm lq ldz dzdx
+        "ldm    r0, {r8-r12}\n\t"          // la lm lq ldz dzdx
         "add    r2, r2, r9\n\t"
         "add    r1, r1, r10\n\t"
         "add    r3, r3, r11\n\t"
@@ -117,8 +118,8 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
         "sub    r1, r1, #1\n\t"
         "sub    r3, r3, r12\n"
         "5:\n\t"                           // right edge, then the next depth row
-        "add    lr, r0, #44\n\t"
-        "ldm    lr, {r8-r11}\n\t"          // ra rm rq stride
+        "add    lr, r0, #20\n\t"
+        "ldm    lr, {r8-r11}\n\t"          // ra rm rq stride (offset 44)
         "add    r5, r5, r9\n\t"
         "add    r4, r4, r10\n\t"
         "cmp    r5, r8\n\t"
@@ -129,6 +130,7 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
         "add    r7, r7, r11\n\t"
         "subs   r6, r6, #1\n\t"
         "bne    1b\n\t"
+        "sub    r0, r0, #24\n\t"
         "stm    r0, {r1-r5}\n\t"
         "str    r7, [r0, #60]\n\t"
         "pop    {r4-r11, pc}\n");
