@@ -298,10 +298,6 @@ TEST_CASE("Divisor32 (ARMv6-M's prepared reciprocal) equals native division for 
 TEST_CASE("the ARMv6-M 64-bit products by parts equal the native products") {
     std::mt19937_64 rng(67);
     for (int i = 0; i < 200000; ++i) {
-        const auto b = static_cast<int32_t>(rng() >> (rng() % 33));
-        const auto a = static_cast<int64_t>(rng()) >> (31 + rng() % 33);  // |a| <= 2^32: |a b| < 2^63
-        CHECK(hider::mul_i64_i32_by_parts(a, b) == a * b);
-        CHECK(hider::mul_i64_i32(a, b) == a * b);
         const uint64_t ub = rng() >> (rng() % 64);
         const auto ua = static_cast<uint32_t>(rng());
         CHECK(hider::mul_u32_u64_by_parts(ua, ub) == ua * ub);  // modulo 2^64, like the native product
@@ -323,11 +319,8 @@ TEST_CASE("the ARMv6-M 64-bit products by parts equal the native products") {
     for (int64_t a : {-(int64_t{1} << 32) + 1, (int64_t{1} << 32) - 1, int64_t{-1}, int64_t{65535}, int64_t{-65536}})
         for (int32_t b : {-32767, 32767, -1, 0, 1})
             CHECK(hider::mul_i33_i16_by_parts(a, b) == a * b);
-    CHECK(hider::mul_i64_i32_by_parts(-(int64_t{1} << 32) + 1, INT32_MIN) == (-(int64_t{1} << 32) + 1) * INT32_MIN);
-    CHECK(hider::mul_i64_i32_by_parts((int64_t{1} << 31) - 1, INT32_MIN) == ((int64_t{1} << 31) - 1) * INT32_MIN);
-    CHECK(hider::mul_i64_i32_by_parts(-1, -1) == 1);
-    CHECK(hider::mul_i64_i32_by_parts(INT64_MAX, 1) == INT64_MAX);
-    CHECK(hider::mul_i64_i32_by_parts(INT64_MIN, 1) == INT64_MIN);
+    CHECK(hider::mul_i64_i16_by_parts(INT64_MAX, 1) == INT64_MAX);
+    CHECK(hider::mul_i64_i16_by_parts(INT64_MIN, 1) == INT64_MIN);
 }
 
 TEST_CASE("div_floor32 floors for every sign, including INT32_MIN") {

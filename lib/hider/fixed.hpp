@@ -118,25 +118,6 @@ constexpr uint32_t udiv64_32(uint64_t n, uint32_t d, uint32_t& rem) {
     return (q1 << 16) | q0;
 }
 
-/// a * b modulo 2^64 (exact whenever the product fits int64) from 32-bit parts: on ARMv6-M four 16x16
-/// products and one 32-bit multiply instead of the library's 64x64 routine.
-constexpr int64_t mul_i64_i32_by_parts(int64_t a, int32_t b) {
-    const uint64_t ua = static_cast<uint64_t>(a);
-    const uint32_t al = static_cast<uint32_t>(ua), ah = static_cast<uint32_t>(ua >> 32), ub = static_cast<uint32_t>(b);
-    uint64_t p = mul_wide_u(al, ub) + (uint64_t{ah * ub} << 32);
-    if (b < 0) p -= uint64_t{al} << 32;
-    return static_cast<int64_t>(p);
-}
-
-/// a * b for a product that fits int64.
-constexpr int64_t mul_i64_i32(int64_t a, int32_t b) {
-#if defined(__ARM_ARCH_6M__)
-    return mul_i64_i32_by_parts(a, b);
-#else
-    return a * b;
-#endif
-}
-
 /// a * b for |a| < 2^32 and |b| < 2^15 from two 32-bit products (a = ah 2^16 + al; both ah b and al b
 /// fit int32): the depth-plane products of a triangle's setup, on ARMv6-M without a wide multiply.
 constexpr int64_t mul_i33_i16_by_parts(int64_t a, int32_t b) {
@@ -155,7 +136,7 @@ constexpr int64_t mul_i33_i16(int64_t a, int32_t b) {
 }
 
 /// a * b modulo 2^64 for |b| < 2^15 from three 32-bit products (a's low word in 16-bit halves): the
-/// same value as mul_i64_i32_by_parts without a wide product.
+/// exact value modulo 2^64 without a wide product.
 constexpr int64_t mul_i64_i16_by_parts(int64_t a, int32_t b) {
     const uint64_t ua = static_cast<uint64_t>(a);
     const uint32_t al = static_cast<uint32_t>(ua), ah = static_cast<uint32_t>(ua >> 32);
@@ -172,7 +153,7 @@ constexpr int64_t mul_i64_i16(int64_t a, int32_t b) {
 #endif
 }
 
-/// a * b modulo 2^64 for unsigned a from 32-bit parts (see mul_i64_i32_by_parts).
+/// a * b modulo 2^64 for unsigned a from 32-bit parts: one 32x32->64 product and one 32-bit multiply.
 constexpr uint64_t mul_u32_u64_by_parts(uint32_t a, uint64_t b) {
     return mul_wide_u(a, static_cast<uint32_t>(b)) + (uint64_t{a * static_cast<uint32_t>(b >> 32)} << 32);
 }
