@@ -1,8 +1,11 @@
-// spanbench firmware (big machine): one call of the z-buffer inner span as draw_zbuffer runs it for RGB565
-// pixels and uint16_t depth, span_depth_test_paired<false> (flat colour), on pixels [0, kPixels) of a row, bracketed by bench_begin() /
+// spanbench firmware (big machine): one call of a z-buffer inner span for RGB565 pixels and uint16_t depth
+// (flat colour) on pixels [0, kPixels) of a row: span_depth_test_paired<false>, or with
+// HIDER_SPANBENCH_KERNEL run_row_kernel() for one row (what draw_zbuffer runs for triangles inside the
+// frame's columns), bracketed by bench_begin() /
 // bench_end(). The case (HIDER_SPANBENCH_PIXELS, HIDER_SPANBENCH_PASS) is fixed per ELF by CMake, so
 // the plugin's one region count is one call; hider-bench targets derives instructions per pixel as
 // (count at 320 px - count at 1 px) / 319 for each of "all fragments pass" and "none passes".
+#include <hider/raster/row_kernel.hpp>
 #include <hider/raster/span.hpp>
 #include <hider/raster/triangle.hpp>
 
@@ -16,6 +19,8 @@ constexpr int32_t kPixels = HIDER_SPANBENCH_PIXELS;
 /// True: the depth row is clear, every fragment is nearer and writes. False: the row holds 0, the
 /// nearest depth, so every test fails and nothing is written.
 constexpr bool kPass = HIDER_SPANBENCH_PASS != 0;
+/// True: the row kernel; false: the out-of-line paired span.
+constexpr bool kKernel = HIDER_SPANBENCH_KERNEL != 0;
 static_assert(kPixels >= 1 && kPixels <= 320, "spanbench draws 1..320 pixels of a 320-pixel row");
 
 constexpr int32_t kRowPixels = 320;
@@ -69,19 +74,36 @@ int main() {
     const int32_t x1 = g_x1;
     const uint32_t z_q32 = g_z_q32, dz_q32 = g_dz_q32;
     const hider::FlatShader<uint16_t> shader{g_shade};
-    const hider::PairedSpan<uint16_t, hider::FlatShader<uint16_t>> span{
-        dz_q32, static_cast<intptr_t>(reinterpret_cast<uintptr_t>(crow) - reinterpret_cast<uintptr_t>(zrow)), shader};
-
-    bench_begin();
-    const uint32_t written = hider::span_depth_test_paired<false>(zrow, x1, z_q32, span);
-    bench_end();
+    const intptr_t offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(crow) - reinterpret_cast<uintptr_t>(zrow));
+    uint32_t written = 0;
+    if constexpr (kKernel) {
+        hider::RowKernel k{};  // one row [0, x1); edges that do not move (m = q = 0)
+        k.lpx = 0;
+        k.rpx = x1;
+        k.la = k.ra = 16;
+        k.lz = z_q32;
+        k.rows = 1;
+        k.stride_bytes = 2 * kRowPixels;
+        k.zrow = zrow;
+        k.dz = dz_q32;
+        k.color_offset = offset;
+        k.color = shader.color;
+        bench_begin();
+        hider::run_row_kernel(k);
+        bench_end();
+    } else {
+        const hider::PairedSpan<uint16_t, hider::FlatShader<uint16_t>> span{dz_q32, offset, shader};
+        bench_begin();
+        written = hider::span_depth_test_paired<false>(zrow, x1, z_q32, span);
+        bench_end();
+    }
     g_written = written;
 
     if (!row_ok()) {
         sh::print("spanbench: the row is not what the depth test should give\n");
         return 1;
     }
-    sh::print("spanbench: span_depth_test_paired<false>, RGB565 + 16-bit depth, ");
+    sh::print(kKernel ? "spanbench: run_row_kernel, RGB565 + 16-bit depth, " : "spanbench: span_depth_test_paired<false>, RGB565 + 16-bit depth, ");
     sh::print_u32(static_cast<uint32_t>(kPixels));
     sh::print(kPass ? " px, all pass\n" : " px, none pass\n");
     return 0;

@@ -30,6 +30,10 @@ const Firmware kFirmware[] = {
     {"pass1", "firmware/spanbench/spanbench_pass1.elf", true},
     {"fail320", "firmware/spanbench/spanbench_fail320.elf", true},
     {"fail1", "firmware/spanbench/spanbench_fail1.elf", true},
+    {"kpass320", "firmware/spanbench/spanbench_kpass320.elf", true},
+    {"kpass1", "firmware/spanbench/spanbench_kpass1.elf", true},
+    {"kfail320", "firmware/spanbench/spanbench_kfail320.elf", true},
+    {"kfail1", "firmware/spanbench/spanbench_kfail1.elf", true},
 };
 constexpr uint64_t kSpanPixels = 320;
 
@@ -158,8 +162,9 @@ int targets_command(const Args& args) {
                 "  divides that mean by the covered pixels of frame 0.\n"
                 "- covered px from the host (hider-bench frame code, same view, 16-bit depth): 320x240 %" PRIu32
                 ", 160x128 %" PRIu32 ".\n"
-                "- span: span_depth_test_paired<false> (the z-buffer's span for RGB565 + 16-bit depth), flat colour\n"
-                "  (firmware/spanbench); instr/px =\n"
+                "- span: span_depth_test_paired<false> (the z-buffer's out-of-line span for RGB565 + 16-bit depth);\n"
+                "  kernel: run_row_kernel() on one row (the z-buffer's loop for flat triangles inside the frame's\n"
+                "  columns); flat colour (firmware/spanbench); instr/px =\n"
                 "  (count of a 320-px call - count of a 1-px call) / 319.\n",
                 spin_frames, large.covered, small.covered);
     if (!missing.empty()) {
@@ -168,26 +173,31 @@ int targets_command(const Args& args) {
         std::printf("\n");
     }
     std::printf("\n| target | torus 320x240 instr/frame | instr/covered px | torus 160x128 instr/frame "
-                "| instr/covered px | span instr/px (all pass) | span instr/px (none pass) |\n");
-    std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
+                "| instr/covered px | kernel instr/px (all pass) | kernel instr/px (none pass) "
+                "| span instr/px (all pass) | span instr/px (none pass) |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const std::string& preset : presets) {
         std::map<std::string, Count>& c = counts[preset];
         if (c["spin"].pairs != spin_frames) fail("targets: spin renders a different number of frames per target");
-        std::printf("| %s | %s | %s | %s | %s | %s | %s |\n", preset.c_str(), per_frame(c["spin320"]).c_str(),
+        std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", preset.c_str(), per_frame(c["spin320"]).c_str(),
                     per_covered(c["spin320"], large.covered).c_str(), per_frame(c["spin"]).c_str(),
                     per_covered(c["spin"], small.covered).c_str(),
+                    per_span_pixel(c["kpass320"], c["kpass1"], "kernel pass").c_str(),
+                    per_span_pixel(c["kfail320"], c["kfail1"], "kernel fail").c_str(),
                     per_span_pixel(c["pass320"], c["pass1"], "pass").c_str(),
                     per_span_pixel(c["fail320"], c["fail1"], "fail").c_str());
     }
     std::printf("\nRegion counts (instructions; spin: all %" PRIu64 " frames):\n\n", spin_frames);
     std::printf("| target | spin320 | spin | span 320 px pass | span 1 px pass | span 320 px fail "
-                "| span 1 px fail |\n");
-    std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
+                "| span 1 px fail | kernel 320 px pass | kernel 1 px pass | kernel 320 px fail | kernel 1 px fail |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const std::string& preset : presets) {
         std::map<std::string, Count>& c = counts[preset];
-        std::printf("| %s | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " |\n",
+        std::printf("| %s | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64
+                    " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " |\n",
                     preset.c_str(), c["spin320"].region, c["spin"].region, c["pass320"].region, c["pass1"].region,
-                    c["fail320"].region, c["fail1"].region);
+                    c["fail320"].region, c["fail1"].region, c["kpass320"].region, c["kpass1"].region,
+                    c["kfail320"].region, c["kfail1"].region);
     }
     return 0;
 }
