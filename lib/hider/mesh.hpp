@@ -45,10 +45,11 @@ struct DepthRange {
     uint32_t min = kDepthFar, max = kDepthNear;
 };
 
-/// Transforms and projects every position into `out` (same index); vertices outside a clip plane get
-/// their `outside` bits and are clipped per triangle later. Returns invalid_argument if out is too
-/// small. Precondition: validate(mesh) == ok. Cost per vertex: about 15 32x32->64 multiplies and three
-/// 64/32 divisions.
+/// Transforms and projects every position into `out` (same index); vertices outside a clip plane are
+/// marked (ScreenVertex::outside()) and clipped per triangle later. Returns invalid_argument if out is
+/// too small. Precondition: validate(mesh) == ok. Cost per vertex: the transform (nine 32x32->64
+/// products, or 36 32-bit multiplies on ARMv6-M), clip codes, and three quotients by w (one reciprocal
+/// on ARMv6-M, one 32-bit division for each screen coordinate where the CPU divides).
 inline Status project_vertices(const View& view, Span<const Vec3q16> positions, Span<ScreenVertex> out,
                                DepthRange* range = nullptr) {
     if (out.size() < positions.size()) return Status::invalid_argument;
