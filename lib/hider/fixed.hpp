@@ -318,7 +318,7 @@ constexpr int32_t div_floor32(int32_t n, int32_t d) {
     // One unsigned division (the library's signed divmod costs more on ARMv6-M, which has no divide).
     if (n >= 0) return static_cast<int32_t>(static_cast<uint32_t>(n) / static_cast<uint32_t>(d));
     const uint32_t un = 0u - static_cast<uint32_t>(n);  // floor(-m / d) = -ceil(m / d) = -floor((m + d - 1) / d)
-    return -static_cast<int32_t>((un - 1u) / static_cast<uint32_t>(d) + 1u);
+    return static_cast<int32_t>(0u - ((un - 1u) / static_cast<uint32_t>(d) + 1u));  // INT32_MIN / 1 stays defined
 }
 
 /// floor(n / d) for d > 0 (exact; C++ '/' truncates toward zero instead).
