@@ -323,6 +323,10 @@ TEST_CASE("the ARMv6-M 64-bit products by parts equal the native products") {
     CHECK(hider::mul_i64_i16_by_parts(INT64_MIN, 1) == INT64_MIN);
 }
 
+static_assert(hider::div_floor32(INT32_MIN, 1) == INT32_MIN, "no overflow in the negative branch");
+static_assert(hider::div_floor32(-1, 16) == -1 && hider::div_floor32(-16, 16) == -1 && hider::div_floor32(-17, 16) == -2,
+              "floors toward minus infinity");
+
 TEST_CASE("div_floor32 floors for every sign, including INT32_MIN") {
     std::mt19937_64 rng(83);
     auto floor_div = [](int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); };

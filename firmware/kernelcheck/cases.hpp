@@ -58,8 +58,19 @@ inline hider::RowKernel make_case(Rng& rng, Buffers& b) {
     k.ldz = near ? rng.next() >> rng.range(12, 31) : rng.next();
     k.dz = k.dzdx;
     k.stride_bytes = kWidth * 2;
-    k.zrow = b.depth;
-    k.color_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(b.color) - reinterpret_cast<uintptr_t>(b.depth));
+    // Every other case swaps the two arrays' roles, so the colour sits before the depth (negative offset).
+    const bool swapped = (rng.next() & 1u) != 0;
+    uint16_t* const depth = swapped ? b.color : b.depth;
+    uint16_t* const color = swapped ? b.depth : b.color;
+    if (near && swapped) {  // the tie-heavy depths belong in whichever array is the depth buffer
+        for (int32_t i = 0; i < kMaxRows * kWidth; ++i) {
+            const uint16_t t = depth[i];
+            depth[i] = color[i];
+            color[i] = t;
+        }
+    }
+    k.zrow = depth;
+    k.color_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(color) - reinterpret_cast<uintptr_t>(depth));
     k.color = rng.next() & 0xFFFFu;
     return k;
 }
@@ -71,7 +82,11 @@ inline uint32_t digest(const Buffers& b, const hider::RowKernel& k) {
         for (int i = 0; i < 4; ++i) { h ^= (v >> (8 * i)) & 0xFFu; h *= 16777619u; }
     };
     for (int32_t i = 0; i < kMaxRows * kWidth; ++i) add(uint32_t{b.depth[i]} | (uint32_t{b.color[i]} << 16));
-    const uint32_t rows_done = static_cast<uint32_t>(reinterpret_cast<uintptr_t>(k.zrow) - reinterpret_cast<uintptr_t>(b.depth)) /
+    const uintptr_t base = reinterpret_cast<uintptr_t>(k.zrow) >= reinterpret_cast<uintptr_t>(b.color) &&
+                                   reinterpret_cast<uintptr_t>(k.zrow) <= reinterpret_cast<uintptr_t>(b.color + kMaxRows * kWidth)
+                               ? reinterpret_cast<uintptr_t>(b.color)
+                               : reinterpret_cast<uintptr_t>(b.depth);
+    const uint32_t rows_done = static_cast<uint32_t>(reinterpret_cast<uintptr_t>(k.zrow) - base) /
                                static_cast<uint32_t>(k.stride_bytes);
     const uint32_t fields[] = {static_cast<uint32_t>(k.lpx), static_cast<uint32_t>(k.lg), k.lz,
                                static_cast<uint32_t>(k.rpx), static_cast<uint32_t>(k.rg), rows_done};

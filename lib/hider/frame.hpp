@@ -128,13 +128,13 @@ void fill(T* p, size_t n, T v) {
             register uint32_t w3 asm("r4") = word;
             register uint32_t w4 asm("r5") = word;
             register uint32_t w5 asm("r6") = word;
-            AliasWord* const end = w + blocks * 12;
+            AliasWord* const end = w + blocks * 12;  // in a high register: r7 may be the frame pointer
             __asm__ volatile(".syntax unified\n1:\n\tstmia %0!, {r1, r2, r3, r4, r5, r6}\n\t"
                              "stmia %0!, {r1, r2, r3, r4, r5, r6}\n\tcmp %0, %1\n\tbne 1b"
                              : "+l"(w)
-                             : "r"(end), "r"(w0), "r"(w1), "r"(w2), "r"(w3), "r"(w4), "r"(w5)
+                             : "h"(end), "r"(w0), "r"(w1), "r"(w2), "r"(w3), "r"(w4), "r"(w5)
                              : "memory", "cc");
-            words %= 12;
+            words -= blocks * 12;  // not % 12: a second library division on ARMv6-M
         }
 #endif
         for (; words >= 8; words -= 8, w += 8) {

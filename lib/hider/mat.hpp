@@ -87,13 +87,18 @@ public:
 
     constexpr Vec3q16 apply(Vec3q16 p) const {
 #if defined(__ARM_ARCH_6M__)
+        return apply_by_parts(p);
+#else
+        return hider::apply(t_, p);
+#endif
+    }
+
+    /// The ARMv6-M form of apply() (32-bit multiplies only), available everywhere for tests.
+    constexpr Vec3q16 apply_by_parts(Vec3q16 p) const {
         const int32_t ph[3] = {p.x.raw() >> 16, p.y.raw() >> 16, p.z.raw() >> 16};
         const int32_t pl[3] = {p.x.raw() & 0xFFFF, p.y.raw() & 0xFFFF, p.z.raw() & 0xFFFF};
         return {Q16::from_raw(row(0, ph, pl) + t_.trans.x.raw()), Q16::from_raw(row(1, ph, pl) + t_.trans.y.raw()),
                 Q16::from_raw(row(2, ph, pl) + t_.trans.z.raw())};
-#else
-        return hider::apply(t_, p);
-#endif
     }
 
 private:

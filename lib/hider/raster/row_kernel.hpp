@@ -3,12 +3,13 @@
 // row's depth-tested span [lpx, rpx) from depth lz, then both edges step as exact DDAs (the same
 // arithmetic as TriangleRaster::scan_rows) and the depth row advances by the stride.
 //
-// run_row_kernel() is portable C++; on ARMv7-M (Cortex-M3/M4) it is a hand-scheduled Thumb-2 loop. At -Os
-// GCC cannot keep the two edges, the row pointer and the span in registers across rows (about 60
-// instructions a row with the span as a call, 45 of them outside the pixels); the assembly keeps every
-// variable in a register and reloads the constants with load-multiples (about 27 a row), writing the
-// same bytes. The firmware tests compare its frames with the host's, and firmware/selftest runs it
-// against run_row_kernel_portable() on random edges.
+// run_row_kernel() is portable C++, except on Cortex-M: a hand-scheduled Thumb-2 loop on ARMv7-M (M3/M4)
+// and a Thumb-1 loop on ARMv6-M (M0/M0+). At -Os GCC cannot keep the two edges, the row pointer and the
+// span in registers across rows (about 60 instructions a row on the M3 with the span as a call, 45 of
+// them outside the pixels); the assembly keeps the variables in registers and reloads constants with
+// load-multiples (about 27 a row on the M3), writing the same bytes. The firmware tests compare its
+// frames with the host's, and firmware/kernelcheck runs it against run_row_kernel_portable() on random
+// states.
 #pragma once
 #include <hider/base.hpp>
 
@@ -239,7 +240,9 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v6m(RowKernel*) {
 constexpr bool kUseRowKernel = true;
 
 /// Runs k.rows >= 1 rows of the kernel (Thumb-2 on ARMv7-M, Thumb-1 on ARMv6-M, else the portable loop).
+/// Preconditions (the assembly loops rely on them): rows >= 1 and stride_bytes != 0.
 inline void run_row_kernel(RowKernel& k) {
+    HIDER_ASSERT(k.rows >= 1 && k.stride_bytes != 0);
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
     run_row_kernel_v7m(&k);
 #elif defined(__ARM_ARCH_6M__)

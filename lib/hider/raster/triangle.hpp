@@ -21,6 +21,8 @@ constexpr uint32_t kDepthFar = 0xFFFFFFFFu - kDepthMargin;
 /// A projected vertex: x, y in subpixels from the frame centre (y down), z in [kDepthNear, kDepthFar]
 /// (smaller = nearer, affine in screen space). A vertex outside a clip plane has z == 0 and its planes
 /// in x (8 bytes a vertex: indexing is a shift, and a mesh's vertex array is a third smaller).
+/// project_vertices() and project() never give a drawable vertex z == 0; a hand-made vertex with z == 0
+/// and x == 0 counts as drawable (outside() == 0) and takes draw_zbuffer's slower clipping path.
 struct ScreenVertex {
     int16_t x = 0;
     int16_t y = 0;

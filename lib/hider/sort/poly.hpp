@@ -7,7 +7,7 @@
 
 namespace hider {
 
-/// One triangle (or split piece) in screen space: 64 bytes on every target.
+/// One triangle (or split piece) in screen space: 52 bytes on every target.
 struct ScreenPoly {
     ScreenVertex v[3];
     uint32_t zmin, zmax;   ///< depth extent
