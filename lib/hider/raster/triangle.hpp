@@ -179,8 +179,8 @@ private:
         RowKernel k;
         rows_fn.fill_kernel(k);
         const int32_t y_mid = clamp(row_mid_, y0, y1);
-        const Walker lw = walker(edge_index(top_, bottom_), y0);
-        const Walker sw = walker(y0 < y_mid ? edge_index(top_, mid_) : edge_index(mid_, bottom_), y0);
+        const Walker lw = walker_inline(edge_index(top_, bottom_), y0);
+        const Walker sw = walker_inline(y0 < y_mid ? edge_index(top_, mid_) : edge_index(mid_, bottom_), y0);
         const bool long_left = lw.left;
         set_kernel_left(k, long_left ? lw : sw);
         set_kernel_right(k, long_left ? sw : lw);
@@ -189,7 +189,7 @@ private:
             k.rows = y_mid - y0;
             run_row_kernel(k);
             if (y_mid < y1) {  // the short side continues along the other short edge
-                const Walker w = walker(edge_index(mid_, bottom_), y_mid);
+                const Walker w = walker_inline(edge_index(mid_, bottom_), y_mid);
                 if (long_left) set_kernel_right(k, w);
                 else set_kernel_left(k, w);
                 k.rows = y1 - y_mid;
@@ -262,7 +262,9 @@ private:
 
     /// Walker for edge (v[edge] -> v[edge + 1]) on row py. Cost: one int32 division, two for edges
     /// flatter than one pixel per row.
-    Walker walker(int edge, int32_t py) const {
+    Walker walker(int edge, int32_t py) const { return walker_inline(edge, py); }
+    /// walker() inlined: scan_kernel() writes its fields straight into the kernel state.
+    __attribute__((always_inline)) Walker walker_inline(int edge, int32_t py) const {
         const int a = edge, b = next3(edge);
         const int32_t dx = x_[b] - x_[a], dy = y_[b] - y_[a];
         const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;  // top-left rule
