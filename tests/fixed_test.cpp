@@ -124,11 +124,15 @@ TEST_CASE("floor_int and round_int at the edges of the range") {
     CHECK(Q16::max().round_int() == 32768);
 }
 
-TEST_CASE("udiv64_32 (the 32-bit targets' division) is exact wherever the quotient fits 32 bits") {
+// LongDivisor32 is udiv64_32 itself; Divisor32 is ARMv6-M's prepared reciprocal.
+TEST_CASE_TEMPLATE("udiv64_32 and Divisor32 (the 32-bit targets' 64/32 divisions) are exact wherever the quotient fits 32 bits",
+                   D, hider::LongDivisor32, hider::Divisor32) {
     std::mt19937_64 rng(2718);
     auto check = [](uint64_t n, uint32_t d) {
+        const D div(d);
         uint32_t r = 0;
-        const uint32_t q = hider::udiv64_32(n, d, r);
+        const uint32_t q = div.divide(n, r);
+        CHECK(div.value() == d);
         CHECK(q == n / d);
         CHECK(r == n % d);
     };
@@ -143,9 +147,16 @@ TEST_CASE("udiv64_32 (the 32-bit targets' division) is exact wherever the quotie
     check(0x7FFFFFFF80000000ull, 0x80000000u);
     check(0x00000000FFFFFFFFull, 0x00010000u);
     check(0x0000FFFF00000000ull, 0x00010000u);
-    for (uint32_t d : {1u, 2u, 3u, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFFu})
-        for (uint64_t k : {0ull, 1ull, 0xFFFFull, 0xFFFFFFFFull})
-            check(std::min<uint64_t>(k * d + (d - 1), (uint64_t{d} << 32) - 1), d);
+    for (uint32_t d : {1u, 2u, 3u, 7u, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u, 0x80000001u, 0xFFFFFFFFu})
+        for (uint64_t k : {0ull, 1ull, 0xFFFFull, 0xFFFFFFFEull, 0xFFFFFFFFull}) {
+            const uint64_t top = (uint64_t{d} << 32) - 1;  // largest n with a 32-bit quotient
+            check(std::min<uint64_t>(k * d, top), d);
+            check(std::min<uint64_t>(k * d + (d - 1), top), d);
+            if (k * d > 0 && k * d <= top) check(k * d - 1, d);
+        }
+}
+
+TEST_CASE("clz32 counts leading zeros") {
     CHECK(hider::clz32(1) == 31);
     CHECK(hider::clz32(0x80000000u) == 0);
     CHECK(hider::clz32(0x00010000u) == 15);
@@ -269,30 +280,6 @@ TEST_CASE("reciprocal_word equals floor((2^64 - 1) / d) - 2^32 for every normali
         for (uint32_t d : {lo, lo + 1, lo | 0x003FFFFFu, lo | 0x00400000u, lo | 0x007FFFFFu, lo | 0x007FFFFEu}) check(d);
     }
     for (uint32_t d : {0x80000000u, 0x80000001u, 0xFFFFFFFFu, 0xFFFFFFFEu, 0xFFFF0000u, 0x8000FFFFu, 0xC0000000u}) check(d);
-}
-
-TEST_CASE("Divisor32 (ARMv6-M's prepared reciprocal) equals native division for every divisor shape") {
-    std::mt19937_64 rng(61);
-    auto check = [](uint64_t n, uint32_t d) {
-        const hider::Divisor32 div(d);
-        uint32_t r = 0;
-        const uint32_t q = div.divide(n, r);
-        CHECK(div.value() == d);
-        CHECK(q == n / d);
-        CHECK(r == n % d);
-    };
-    for (int i = 0; i < 200000; ++i) {
-        const uint32_t d = static_cast<uint32_t>(rng() >> (rng() % 64)) | 1u;
-        const uint64_t hi = (rng() >> 32) % d;  // keeps n < d * 2^32
-        check((hi << 32) | (rng() & 0xFFFFFFFFu), d);
-    }
-    for (uint32_t d : {1u, 2u, 3u, 7u, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u, 0x80000001u, 0xFFFFFFFFu})
-        for (uint64_t k : {0ull, 1ull, 0xFFFFull, 0xFFFFFFFEull, 0xFFFFFFFFull}) {
-            const uint64_t top = (uint64_t{d} << 32) - 1;  // largest n with a 32-bit quotient
-            check(std::min<uint64_t>(k * d, top), d);
-            check(std::min<uint64_t>(k * d + (d - 1), top), d);
-            if (k * d > 0 && k * d <= top) check(k * d - 1, d);
-        }
 }
 
 TEST_CASE("the ARMv6-M 64-bit products by parts equal the native products") {

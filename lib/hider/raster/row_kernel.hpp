@@ -236,9 +236,6 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v6m(RowKernel*) {
 }
 #endif
 
-/// Whether the z-buffer uses the kernel (all targets; a switch for measuring the per-row span path).
-constexpr bool kUseRowKernel = true;
-
 /// Runs k.rows >= 1 rows of the kernel (Thumb-2 on ARMv7-M, Thumb-1 on ARMv6-M, else the portable loop).
 /// Preconditions (the assembly loops rely on them): rows >= 1 and stride_bytes != 0.
 inline void run_row_kernel(RowKernel& k) {

@@ -135,34 +135,17 @@ struct DepthTestRows<kCount, Format, Depth, Shader, true> {
 /// runs triangles inside the frame's columns through the RowKernel (row_kernel.hpp), the rest
 /// through operator() like the other functors.
 template <class Format>
-struct FlatRows16 {
-    static constexpr bool kCountFragments = false;
-    static constexpr bool kRowKernel = kUseRowKernel;
-    using Pixel = typename Format::Pixel;
-    FlatRows16(const FrameView<Format, uint16_t>& f, const PairedSpan<Pixel, FlatShader<Pixel>>& s)
-        : frame(&f), span(&s), zrow(nullptr), written(0), stride(0) {}
-    const FrameView<Format, uint16_t>* frame;
-    const PairedSpan<Pixel, FlatShader<Pixel>>* span;
-    uint16_t* zrow;
-    uint32_t written;  ///< stays 0 (no counting)
-    int32_t stride;
+struct FlatRows16 : DepthTestRows<false, Format, uint16_t, FlatShader<typename Format::Pixel>, true> {
+    static constexpr bool kRowKernel = true;
+    using DepthTestRows<false, Format, uint16_t, FlatShader<typename Format::Pixel>, true>::DepthTestRows;
 
-    __attribute__((always_inline)) void begin(int32_t y) {
-        zrow = frame->depth_row(y);
-        stride = frame->stride;
-    }
-    __attribute__((always_inline)) void operator()(int32_t x0, int32_t x1, uint32_t z) {
-        const int32_t n = x1 - x0;
-        if (n > 0) (void)span_depth_test_paired<false>(zrow + x0, n, z, *span);
-        zrow += stride;
-    }
     /// Fills k's row and span fields for rows from begin()'s row on (the caller fills edges and rows).
     void fill_kernel(RowKernel& k) const {
-        k.zrow = zrow;
-        k.stride_bytes = stride * static_cast<int32_t>(sizeof(uint16_t));
-        k.dz = span->dz_q32;
-        k.color_offset = span->color_offset;
-        k.color = span->shader.color;
+        k.zrow = this->zrow;
+        k.stride_bytes = this->stride * static_cast<int32_t>(sizeof(uint16_t));
+        k.dz = this->span->dz_q32;
+        k.color_offset = this->span->color_offset;
+        k.color = this->span->shader.color;
     }
 };
 
