@@ -268,11 +268,23 @@ constexpr int64_t div_round(int64_t n, int64_t d) {
 
 /// udiv64_32 behind Divisor32's interface: where the CPU divides 32 bits in one instruction (Cortex-M3,
 /// RV32IM), the long division costs about what a prepared reciprocal's multiply and corrections do.
+/// Divisors below 2^16 (the area of most triangles a small display draws) skip the normalisation:
+/// two 16-bit quotient digits, each one 32-bit division.
 class LongDivisor32 {
 public:
     explicit constexpr LongDivisor32(uint32_t d) : d_(d) {}
     constexpr uint32_t value() const { return d_; }
-    constexpr uint32_t divide(uint64_t n, uint32_t& rem) const { return udiv64_32(n, d_, rem); }
+    __attribute__((always_inline)) constexpr uint32_t divide(uint64_t n, uint32_t& rem) const {
+        if (d_ <= 0xFFFFu) {  // two 16-bit digits, each one 32-bit division (n < d 2^32 < 2^48)
+            const uint32_t u1 = (static_cast<uint32_t>(n >> 32) << 16) | (static_cast<uint32_t>(n) >> 16);
+            const uint32_t q1 = u1 / d_;
+            const uint32_t u0 = ((u1 - q1 * d_) << 16) | (static_cast<uint32_t>(n) & 0xFFFFu);
+            const uint32_t q0 = u0 / d_;
+            rem = u0 - q0 * d_;
+            return (q1 << 16) + q0;
+        }
+        return udiv64_32(n, d_, rem);
+    }
 
 private:
     uint32_t d_;

@@ -41,6 +41,10 @@ static_assert(sizeof(void*) != 4 || (offsetof(RowKernel, rows) == 20 && offsetof
               "row kernel layout");
 
 /// The kernel in C++: k.rows rows, then k's edges, depth and zrow are those of the next row.
+// TriangleRaster::scan_kernel() sets the left and the right edge in branches on which side the long
+// edge is; GCC cannot pair them and reports the fields as maybe uninitialised here (false positive).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 inline void run_row_kernel_portable(RowKernel& k) {
     int32_t lpx = k.lpx, lg = k.lg, rpx = k.rpx, rg = k.rg;
     uint32_t lz = k.lz;
@@ -73,6 +77,7 @@ inline void run_row_kernel_portable(RowKernel& k) {
     }
     k.lpx = lpx; k.lg = lg; k.lz = lz; k.rpx = rpx; k.rg = rg; k.zrow = zrow;
 }
+#pragma GCC diagnostic pop
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 /// run_row_kernel_portable() in Thumb-2. Registers: r0 the state's left-edge constants (offset 24),

@@ -61,28 +61,32 @@ public:
         front_ = false;
         if (area == 0) {
             dzdx_ = 0;
+            long_left_ = false;
             return false;
         }
         front_ = area < 0;
         const ScreenVertex& v1 = area < 0 ? c : b;  // traverse clockwise on the image
         const ScreenVertex& v2 = area < 0 ? b : c;
         if (area < 0) area = -area;
-        x_[0] = a.x; y_[0] = a.y;
-        x_[1] = v1.x; y_[1] = v1.y;
-        x_[2] = v2.x; y_[2] = v2.y;
         width_ = width;
         x_origin_ = kSubpixel / 2 - width * (kSubpixel / 2);
         y_origin_ = kSubpixel / 2 - height * (kSubpixel / 2);
-        setup_depth(a.z, v1.z, v2.z, area);
-        // Rows: sort vertex indices by y.
-        int t = 0, m = 1, bt = 2;
-        if (y_[m] < y_[t]) swap_values(m, t);
-        if (y_[bt] < y_[m]) swap_values(bt, m);
-        if (y_[m] < y_[t]) swap_values(m, t);
-        top_ = t; mid_ = m; bottom_ = bt;
-        row_top_ = first_row_at_or_below(y_[t]);
-        row_mid_ = first_row_at_or_below(y_[m]);
-        row_bottom_ = first_row_at_or_below(y_[bt]);
+        setup_depth(a, v1, v2, area);
+        // Rows: the vertices sorted by y (top, mid, bottom), counting swaps. The long edge (top to
+        // bottom) is the left one when the clockwise order runs bottom -> top, i.e. when (top, mid,
+        // bottom) is an even permutation of (a, v1, v2).
+        int32_t xt = a.x, yt = a.y, xm = v1.x, ym = v1.y, xb = v2.x, yb = v2.y;
+        bool even = true;
+        if (ym < yt) { swap_values(xm, xt); swap_values(ym, yt); even = !even; }
+        if (yb < ym) { swap_values(xb, xm); swap_values(yb, ym); even = !even; }
+        if (ym < yt) { swap_values(xm, xt); swap_values(ym, yt); even = !even; }
+        long_left_ = even;
+        xs_[0] = xt; ys_[0] = yt;
+        xs_[1] = xm; ys_[1] = ym;
+        xs_[2] = xb; ys_[2] = yb;
+        row_top_ = first_row_at_or_below(yt);
+        row_mid_ = first_row_at_or_below(ym);
+        row_bottom_ = first_row_at_or_below(yb);
         return true;
     }
 
@@ -101,8 +105,8 @@ public:
     uint32_t scan(int32_t y_begin, int32_t y_end, RowFn& rows_fn) const {
         const int32_t y0 = max(row_top_, y_begin), y1 = min(row_bottom_, y_end);
         if (y0 >= y1) return 0;
-        const bool left = min(x_[0], min(x_[1], x_[2])) < x_origin_;
-        const bool right = max(x_[0], max(x_[1], x_[2])) > x_origin_ + (width_ - 1) * kSubpixel;
+        const bool left = min(xs_[0], min(xs_[1], xs_[2])) < x_origin_;
+        const bool right = max(xs_[0], max(xs_[1], xs_[2])) > x_origin_ + (width_ - 1) * kSubpixel;
         if (left) return right ? scan_rows<true, true>(y0, y1, rows_fn) : scan_rows<true, false>(y0, y1, rows_fn);
         if (right) return scan_rows<false, true>(y0, y1, rows_fn);
         if constexpr (RowFn::kRowKernel) return scan_kernel(y0, y1, rows_fn);
@@ -135,13 +139,12 @@ private:
         return (y_sub - y_origin_ + kSubpixel - 1) >> kSubpixelBits;  // ceil((y - origin) / 16)
     }
 
-    /// Index i of the edge (v[i] -> v[i+1]) joining vertices p and q.
-    __attribute__((always_inline)) static int edge_index(int p, int q) { return next3(p) == q ? p : q; }
-
-    void setup_depth(uint32_t z0, uint32_t z1, uint32_t z2, int32_t area) {
-        const int32_t dx1 = x_[1] - x_[0], dy1 = y_[1] - y_[0];
-        const int32_t dx2 = x_[2] - x_[0], dy2 = y_[2] - y_[0];
-        const int64_t dz1 = int64_t{z1} - z0, dz2 = int64_t{z2} - z0;
+    /// The depth plane of (v0, v1, v2), clockwise on the image, with area = their signed area (> 0).
+    void setup_depth(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int32_t area) {
+        const int32_t dx1 = v1.x - v0.x, dy1 = v1.y - v0.y;
+        const int32_t dx2 = v2.x - v0.x, dy2 = v2.y - v0.y;
+        const uint32_t z0 = v0.z;
+        const int64_t dz1 = int64_t{v1.z} - z0, dz2 = int64_t{v2.z} - z0;
         // Plane through the vertices: z = z0 + p (x - x0) + q (y - y0); per pixel = 16 p, 16 q.
         // |dz| < 2^32 and |dx|, |dy| < 2^15 (kCoordLimit): every product fits 47 bits.
         const int64_t npx = (mul_i33_i16(dz1, dy2) - mul_i33_i16(dz2, dy1)) * kSubpixel;
@@ -158,10 +161,10 @@ private:
         dzdx_ = static_cast<uint32_t>(px);
         dzdy_ = static_cast<uint32_t>(qy);
         // Reference pixel: the one whose cell holds v0; its centre is within 8 subpixels of v0.
-        ref_px_ = (x_[0] - x_origin_ + kSubpixel / 2) >> kSubpixelBits;
-        ref_py_ = (y_[0] - y_origin_ + kSubpixel / 2) >> kSubpixelBits;
-        const int32_t ox = ref_px_ * kSubpixel + x_origin_ - x_[0];  // within [-8, 8]
-        const int32_t oy = ref_py_ * kSubpixel + y_origin_ - y_[0];
+        ref_px_ = (v0.x - x_origin_ + kSubpixel / 2) >> kSubpixelBits;
+        ref_py_ = (v0.y - y_origin_ + kSubpixel / 2) >> kSubpixelBits;
+        const int32_t ox = ref_px_ * kSubpixel + x_origin_ - v0.x;  // within [-8, 8]
+        const int32_t oy = ref_py_ * kSubpixel + y_origin_ - v0.y;
         z_ref_ = z0 + static_cast<uint32_t>(div_round_pow2(mul_i64_i16(px, ox) + mul_i64_i16(qy, oy), kSubpixelBits));
     }
 
@@ -178,27 +181,23 @@ private:
         rows_fn.begin(y0);
         RowKernel k;
         rows_fn.fill_kernel(k);
-        const int32_t y_mid = clamp(row_mid_, y0, y1);
-        const Walker lw = walker_inline(edge_index(top_, bottom_), y0);
-        const Walker sw = walker_inline(y0 < y_mid ? edge_index(top_, mid_) : edge_index(mid_, bottom_), y0);
-        const bool long_left = lw.left;
-        set_kernel_left(k, long_left ? lw : sw);
-        set_kernel_right(k, long_left ? sw : lw);
         k.dzdx = dzdx_;
+        const int32_t y_mid = clamp(row_mid_, y0, y1);
+        const bool long_left = long_left_;
+        set_kernel_edge(k, long_left, walker_inline(0, 2, y0), y0);
         if (y0 < y_mid) {
+            set_kernel_edge(k, !long_left, walker_inline(0, 1, y0), y0);
             k.rows = y_mid - y0;
             run_row_kernel(k);
-            if (y_mid < y1) {  // the short side continues along the other short edge
-                const Walker w = walker_inline(edge_index(mid_, bottom_), y_mid);
-                if (long_left) set_kernel_right(k, w);
-                else set_kernel_left(k, w);
-                k.rows = y1 - y_mid;
-                run_row_kernel(k);
-            }
+            if (y_mid == y1) return 0;
+            // the short side continues along the other short edge
+            set_kernel_edge(k, !long_left, walker_inline(1, 2, y_mid), y_mid);
+            k.rows = y1 - y_mid;
         } else {
+            set_kernel_edge(k, !long_left, walker_inline(1, 2, y0), y0);
             k.rows = y1 - y0;
-            run_row_kernel(k);
         }
+        run_row_kernel(k);
         return 0;
     }
 
@@ -211,14 +210,14 @@ private:
         const int32_t y_mid = clamp(row_mid_, y0, y1);
         // The long edge (top to bottom) and the short edge of the half holding y0; both short edges
         // lie on the same side, so left and right never swap, only the short walker is replaced at y_mid.
-        const Walker lw = walker(edge_index(top_, bottom_), y0);
-        const Walker sw = walker(y0 < y_mid ? edge_index(top_, mid_) : edge_index(mid_, bottom_), y0);
-        const bool long_left = lw.left;
+        const Walker lw = walker(0, 2, y0);
+        const Walker sw = y0 < y_mid ? walker(0, 1, y0) : walker(1, 2, y0);
+        const bool long_left = long_left_;
         const Walker& l = long_left ? lw : sw;
         const Walker& r = long_left ? sw : lw;
         int32_t lpx = l.px, lg = l.g, la = l.a, lm = l.m, lq = l.q;
         int32_t rpx = r.px, rg = r.g, ra = r.a, rm = r.m, rq = r.q;
-        uint32_t lz = l.z, ldz = l.dz_row;
+        uint32_t lz = depth_at(lpx, y0), ldz = dzdy_ + dzdx_ * static_cast<uint32_t>(lq);
         const uint32_t dzdx = dzdx_;
         const int32_t width = width_;
         uint32_t z_col0 = kClipLeft ? depth_at(0, y0) : 0;  // depth at pixel 0, for spans that start off-screen
@@ -240,73 +239,76 @@ private:
             if (rg >= ra) { rg -= ra; --rpx; }
             if constexpr (kClipLeft) z_col0 += dzdy_;
             if (y == y_mid) {  // once per triangle: the short side continues along the other short edge
-                const Walker w = walker(edge_index(mid_, bottom_), y);
+                const Walker w = walker(1, 2, y);
                 if (long_left) { rpx = w.px; rg = w.g; ra = w.a; rm = w.m; rq = w.q; }
-                else { lpx = w.px; lg = w.g; la = w.a; lm = w.m; lq = w.q; lz = w.z; ldz = w.dz_row; }
+                else {
+                    lpx = w.px; lg = w.g; la = w.a; lm = w.m; lq = w.q;
+                    lz = depth_at(lpx, y);
+                    ldz = dzdy_ + dzdx_ * static_cast<uint32_t>(lq);
+                }
             }
         }
         rows_fn = fn;
         return covered;
     }
 
-    /// One edge as a DDA with an exact error term. g is the (top-left biased) edge function turned so
-    /// that g >= 0 exactly on the covered side and g grows by `a` per pixel to the right; px is the
-    /// boundary: the smallest px with g >= 0 (first covered pixel of a left edge, one past the last of a
-    /// right edge), so g lies in [0, a). Per row: g += m, px += q, then one correction step. z is the
-    /// depth at px (used for left edges).
+    /// One edge as a DDA with an exact error term, on either side of the triangle. g is the (top-left
+    /// biased) edge function turned so that g >= 0 exactly right of the boundary and g grows by `a` per
+    /// pixel to the right; px is the boundary: the smallest px with g >= 0 (first covered pixel of a
+    /// left edge, one past the last of a right edge), so g lies in [0, a). Per row: g += m, px += q,
+    /// then one correction step.
     struct Walker {
         int32_t px, g, a, m, q;
-        bool left;
-        uint32_t z, dz_row;
     };
 
-    /// Walker for edge (v[edge] -> v[edge + 1]) on row py. Cost: one int32 division, two for edges
-    /// flatter than one pixel per row.
-    Walker walker(int edge, int32_t py) const { return walker_inline(edge, py); }
+    /// Walker on row py for the edge from sorted vertex u down to sorted vertex l (u < l, ys_[u] <
+    /// ys_[l]). Both sides share one form: a left edge (run upwards clockwise, top-left rule
+    /// inclusive) and a right edge (run downwards, exclusive, its edge function negated and biased by
+    /// one) give the same g = dy (x - xu) - dx (y - yu) at pixel centres. Cost: one int32 division, two
+    /// for edges flatter than one pixel per row.
+    Walker walker(int u, int l, int32_t py) const { return walker_inline(u, l, py); }
     /// walker() inlined: scan_kernel() writes its fields straight into the kernel state.
-    __attribute__((always_inline)) Walker walker_inline(int edge, int32_t py) const {
-        const int a = edge, b = next3(edge);
-        const int32_t dx = x_[b] - x_[a], dy = y_[b] - y_[a];
-        const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;  // top-left rule
+    __attribute__((always_inline)) Walker walker_inline(int u, int l, int32_t py) const {
+        const int32_t xu = xs_[u], yu = ys_[u];
+        const int32_t dx = xs_[l] - xu, dy = ys_[l] - yu;  // dy > 0
         const int32_t yc = py * kSubpixel + y_origin_;
-        // Biased edge function at the centre of pixel 0 of row py; exact in int32 (CONVENTIONS.md).
-        const int32_t e0 = dx * (yc - y_[a]) - dy * (x_origin_ - x_[a]) + bias;
+        // g at the centre of pixel 0 of row py; exact in int32 (CONVENTIONS.md).
+        const int32_t g0 = dy * (x_origin_ - xu) - dx * (yc - yu);
         Walker w;
-        w.left = dy < 0;  // the edge function grows to the right, so the covered side is to the right
-        w.a = (w.left ? -dy : dy) * kSubpixel;
-        const int32_t g0 = w.left ? e0 : -e0 - 1;
-        const int32_t dg = (w.left ? dx : -dx) * kSubpixel;  // change of g per row at a fixed px
+        w.a = dy * kSubpixel;
+        const int32_t dg = -dx * kSubpixel;  // change of g per row at a fixed px
         w.px = -div_floor32(g0, w.a);
         w.g = g0 + w.px * w.a;
         if (dg >= 0 && dg < w.a) w.q = 0;
         else if (dg < 0 && dg >= -w.a) w.q = 1;
         else w.q = -div_floor32(dg, w.a);
         w.m = dg + w.q * w.a;  // dg mod a, in [0, a)
-        if (w.left) {  // only the left edge carries depth
-            w.z = depth_at(w.px, py);
-            w.dz_row = dzdy_ + dzdx_ * static_cast<uint32_t>(w.q);
-        } else {
-            w.z = w.dz_row = 0;
-        }
         return w;
     }
 
-    /// The kernel's left (with depth) and right edge from walkers.
-    static void set_kernel_left(RowKernel& k, const Walker& w) {
-        k.lpx = w.px; k.lg = w.g; k.la = w.a; k.lm = w.m; k.lq = w.q; k.lz = w.z; k.ldz = w.dz_row;
+    /// The kernel's left edge (with its depth on row py) and right edge from walkers.
+    __attribute__((always_inline)) void set_kernel_left(RowKernel& k, const Walker& w, int32_t py) const {
+        k.lpx = w.px; k.lg = w.g; k.la = w.a; k.lm = w.m; k.lq = w.q;
+        k.lz = depth_at(w.px, py);
+        k.ldz = dzdy_ + dzdx_ * static_cast<uint32_t>(w.q);
     }
-    static void set_kernel_right(RowKernel& k, const Walker& w) {
+    __attribute__((always_inline)) static void set_kernel_right(RowKernel& k, const Walker& w) {
         k.rpx = w.px; k.rg = w.g; k.ra = w.a; k.rm = w.m; k.rq = w.q;
+    }
+    /// Writes walker w (on row py) as the kernel's left edge, with its depth, or as its right edge.
+    __attribute__((always_inline)) void set_kernel_edge(RowKernel& k, bool left, const Walker& w, int32_t py) const {
+        if (left) set_kernel_left(k, w, py);
+        else set_kernel_right(k, w);
     }
 
     // No default initialisers: setup() writes every member, and a per-triangle memset costs real time.
-    int32_t x_[3], y_[3];
+    int32_t xs_[3], ys_[3];  ///< vertices sorted by y: top, mid, bottom
     int32_t width_, x_origin_, y_origin_;
-    int top_, mid_, bottom_;
     int32_t row_top_, row_mid_, row_bottom_;
     int32_t ref_px_, ref_py_;
     uint32_t z_ref_, dzdx_, dzdy_;
     bool front_;
+    bool long_left_;  ///< the edge top -> bottom bounds the triangle on the left
 };
 
 }  // namespace hider
