@@ -46,12 +46,12 @@ inline hider::RowKernel make_case(Rng& rng, Buffers& b) {
     // from [21, 38] stays >= 0 and a right edge from [20, 50] <= 64: every pixel touched is in the row.
     k.la = rng.range(1, 1 << 19);
     k.lm = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.la));
-    k.lg = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.la));
+    k.lg = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.la)) - k.la;  // biased: [-a, 0)
     k.lq = rng.range(-2, 2);
     k.lpx = rng.range(21, 38);
     k.ra = rng.range(1, 1 << 19);
     k.rm = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.ra));
-    k.rg = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.ra));
+    k.rg = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.ra)) - k.ra;
     k.rq = rng.range(-2, 2);
     k.rpx = rng.range(20, 50);  // empty, one-pixel and long spans
     k.dzdx = rng.next() >> rng.range(8, 31);

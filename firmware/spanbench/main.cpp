@@ -81,6 +81,7 @@ int main() {
         k.lpx = 0;
         k.rpx = x1;
         k.la = k.ra = 16;
+        k.lg = k.rg = -16;  // biased error terms in [-a, 0): no correction
         k.lz = z_q32;
         k.rows = 1;
         k.stride_bytes = 2 * kRowPixels;

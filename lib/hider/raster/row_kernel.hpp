@@ -15,29 +15,32 @@
 
 namespace hider {
 
-/// State of the row kernel. The field order is the ARMv7-M loop's contract (load-multiples), checked
-/// by the static_asserts below. Edges: px is the boundary pixel, g the error term in [0, a), stepped
-/// per row by g += m, px += q, then one correction (g >= a: g -= a, px -= 1, and the left depth z -= dzdx).
+/// State of the row kernel. The field order is the assembly loops' contract (load-multiples and
+/// offsets), checked by the static_asserts below. Edges: px is the boundary pixel and g the error term
+/// biased by -a, in [-a, 0), stepped per row by g += m, px += q, then one correction (g >= 0: g -= a,
+/// px -= 1, and the left depth z -= dzdx); the bias lets the add's sign flag decide the correction.
 struct RowKernel {
     int32_t lpx, lg;
     uint32_t lz;
     int32_t rpx, rg;
     int32_t rows;            ///< rows to run, >= 1
     int32_t la, lm, lq;
-    uint32_t ldz, dzdx;      ///< left depth step per row (dz/dy + q dz/dx) and per pixel
+    uint32_t ldz;            ///< left depth step per row (dz/dy + q dz/dx)
     int32_t ra, rm, rq;
     int32_t stride_bytes;    ///< bytes from one depth row to the next
+    uint32_t dzdx;           ///< depth step per pixel, for the left edge's correction
     uint16_t* zrow;          ///< depth row of the current row
-    uint32_t dz;             ///< depth step per pixel (= dzdx)
+    uint32_t dz;             ///< depth step per pixel in spans (= dzdx)
     intptr_t color_offset;   ///< bytes from a pixel's depth to its colour
     uint32_t color;          ///< RGB565 in the low half
 };
 
-// The Thumb-2 loop's offsets (32-bit pointers).
+// The assembly loops' offsets (32-bit pointers).
 static_assert(sizeof(void*) != 4 || (offsetof(RowKernel, rows) == 20 && offsetof(RowKernel, la) == 24 &&
-                                     offsetof(RowKernel, ra) == 44 && offsetof(RowKernel, stride_bytes) == 56 &&
+                                     offsetof(RowKernel, ldz) == 36 && offsetof(RowKernel, ra) == 40 &&
+                                     offsetof(RowKernel, stride_bytes) == 52 && offsetof(RowKernel, dzdx) == 56 &&
                                      offsetof(RowKernel, zrow) == 60 && offsetof(RowKernel, dz) == 64 &&
-                                     offsetof(RowKernel, color) == 72),
+                                     offsetof(RowKernel, color_offset) == 68 && offsetof(RowKernel, color) == 72),
               "row kernel layout");
 
 /// The kernel in C++: k.rows rows, then k's edges, depth and zrow are those of the next row.
@@ -69,10 +72,10 @@ inline void run_row_kernel_portable(RowKernel& k) {
         lg += k.lm;
         lpx += k.lq;
         lz += k.ldz;
-        if (lg >= k.la) { lg -= k.la; --lpx; lz -= k.dzdx; }
+        if (lg >= 0) { lg -= k.la; --lpx; lz -= k.dzdx; }
         rg += k.rm;
         rpx += k.rq;
-        if (rg >= k.ra) { rg -= k.ra; --rpx; }
+        if (rg >= 0) { rg -= k.ra; --rpx; }
         zrow = reinterpret_cast<uint16_t*>(reinterpret_cast<uintptr_t>(zrow) + static_cast<uintptr_t>(k.stride_bytes));
     }
     k.lpx = lpx; k.lg = lg; k.lz = lz; k.rpx = rpx; k.rg = rg; k.zrow = zrow;
@@ -80,23 +83,24 @@ inline void run_row_kernel_portable(RowKernel& k) {
 #pragma GCC diagnostic pop
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-/// run_row_kernel_portable() in Thumb-2. Registers: r0 the state's left-edge constants (offset 24),
-/// r1..r5 lpx lg lz rpx rg, r6 rows left, r7 zrow; per row the constants come back with one
-/// load-multiple per edge. Pixel loop: indexes
-/// back from the span's end (r7 depth, r9 colour) with r11 = -(pixels left) counting up to 0, lr z,
-/// r12 scratch, r8 dz, r10 colour (9 instructions a written pixel, 6 a rejected one).
+/// run_row_kernel_portable() in Thumb-2. Registers: r0 the right edge's constants (offset 40), with
+/// the left edge's just below (load-multiple decrement-before), r1..r5 lpx lg lz rpx rg, r6 rows left,
+/// r7 zrow, r8 dz, r10 colour. Pixel loop: indexes back from the span's end (r7 depth, r9 colour) with
+/// r11 = -(pixels left) counting up to 0, lr z, r12 scratch (9 instructions a written pixel, 6 a
+/// rejected one). Per row outside the pixels: 21 instructions, plus 4 and 2 for edge corrections.
 __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"
         "ldm    r0, {r1-r6}\n\t"           // lpx lg lz rpx rg rows
         "ldr    r7, [r0, #60]\n\t"        // zrow
-        "add    r0, r0, #24\n"            // r0: the left edge's constants (offset 24)
+        "ldr    r8, [r0, #64]\n\t"        // dz
+        "ldr    r10, [r0, #72]\n\t"       // colour
+        "add    r0, r0, #40\n"            // r0: the right edge's constants (offset 40)
         "1:\n\t"                           // row
         "cmp    r1, r4\n\t"
         "bge    3f\n\t"                    // empty span
-        "add    lr, r0, #40\n\t"
-        "ldm    lr, {r8-r10}\n\t"          // dz, colour offset, colour (offset 64)
+        "ldr    r9, [r0, #28]\n\t"        // colour offset (68)
         "add    r7, r7, r4, lsl #1\n\t"    // depth row + 2 rpx (restored after the span)
         "add    r9, r9, r7\n\t"            // colour row + 2 rpx
         "sub    r11, r1, r4\n\t"           // x = lpx - rpx: negative, counts up to 0
@@ -114,29 +118,27 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v7m(RowKernel*) {
         "bne    2b\n\t"
         "sub    r7, r7, r4, lsl #1\n"
         "3:\n\t"                           // left edge: g += m, px += q, z += dz_row, then correct
-        "ldm    r0, {r8-r12}\n\t"          // la lm lq ldz dzdx
-        "add    r2, r2, r9\n\t"
-        "add    r1, r1, r10\n\t"
-        "add    r3, r3, r11\n\t"
-        "cmp    r2, r8\n\t"
-        "blt    5f\n\t"
-        "sub    r2, r2, r8\n\t"
+        "ldmdb  r0, {r9, r11, r12, lr}\n\t" // la lm lq ldz (offset 24)
+        "adds   r2, r2, r11\n\t"
+        "add    r1, r1, r12\n\t"
+        "add    r3, r3, lr\n\t"
+        "bmi    5f\n\t"                    // g < 0: no correction
+        "sub    r2, r2, r9\n\t"
         "sub    r1, r1, #1\n\t"
-        "sub    r3, r3, r12\n"
+        "ldr    r9, [r0, #16]\n\t"        // dzdx (56)
+        "sub    r3, r3, r9\n"
         "5:\n\t"                           // right edge, then the next depth row
-        "add    lr, r0, #20\n\t"
-        "ldm    lr, {r8-r11}\n\t"          // ra rm rq stride (offset 44)
-        "add    r5, r5, r9\n\t"
-        "add    r4, r4, r10\n\t"
-        "cmp    r5, r8\n\t"
-        "blt    6f\n\t"
-        "sub    r5, r5, r8\n\t"
+        "ldm    r0, {r9, r11, r12, lr}\n\t" // ra rm rq stride (offset 40)
+        "adds   r5, r5, r11\n\t"
+        "add    r4, r4, r12\n\t"
+        "bmi    6f\n\t"
+        "sub    r5, r5, r9\n\t"
         "sub    r4, r4, #1\n"
         "6:\n\t"
-        "add    r7, r7, r11\n\t"
+        "add    r7, r7, lr\n\t"
         "subs   r6, r6, #1\n\t"
         "bne    1b\n\t"
-        "sub    r0, r0, #24\n\t"
+        "sub    r0, r0, #40\n\t"
         "stm    r0, {r1-r5}\n\t"
         "str    r7, [r0, #60]\n\t"
         "pop    {r4-r11, pc}\n");
@@ -160,7 +162,7 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v6m(RowKernel*) {
         "mov    r7, r11\n\t"
         "push   {r4-r7}\n\t"
         "mov    r12, r0\n\t"
-        "ldr    r1, [r0, #56]\n\t"        // stride bytes
+        "ldr    r1, [r0, #52]\n\t"        // stride bytes
         "mov    lr, r1\n\t"
         "ldr    r2, [r0, #60]\n\t"        // zrow
         "mov    r10, r2\n\t"
@@ -200,28 +202,26 @@ __attribute__((naked, noinline)) inline void run_row_kernel_v6m(RowKernel*) {
         "mov    r0, r12\n\t"
         "ldm    r0!, {r1-r4}\n\t"         // lpx lg lz rpx back
         "mov    r0, r12\n"
-        "3:\n\t"                          // left edge: g += m, px += q, z += dz_row, then correct
-        "ldr    r6, [r0, #28]\n\t"        // lm
-        "adds   r2, r2, r6\n\t"
+        "3:\n\t"                          // left edge: px += q, z += dz_row, g += m, then correct
         "ldr    r6, [r0, #32]\n\t"        // lq
         "adds   r1, r1, r6\n\t"
         "ldr    r6, [r0, #36]\n\t"        // ldz
         "adds   r3, r3, r6\n\t"
+        "ldr    r6, [r0, #28]\n\t"        // lm
+        "adds   r2, r2, r6\n\t"
+        "bmi    5f\n\t"                   // g < 0: no correction
         "ldr    r6, [r0, #24]\n\t"        // la
-        "cmp    r2, r6\n\t"
-        "blt    5f\n\t"
         "subs   r2, r2, r6\n\t"
         "subs   r1, r1, #1\n\t"
-        "ldr    r6, [r0, #40]\n\t"        // dzdx
+        "ldr    r6, [r0, #56]\n\t"        // dzdx
         "subs   r3, r3, r6\n"
         "5:\n\t"                          // right edge
-        "ldr    r6, [r0, #48]\n\t"        // rm
-        "adds   r5, r5, r6\n\t"
-        "ldr    r6, [r0, #52]\n\t"        // rq
+        "ldr    r6, [r0, #48]\n\t"        // rq
         "adds   r4, r4, r6\n\t"
-        "ldr    r6, [r0, #44]\n\t"        // ra
-        "cmp    r5, r6\n\t"
-        "blt    6f\n\t"
+        "ldr    r6, [r0, #44]\n\t"        // rm
+        "adds   r5, r5, r6\n\t"
+        "bmi    6f\n\t"
+        "ldr    r6, [r0, #40]\n\t"        // ra
         "subs   r5, r5, r6\n\t"
         "subs   r4, r4, #1\n"
         "6:\n\t"                          // next depth row

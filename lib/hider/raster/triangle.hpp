@@ -288,12 +288,12 @@ private:
 
     /// The kernel's left edge (with its depth on row py) and right edge from walkers.
     __attribute__((always_inline)) void set_kernel_left(RowKernel& k, const Walker& w, int32_t py) const {
-        k.lpx = w.px; k.lg = w.g; k.la = w.a; k.lm = w.m; k.lq = w.q;
+        k.lpx = w.px; k.lg = w.g - w.a; k.la = w.a; k.lm = w.m; k.lq = w.q;
         k.lz = depth_at(w.px, py);
         k.ldz = dzdy_ + dzdx_ * static_cast<uint32_t>(w.q);
     }
     __attribute__((always_inline)) static void set_kernel_right(RowKernel& k, const Walker& w) {
-        k.rpx = w.px; k.rg = w.g; k.ra = w.a; k.rm = w.m; k.rq = w.q;
+        k.rpx = w.px; k.rg = w.g - w.a; k.ra = w.a; k.rm = w.m; k.rq = w.q;
     }
     /// Writes walker w (on row py) as the kernel's left edge, with its depth, or as its right edge.
     __attribute__((always_inline)) void set_kernel_edge(RowKernel& k, bool left, const Walker& w, int32_t py) const {
