@@ -327,7 +327,7 @@ constexpr int64_t div_round_pow2(int64_t n, int shift) {
 }
 
 /// floor(n / d) for int32 n and d > 0 (C++ '/' truncates toward zero instead).
-constexpr int32_t div_floor32(int32_t n, int32_t d) {
+__attribute__((always_inline)) constexpr int32_t div_floor32(int32_t n, int32_t d) {
     // One unsigned division (the library's signed divmod costs more on ARMv6-M, which has no divide).
     if (n >= 0) return static_cast<int32_t>(static_cast<uint32_t>(n) / static_cast<uint32_t>(d));
     const uint32_t un = 0u - static_cast<uint32_t>(n);  // floor(-m / d) = -ceil(m / d) = -floor((m + d - 1) / d)
