@@ -39,6 +39,41 @@ struct ScreenVertex {
 };
 static_assert(sizeof(ScreenVertex) == 8, "ScreenVertex is two halfwords and a word");
 
+namespace detail {
+
+/// Rows of the band in centre-relative subpixels, for a cheap reject before setup.
+struct BandBounds {
+    int32_t y_first, y_last, x_first, x_last;
+    int32_t y_origin;  ///< centre of row 0
+};
+template <class Frame>
+BandBounds band_bounds(const Frame& f) {
+    const int32_t ox = kSubpixel / 2 - f.width * (kSubpixel / 2), oy = kSubpixel / 2 - f.height * (kSubpixel / 2);
+    return {f.y0 * kSubpixel + oy, (f.y1 - 1) * kSubpixel + oy, ox, (f.width - 1) * kSubpixel + ox, oy};
+}
+
+/// A triangle's bounding box in centre-relative subpixels.
+struct ScreenBox {
+    int32_t x_min, x_max, y_min, y_max;
+};
+inline ScreenBox screen_box(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    return {min<int32_t>(a.x, min<int32_t>(b.x, c.x)), max<int32_t>(a.x, max<int32_t>(b.x, c.x)),
+            min<int32_t>(a.y, min<int32_t>(b.y, c.y)), max<int32_t>(a.y, max<int32_t>(b.y, c.y))};
+}
+
+/// True when no pixel centre of the band lies in the box: the box is outside the band, or a tiny
+/// triangle's box falls between centres. Shifts and compares only, so such triangles skip the setup
+/// and its divisions.
+inline bool misses_band(const ScreenBox& box, const BandBounds& bb) {
+    if (box.y_max < bb.y_first || box.y_min > bb.y_last || box.x_max < bb.x_first || box.x_min > bb.x_last) return true;
+    // First centre at or after the minimum: centres sit at origin + 16 k.
+    const int32_t cx = ((box.x_min - bb.x_first + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.x_first;
+    const int32_t cy = ((box.y_min - bb.y_origin + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.y_origin;
+    return cx > box.x_max || cy > box.y_max;
+}
+
+}  // namespace detail
+
 /// One triangle set up for traversal. setup() once; then spans(y_begin, y_end, fn) any number of
 /// times for any row ranges (bands) with identical results per row.
 class TriangleRaster {
@@ -57,6 +92,26 @@ public:
     /// setup() with the caller's signed_area(a, b, c).
     bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, int32_t width,
                int32_t height) {
+        return setup_impl<false>(a, b, c, area, width, height, nullptr);
+    }
+    /// setup() for one band: also false, before the depth plane (the divisions), when no pixel centre
+    /// of the band lies in the triangle's bounding box (detail::misses_band); nothing is drawn then.
+    __attribute__((always_inline)) bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                                              int32_t area, int32_t width, int32_t height,
+                                              const detail::BandBounds& band) {
+        return setup_impl<true>(a, b, c, area, width, height, &band);
+    }
+
+    bool front() const { return front_; }
+    int32_t first_row() const { return row_top_; }
+    int32_t end_row() const { return row_bottom_; }
+    uint32_t dzdx() const { return dzdx_; }
+
+private:
+    template <bool kBandTest>
+    __attribute__((always_inline)) bool setup_impl(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                                                   int32_t area, int32_t width, int32_t height,
+                                                   const detail::BandBounds* band) {
         row_top_ = row_mid_ = row_bottom_ = 0;  // an empty row range if we return early
         front_ = false;
         if (area == 0) {
@@ -71,7 +126,6 @@ public:
         width_ = width;
         x_origin_ = kSubpixel / 2 - width * (kSubpixel / 2);
         y_origin_ = kSubpixel / 2 - height * (kSubpixel / 2);
-        setup_depth(a, v1, v2, area);
         // Rows: the vertices sorted by y (top, mid, bottom), counting swaps. The long edge (top to
         // bottom) is the left one when the clockwise order runs bottom -> top, i.e. when (top, mid,
         // bottom) is an even permutation of (a, v1, v2).
@@ -80,20 +134,22 @@ public:
         if (ym < yt) { swap_values(xm, xt); swap_values(ym, yt); even = !even; }
         if (yb < ym) { swap_values(xb, xm); swap_values(yb, ym); even = !even; }
         if (ym < yt) { swap_values(xm, xt); swap_values(ym, yt); even = !even; }
+        const int32_t x_min = min(xt, min(xm, xb)), x_max = max(xt, max(xm, xb));
+        if (kBandTest && detail::misses_band({x_min, x_max, yt, yb}, *band)) return false;
         long_left_ = even;
+        clip_left_ = x_min < x_origin_;
+        clip_right_ = x_max > x_origin_ + (width - 1) * kSubpixel;
         xs_[0] = xt; ys_[0] = yt;
         xs_[1] = xm; ys_[1] = ym;
         xs_[2] = xb; ys_[2] = yb;
         row_top_ = first_row_at_or_below(yt);
         row_mid_ = first_row_at_or_below(ym);
         row_bottom_ = first_row_at_or_below(yb);
+        setup_depth(a, v1, v2, area);
         return true;
     }
 
-    bool front() const { return front_; }
-    int32_t first_row() const { return row_top_; }
-    int32_t end_row() const { return row_bottom_; }
-    uint32_t dzdx() const { return dzdx_; }
+public:
 
     /// Visits every row y in [y_begin, y_end) the triangle touches, in order: rows.begin(y0) once,
     /// then rows(x0, x1, z) per row with the covered pixels [x0, x1) clipped to [0, width) (possibly
@@ -105,8 +161,7 @@ public:
     uint32_t scan(int32_t y_begin, int32_t y_end, RowFn& rows_fn) const {
         const int32_t y0 = max(row_top_, y_begin), y1 = min(row_bottom_, y_end);
         if (y0 >= y1) return 0;
-        const bool left = min(xs_[0], min(xs_[1], xs_[2])) < x_origin_;
-        const bool right = max(xs_[0], max(xs_[1], xs_[2])) > x_origin_ + (width_ - 1) * kSubpixel;
+        const bool left = clip_left_, right = clip_right_;
         if (left) return right ? scan_rows<true, true>(y0, y1, rows_fn) : scan_rows<true, false>(y0, y1, rows_fn);
         if (right) return scan_rows<false, true>(y0, y1, rows_fn);
         if constexpr (RowFn::kRowKernel) return scan_kernel(y0, y1, rows_fn);
@@ -308,7 +363,8 @@ private:
     int32_t ref_px_, ref_py_;
     uint32_t z_ref_, dzdx_, dzdy_;
     bool front_;
-    bool long_left_;  ///< the edge top -> bottom bounds the triangle on the left
+    bool long_left_;
+    bool clip_left_, clip_right_;  ///< spans may start left of pixel 0 / end past the last column  ///< the edge top -> bottom bounds the triangle on the left
 };
 
 }  // namespace hider

@@ -11,37 +11,6 @@ namespace hider {
 
 namespace detail {
 
-/// Rows of the band in centre-relative subpixels, for a cheap reject before setup.
-struct BandBounds {
-    int32_t y_first, y_last, x_first, x_last;
-    int32_t y_origin;  ///< centre of row 0
-};
-template <class Frame>
-BandBounds band_bounds(const Frame& f) {
-    const int32_t ox = kSubpixel / 2 - f.width * (kSubpixel / 2), oy = kSubpixel / 2 - f.height * (kSubpixel / 2);
-    return {f.y0 * kSubpixel + oy, (f.y1 - 1) * kSubpixel + oy, ox, (f.width - 1) * kSubpixel + ox, oy};
-}
-
-/// A triangle's bounding box in centre-relative subpixels.
-struct ScreenBox {
-    int32_t x_min, x_max, y_min, y_max;
-};
-inline ScreenBox screen_box(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-    return {min<int32_t>(a.x, min<int32_t>(b.x, c.x)), max<int32_t>(a.x, max<int32_t>(b.x, c.x)),
-            min<int32_t>(a.y, min<int32_t>(b.y, c.y)), max<int32_t>(a.y, max<int32_t>(b.y, c.y))};
-}
-
-/// True when no pixel centre of the band lies in the box: the box is outside the band, or a tiny
-/// triangle's box falls between centres. Shifts and compares only, so such triangles skip the setup
-/// and its divisions.
-inline bool misses_band(const ScreenBox& box, const BandBounds& bb) {
-    if (box.y_max < bb.y_first || box.y_min > bb.y_last || box.x_max < bb.x_first || box.x_min > bb.x_last) return true;
-    // First centre at or after the minimum: centres sit at origin + 16 k.
-    const int32_t cx = ((box.x_min - bb.x_first + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.x_first;
-    const int32_t cy = ((box.y_min - bb.y_origin + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.y_origin;
-    return cx > box.x_max || cy > box.y_max;
-}
-
 /// Calls piece(a, b, c) for each drawable triangle of mesh triangle t: the triangle itself, or the fan
 /// of its clipped polygon. Counts outside/clipped triangles in `st`.
 template <class Piece>
@@ -205,9 +174,8 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
     };
     // One drawable triangle with its signed area (< 0: front face), culling already decided.
     auto draw = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, size_t t) {
-        if (detail::misses_band(detail::screen_box(a, b, c), bb)) return;
         TriangleRaster tr;
-        tr.setup(a, b, c, area, frame.width, frame.height);
+        if (!tr.setup(a, b, c, area, frame.width, frame.height, bb)) return;  // no pixel centre of the band
         st.triangles_drawn += whole_frame || owns(tr.first_row());  // first_row(): the same rounding
         const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
         if (opt.shade == Shade::depth) {
