@@ -53,7 +53,7 @@ constexpr int32_t dot3_q30_floor_by_parts(int32_t r0, int32_t r1, int32_t r2, in
 }
 
 /// Row r of a Q30 matrix times a Q16 vector, plus a Q16 offset; one floor at the end.
-constexpr Q16 row_dot(const Q30 (&row)[3], Vec3q16 p, Q16 offset) {
+__attribute__((always_inline)) constexpr Q16 row_dot(const Q30 (&row)[3], const Vec3q16& p, Q16 offset) {
 #if defined(__ARM_ARCH_6M__)
     return Q16::from_raw(dot3_q30_floor_by_parts(row[0].raw(), row[1].raw(), row[2].raw(), p.x.raw(), p.y.raw(),
                                                  p.z.raw()) + offset.raw());
@@ -66,7 +66,7 @@ constexpr Q16 row_dot(const Q30 (&row)[3], Vec3q16 p, Q16 offset) {
 }  // namespace detail
 
 /// Applies t to point p (rotation then translation), floored once per component.
-constexpr Vec3q16 apply(const Transform& t, Vec3q16 p) {
+constexpr Vec3q16 apply(const Transform& t, const Vec3q16& p) {
     return {detail::row_dot(t.rot.m[0], p, t.trans.x), detail::row_dot(t.rot.m[1], p, t.trans.y),
             detail::row_dot(t.rot.m[2], p, t.trans.z)};
 }
@@ -85,7 +85,7 @@ public:
     }
     constexpr const Transform& transform() const { return t_; }
 
-    constexpr Vec3q16 apply(Vec3q16 p) const {
+    constexpr Vec3q16 apply(const Vec3q16& p) const {
 #if defined(__ARM_ARCH_6M__)
         return apply_by_parts(p);
 #else
@@ -94,7 +94,7 @@ public:
     }
 
     /// The ARMv6-M form of apply() (32-bit multiplies only), available everywhere for tests.
-    constexpr Vec3q16 apply_by_parts(Vec3q16 p) const {
+    constexpr Vec3q16 apply_by_parts(const Vec3q16& p) const {
         const int32_t ph[3] = {p.x.raw() >> 16, p.y.raw() >> 16, p.z.raw() >> 16};
         const int32_t pl[3] = {p.x.raw() & 0xFFFF, p.y.raw() & 0xFFFF, p.z.raw() & 0xFFFF};
         return {Q16::from_raw(row(0, ph, pl) + t_.trans.x.raw()), Q16::from_raw(row(1, ph, pl) + t_.trans.y.raw()),

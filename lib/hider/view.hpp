@@ -90,7 +90,7 @@ __attribute__((always_inline)) inline ViewPoint to_view_point(const View& v, Vec
 inline int64_t guard_of(int32_t w) { return mul_wide(w, kGuardBand * 256); }
 
 /// to_view_point() through a PreparedTransform of v.to_view (many points, one view).
-__attribute__((always_inline)) inline ViewPoint to_view_point(const PreparedTransform& t, Vec3q16 p) {
+__attribute__((always_inline)) inline ViewPoint to_view_point(const PreparedTransform& t, const Vec3q16& p) {
     const Vec3q16 q = t.apply(p);
     return {q.x.raw(), q.y.raw(), -q.z.raw()};
 }
