@@ -53,7 +53,6 @@ struct DepthRange {
 inline Status project_vertices(const View& view, Span<const Vec3q16> positions, Span<ScreenVertex> out,
                                DepthRange* range = nullptr) {
     if (out.size() < positions.size()) return Status::invalid_argument;
-    DepthRange r;
     const PreparedTransform to_view(view.to_view);
     for (size_t i = 0; i < positions.size(); ++i) {
         const ViewPoint p = to_view_point(to_view, positions[i]);
@@ -68,10 +67,17 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
         o.x = s.x;
         o.y = s.y;
         o.z = s.z;
-        r.min = min(r.min, s.z);
-        r.max = max(r.max, s.z);
     }
-    if (range != nullptr) *range = r;
+    if (range != nullptr) {  // a second pass, so frames without depth shading do not pay for it
+        DepthRange r;
+        for (size_t i = 0; i < positions.size(); ++i) {
+            const uint32_t z = out[i].z;
+            if (z == 0) continue;  // outside a clip plane
+            r.min = min(r.min, z);
+            r.max = max(r.max, z);
+        }
+        *range = r;
+    }
     return Status::ok;
 }
 

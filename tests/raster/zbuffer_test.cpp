@@ -2,6 +2,7 @@
 // shading, band rendering == full frame in every format, and the documented depth resolution.
 #include <hider/raster/zbuffer.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -246,4 +247,40 @@ TEST_CASE("make_view and validate reject out-of-range cameras and meshes") {
     CHECK(validate(m) == Status::bad_data);
     m = Mesh{{pts, 3}, {&good, 1}, {}, {}};
     CHECK(validate(m) == Status::out_of_range);
+}
+
+TEST_CASE("project_vertices' depth range spans exactly the drawable vertices") {
+    tool::CameraArgs cam = front_camera(0);
+    cam.target = tool::Vec3d{0, 0, -1};
+    cam.near = 0.5;
+    cam.far = 50;
+    // Two triangles in view at different depths, one wholly behind the eye, one past the far plane.
+    const tool::Scene s = scene_of({{{{-1, -1, -3}, {1, -1, -3}, {0, 1, -4}}},
+                                    {{{-2, -2, -9}, {2, -2, -9}, {0, 2, -8}}},
+                                    {{{-1, -1, 3}, {1, -1, 3}, {0, 1, 3}}},
+                                    {{{-1, -1, -80}, {1, -1, -80}, {0, 1, -80}}}},
+                                   cam);
+    View view;
+    REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
+    std::vector<ScreenVertex> verts(s.positions.size());
+    DepthRange range;
+    REQUIRE(project_vertices(view, s.mesh().positions, {verts.data(), verts.size()}, &range) == Status::ok);
+    uint32_t lo = UINT32_MAX, hi = 0;
+    int outside = 0;
+    for (const ScreenVertex& v : verts) {
+        if (v.outside() != 0) { ++outside; continue; }
+        lo = std::min(lo, v.z);
+        hi = std::max(hi, v.z);
+    }
+    CHECK(outside == 6);
+    CHECK(range.min == lo);
+    CHECK(range.max == hi);
+    CHECK(range.min < range.max);
+    // Nothing drawable: the empty range (min > max), as before any vertex.
+    const tool::Scene behind = scene_of({{{{-1, -1, 3}, {1, -1, 3}, {0, 1, 3}}}}, cam);
+    std::vector<ScreenVertex> bverts(behind.positions.size());
+    DepthRange empty;
+    REQUIRE(project_vertices(view, behind.mesh().positions, {bverts.data(), bverts.size()}, &empty) == Status::ok);
+    CHECK(empty.min == kDepthFar);
+    CHECK(empty.max == kDepthNear);
 }

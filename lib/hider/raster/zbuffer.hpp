@@ -187,23 +187,28 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
             tr, y_begin, y_end, frame, FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))},
             st.pixels_written);
     };
+    // Loop invariants in locals: the lambdas capture st by reference, so GCC would reload them per triangle.
+    const bool cull = opt.cull;
+    const Tri* const tris = mesh.tris.data();
+    const ScreenVertex* const vp = verts.data();
+    const size_t tri_count = mesh.tris.size();
     // False for zero area and culled faces (counted). Inline: most triangles end here.
     auto keep = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area)
                     __attribute__((always_inline)) {
         if (area == 0) return false;
-        if (opt.cull && area > 0) {
+        if (cull && area > 0) {
             st.triangles_culled += whole_frame ||
                 owns((min(a.y, min(b.y, c.y)) - bb.y_origin + kSubpixel - 1) >> kSubpixelBits);
             return false;
         }
         return true;
     };
-    st.triangles_in = static_cast<uint32_t>(mesh.tris.size());
-    for (size_t t = 0; t < mesh.tris.size(); ++t) {
-        const Tri& tri = mesh.tris[t];
-        const ScreenVertex& a = verts[tri.v[0]];
-        const ScreenVertex& b = verts[tri.v[1]];
-        const ScreenVertex& c = verts[tri.v[2]];
+    st.triangles_in = static_cast<uint32_t>(tri_count);
+    for (size_t t = 0; t < tri_count; ++t) {
+        const Tri& tri = tris[t];
+        const ScreenVertex& a = vp[tri.v[0]];
+        const ScreenVertex& b = vp[tri.v[1]];
+        const ScreenVertex& c = vp[tri.v[2]];
         if (a.z != 0 && b.z != 0 && c.z != 0) {  // drawable vertices: the common case, no call for culled faces
             const int32_t area = TriangleRaster::signed_area(a, b, c);
             if (keep(a, b, c, area)) draw(a, b, c, area, t);
