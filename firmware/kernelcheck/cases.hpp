@@ -1,8 +1,10 @@
 // Random row-kernel cases shared by the kernelcheck firmware and its host twin: each case is a
 // RowKernel state (edges that stay inside a 64-pixel row for its rows, random steps, corrections and
 // depths) over depth and colour rows filled with random values. run_cases() runs every case through
-// `run` and folds the buffers and the final states into one 32-bit digest per case.
+// `run` and folds the buffers and the final states into one 32-bit digest per case. fill_digest()
+// covers the frame clear (detail::fill, store-multiples on Cortex-M) the same way.
 #pragma once
+#include <hider/frame.hpp>
 #include <hider/raster/row_kernel.hpp>
 
 namespace kernelcheck {
@@ -103,6 +105,35 @@ void run_cases(Run&& run, Buffers& b, uint32_t* out) {
         run(k);
         out[c] = digest(b, k);
     }
+}
+
+/// Longest fill tried: more than three of the ARMv7-M clear's 20-word blocks and five of the ARMv6-M
+/// clear's 12-word blocks, so every loop and every remainder runs.
+constexpr uint32_t kFillMax = 130;
+
+/// One digest of `fill` over every length 0..kFillMax from an odd and an even 16-bit element, each
+/// with guard elements on both sides (an overrun or a missed element changes it).
+template <class Fill>
+uint32_t fill_digest(Fill&& fill, Buffers& b) {
+    static_assert(kFillMax + 6 <= kMaxRows * kWidth, "fill cases fit the buffer");
+    uint32_t h = 2166136261u;
+    // A 4-byte-aligned base, so the two starts are one word-aligned and one not on every target.
+    uint16_t* const base = b.depth + ((reinterpret_cast<uintptr_t>(b.depth) & 2u) != 0 ? 1 : 0);
+    for (uint32_t start = 1; start <= 2; ++start)
+        for (uint32_t n = 0; n <= kFillMax; ++n) {
+            for (uint32_t i = 0; i < n + 4; ++i) base[i] = static_cast<uint16_t>(0xA5A5u ^ (i * 257u));
+            fill(base + start, n, static_cast<uint16_t>(0x1234u + n));
+            for (uint32_t i = 0; i < n + 4; ++i) {
+                h ^= base[i];
+                h *= 16777619u;
+            }
+        }
+    return h;
+}
+
+/// The plain loop the clear must equal.
+inline void fill_plain(uint16_t* p, uint32_t n, uint16_t v) {
+    for (uint32_t i = 0; i < n; ++i) p[i] = v;
 }
 
 }  // namespace kernelcheck
