@@ -7,7 +7,7 @@
 // and a Thumb-1 loop on ARMv6-M (M0/M0+). At -Os GCC cannot keep the two edges, the row pointer and the
 // span in registers across rows (about 60 instructions a row on the M3 with the span as a call, 45 of
 // them outside the pixels); the assembly keeps the variables in registers and reloads constants with
-// load-multiples (about 27 a row on the M3), writing the same bytes. The firmware tests compare its
+// load-multiples (21 a row outside the pixels on the M3), writing the same bytes. The firmware tests compare its
 // frames with the host's, and firmware/kernelcheck runs it against run_row_kernel_portable() on random
 // states.
 #pragma once
