@@ -54,6 +54,20 @@ inline hider::RowKernel make_case(Rng& rng, Buffers& b) {
     k.ra = rng.range(1, 1 << 19);
     k.rm = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.ra));
     k.rg = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.ra)) - k.ra;
+    // Every other case puts both edges on the boundary the kernels decide with a sign flag: small a
+    // (g + m often lands on exactly 0, which must take the extra step) or m = -g for the first row.
+    if ((rng.next() & 1u) != 0) {
+        const bool tiny = (rng.next() & 1u) != 0;
+        int32_t* const fields[2][3] = {{&k.la, &k.lm, &k.lg}, {&k.ra, &k.rm, &k.rg}};
+        for (auto& f : fields) {
+            int32_t& a = *f[0];
+            int32_t& m = *f[1];
+            int32_t& g = *f[2];
+            if (tiny) a = rng.range(1, 4);
+            g = -rng.range(1, a);                                         // [-a, -1]
+            m = g > -a ? -g : static_cast<int32_t>(rng.next() % static_cast<uint32_t>(a));  // in [0, a)
+        }
+    }
     k.rq = rng.range(-2, 2);
     k.rpx = rng.range(20, 50);  // empty, one-pixel and long spans
     k.dzdx = rng.next() >> rng.range(8, 31);

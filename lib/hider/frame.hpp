@@ -123,6 +123,8 @@ void fill(T* p, size_t n, T v) {
         // Cortex-M3/M4: two 10-register store-multiples per 20 words (GCC -Os emits one str per word); no r7
         // (the Thumb frame pointer) and no r9 (reserved on some platforms).
         if (size_t blocks = words / 20) {
+            // end first: GCC only guarantees the register variables below at the asm itself
+            AliasWord* const end = w + blocks * 20;
             register uint32_t w0 asm("r1") = word;
             register uint32_t w1 asm("r2") = word;
             register uint32_t w2 asm("r3") = word;
@@ -133,7 +135,6 @@ void fill(T* p, size_t n, T v) {
             register uint32_t w7 asm("r12") = word;
             register uint32_t w8 asm("r10") = word;
             register uint32_t w9 asm("r11") = word;
-            AliasWord* const end = w + blocks * 20;
             __asm__ volatile(".syntax unified\n1:\n\tstmia %0!, {r1, r2, r3, r4, r5, r6, r8, r10, r11, r12}\n\t"
                              "stmia %0!, {r1, r2, r3, r4, r5, r6, r8, r10, r11, r12}\n\tcmp %0, %1\n\tbne 1b"
                              : "+r"(w)
@@ -145,13 +146,13 @@ void fill(T* p, size_t n, T v) {
 #elif defined(__arm__) && defined(__thumb__)
         // Cortex-M0/M0+: two 6-register store-multiples per 12 words (GCC -Os emits one str per word).
         if (size_t blocks = words / 12) {
+            AliasWord* const end = w + blocks * 12;  // in a high register: r7 may be the frame pointer
             register uint32_t w0 asm("r1") = word;
             register uint32_t w1 asm("r2") = word;
             register uint32_t w2 asm("r3") = word;
             register uint32_t w3 asm("r4") = word;
             register uint32_t w4 asm("r5") = word;
             register uint32_t w5 asm("r6") = word;
-            AliasWord* const end = w + blocks * 12;  // in a high register: r7 may be the frame pointer
             __asm__ volatile(".syntax unified\n1:\n\tstmia %0!, {r1, r2, r3, r4, r5, r6}\n\t"
                              "stmia %0!, {r1, r2, r3, r4, r5, r6}\n\tcmp %0, %1\n\tbne 1b"
                              : "+l"(w)

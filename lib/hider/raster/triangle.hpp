@@ -6,73 +6,9 @@
 #pragma once
 #include <hider/fixed.hpp>
 #include <hider/raster/row_kernel.hpp>
+#include <hider/raster/screen.hpp>
 
 namespace hider {
-
-constexpr int kSubpixelBits = 4;                    ///< screen coordinates carry 4 fraction bits
-constexpr int32_t kSubpixel = 1 << kSubpixelBits;   ///< subpixels per pixel
-constexpr int32_t kCoordLimit = (1 << 14) - 1;      ///< |x|, |y| <= this keeps edge functions in int32
-constexpr int32_t kGuardBand = (1 << 14) - 64;      ///< clip planes sit here; rounding stays below the limit
-/// Depths are kept in [kDepthMargin, 2^32 - 1 - kDepthMargin] so plane-stepping error never wraps.
-constexpr uint32_t kDepthMargin = 4096;
-constexpr uint32_t kDepthNear = kDepthMargin;
-constexpr uint32_t kDepthFar = 0xFFFFFFFFu - kDepthMargin;
-
-/// A projected vertex: x, y in subpixels from the frame centre (y down), z in [kDepthNear, kDepthFar]
-/// (smaller = nearer, affine in screen space). A vertex outside a clip plane has z == 0 and its planes
-/// in x (8 bytes a vertex: indexing is a shift, and a mesh's vertex array is a third smaller).
-/// project_vertices() and project() never give a drawable vertex z == 0; a hand-made vertex with z == 0
-/// and x == 0 counts as drawable (outside() == 0) and takes draw_zbuffer's slower clipping path.
-struct ScreenVertex {
-    int16_t x = 0;
-    int16_t y = 0;
-    uint32_t z = 0;
-
-    /// The clip planes the vertex lies outside of (0 = drawable).
-    constexpr uint8_t outside() const { return z == 0 ? static_cast<uint8_t>(x) : 0; }
-    /// Marks the vertex as outside `planes` (nonzero); x, y and z lose their meaning.
-    constexpr void mark_outside(uint8_t planes) {
-        x = planes;
-        y = 0;
-        z = 0;
-    }
-};
-static_assert(sizeof(ScreenVertex) == 8, "ScreenVertex is two halfwords and a word");
-
-namespace detail {
-
-/// Rows of the band in centre-relative subpixels, for a cheap reject before setup.
-struct BandBounds {
-    int32_t y_first, y_last, x_first, x_last;
-    int32_t y_origin;  ///< centre of row 0
-};
-template <class Frame>
-BandBounds band_bounds(const Frame& f) {
-    const int32_t ox = kSubpixel / 2 - f.width * (kSubpixel / 2), oy = kSubpixel / 2 - f.height * (kSubpixel / 2);
-    return {f.y0 * kSubpixel + oy, (f.y1 - 1) * kSubpixel + oy, ox, (f.width - 1) * kSubpixel + ox, oy};
-}
-
-/// A triangle's bounding box in centre-relative subpixels.
-struct ScreenBox {
-    int32_t x_min, x_max, y_min, y_max;
-};
-inline ScreenBox screen_box(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-    return {min<int32_t>(a.x, min<int32_t>(b.x, c.x)), max<int32_t>(a.x, max<int32_t>(b.x, c.x)),
-            min<int32_t>(a.y, min<int32_t>(b.y, c.y)), max<int32_t>(a.y, max<int32_t>(b.y, c.y))};
-}
-
-/// True when no pixel centre of the band lies in the box: the box is outside the band, or a tiny
-/// triangle's box falls between centres. Shifts and compares only, so such triangles skip the setup
-/// and its divisions.
-inline bool misses_band(const ScreenBox& box, const BandBounds& bb) {
-    if (box.y_max < bb.y_first || box.y_min > bb.y_last || box.x_max < bb.x_first || box.x_min > bb.x_last) return true;
-    // First centre at or after the minimum: centres sit at origin + 16 k.
-    const int32_t cx = ((box.x_min - bb.x_first + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.x_first;
-    const int32_t cy = ((box.y_min - bb.y_origin + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.y_origin;
-    return cx > box.x_max || cy > box.y_max;
-}
-
-}  // namespace detail
 
 /// One triangle set up for traversal. setup() once; then spans(y_begin, y_end, fn) any number of
 /// times for any row ranges (bands) with identical results per row.
@@ -107,7 +43,45 @@ public:
     int32_t end_row() const { return row_bottom_; }
     uint32_t dzdx() const { return dzdx_; }
 
+    /// Visits every row y in [y_begin, y_end) the triangle touches, in order: rows.begin(y0) once,
+    /// then rows(x0, x1, z) per row with the covered pixels [x0, x1) clipped to [0, width) (possibly
+    /// empty: x0 >= x1) and z the depth at (x0, y). Returns the number of pixels covered when
+    /// RowFn::kCountFragments, else 0. This is the hot path: a row functor keeps its own row pointers
+    /// and steps them by a stride (no multiply), and triangles that cannot reach left of pixel 0 take
+    /// a loop without the depth-at-column-0 bookkeeping.
+    template <class RowFn>
+    uint32_t scan(int32_t y_begin, int32_t y_end, RowFn& rows_fn) const {
+        const int32_t y0 = max(row_top_, y_begin), y1 = min(row_bottom_, y_end);
+        if (y0 >= y1) return 0;
+        const bool left = clip_left_, right = clip_right_;
+        if (left) return right ? scan_rows<true, true>(y0, y1, rows_fn) : scan_rows<true, false>(y0, y1, rows_fn);
+        if (right) return scan_rows<false, true>(y0, y1, rows_fn);
+        if constexpr (RowFn::kRowKernel) return scan_kernel(y0, y1, rows_fn);
+        return scan_rows<false, false>(y0, y1, rows_fn);
+    }
+
+    /// Convenience form of scan(): fn(y, x0, x1, z) for each row with a non-empty span.
+    template <class Fn>
+    uint32_t spans(int32_t y_begin, int32_t y_end, Fn&& fn) const {
+        SpanAdapter<Fn> adapter{&fn, 0};
+        return scan(y_begin, y_end, adapter);
+    }
+
 private:
+    /// Row functor that hands non-empty spans to fn(y, x0, x1, z); counts fragments.
+    template <class Fn>
+    struct SpanAdapter {
+        static constexpr bool kCountFragments = true;
+        static constexpr bool kRowKernel = false;
+        Fn* f;
+        int32_t y;
+        void begin(int32_t first) { y = first; }
+        void operator()(int32_t x0, int32_t x1, uint32_t z) {
+            if (x0 < x1) (*f)(y, x0, x1, z);
+            ++y;
+        }
+    };
+
     template <bool kBandTest>
     __attribute__((always_inline)) bool setup_impl(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                                                    int32_t area, int32_t width, int32_t height,
@@ -148,47 +122,6 @@ private:
         setup_depth(a, v1, v2, area);
         return true;
     }
-
-public:
-
-    /// Visits every row y in [y_begin, y_end) the triangle touches, in order: rows.begin(y0) once,
-    /// then rows(x0, x1, z) per row with the covered pixels [x0, x1) clipped to [0, width) (possibly
-    /// empty: x0 >= x1) and z the depth at (x0, y). Returns the number of pixels covered when
-    /// RowFn::kCountFragments, else 0. This is the hot path: a row functor keeps its own row pointers
-    /// and steps them by a stride (no multiply), and triangles that cannot reach left of pixel 0 take
-    /// a loop without the depth-at-column-0 bookkeeping.
-    template <class RowFn>
-    uint32_t scan(int32_t y_begin, int32_t y_end, RowFn& rows_fn) const {
-        const int32_t y0 = max(row_top_, y_begin), y1 = min(row_bottom_, y_end);
-        if (y0 >= y1) return 0;
-        const bool left = clip_left_, right = clip_right_;
-        if (left) return right ? scan_rows<true, true>(y0, y1, rows_fn) : scan_rows<true, false>(y0, y1, rows_fn);
-        if (right) return scan_rows<false, true>(y0, y1, rows_fn);
-        if constexpr (RowFn::kRowKernel) return scan_kernel(y0, y1, rows_fn);
-        return scan_rows<false, false>(y0, y1, rows_fn);
-    }
-
-    /// Convenience form of scan(): fn(y, x0, x1, z) for each row with a non-empty span.
-    template <class Fn>
-    uint32_t spans(int32_t y_begin, int32_t y_end, Fn&& fn) const {
-        SpanAdapter<Fn> adapter{&fn, 0};
-        return scan(y_begin, y_end, adapter);
-    }
-
-private:
-    /// Row functor that hands non-empty spans to fn(y, x0, x1, z); counts fragments.
-    template <class Fn>
-    struct SpanAdapter {
-        static constexpr bool kCountFragments = true;
-        static constexpr bool kRowKernel = false;
-        Fn* f;
-        int32_t y;
-        void begin(int32_t first) { y = first; }
-        void operator()(int32_t x0, int32_t x1, uint32_t z) {
-            if (x0 < x1) (*f)(y, x0, x1, z);
-            ++y;
-        }
-    };
 
     int32_t first_row_at_or_below(int32_t y_sub) const {
         return (y_sub - y_origin_ + kSubpixel - 1) >> kSubpixelBits;  // ceil((y - origin) / 16)
@@ -363,8 +296,8 @@ private:
     int32_t ref_px_, ref_py_;
     uint32_t z_ref_, dzdx_, dzdy_;
     bool front_;
-    bool long_left_;
-    bool clip_left_, clip_right_;  ///< spans may start left of pixel 0 / end past the last column  ///< the edge top -> bottom bounds the triangle on the left
+    bool long_left_;               ///< the edge top -> bottom bounds the triangle on the left
+    bool clip_left_, clip_right_;  ///< spans may start left of pixel 0 / end past the last column
 };
 
 }  // namespace hider
