@@ -27,3 +27,23 @@ private:
 };
 
 }  // namespace spin
+
+namespace host {
+
+/// Writes size bytes to a new file at path (the host side of semihost::write_file); reports a failure
+/// with perror and returns false.
+inline bool write_file(const char* path, const void* data, size_t size) {
+    std::FILE* file = std::fopen(path, "wb");
+    if (file == nullptr) {
+        std::perror(path);
+        return false;
+    }
+    const bool written = std::fwrite(data, 1, size, file) == size;
+    if (std::fclose(file) != 0 || !written) {
+        std::perror(path);
+        return false;
+    }
+    return true;
+}
+
+}  // namespace host
