@@ -71,14 +71,16 @@ FrameSummary run_frames(const std::string& model_path, const CameraArgs& cam, in
 /// Drawable screen polygons of a model (build_polys), in storage with room for cuts.
 struct ScreenPolys {
     Scene scene;
+    View view{};
     std::vector<ScreenPoly> store;  ///< capacity of the pool; the first `built` entries are the polygons
     size_t built = 0;
     FrameStats stats{};  ///< build_polys statistics (triangles in, culled, clipped)
 };
 
-/// Loads the model, projects it for `cam` and builds its screen polygons (back faces removed when
+/// Loads the model (an .obj path, or a generated scene's name: common/gen_scenes.hpp, with its own
+/// camera unless `cam` sets one), projects it and builds its screen polygons (back faces removed when
 /// cull) into a pool of triangles * 7 entries (7 = most pieces of one clipped triangle), plus, with
-/// cut_room, hider-render's default room for Newell's cuts (16 per triangle + 1024). Exits on errors.
+/// cut_room, hider-render's default room for Newell's cuts (default_split_pool). Exits on errors.
 ScreenPolys build_screen_polys(const std::string& model_path, const CameraArgs& cam, bool cull, bool cut_room);
 
 /// n zero-filled elements of T at a 64-byte boundary, so counts inside memset and friends do not

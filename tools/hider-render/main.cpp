@@ -141,8 +141,9 @@ int main(int argc, char** argv) {
                     result.pixels_covered == 0 ? 0.0 : static_cast<double>(s.pixels_written) / result.pixels_covered);
         if (opt.algo == Algo::newell || opt.algo == Algo::reverse) {
             const NewellStats& n = result.newell;
-            std::printf("newell polygons %zu pair-tests %u moves %u splits %u unresolved %u dropped %u\n", result.polygons,
-                        n.pair_tests, n.moves, n.splits, n.unresolved, n.dropped);
+            std::printf("newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u\n",
+                        result.polygons, static_cast<unsigned long long>(n.pair_tests), n.moves, n.splits, n.cycles,
+                        n.unresolved, n.dropped, n.too_deep);
         }
         if (s.status != Status::ok) std::printf("status %s\n", status_name(s.status));
     }
