@@ -26,7 +26,8 @@ struct Rgb565Format {
     }
     /// Expands by bit replication, so 0 -> 0 and 31 -> 255.
     static constexpr Rgb unpack(Pixel p) {
-        const uint8_t r = (p >> 11) & 31, g = (p >> 5) & 63, b = p & 31;
+        const auto r = static_cast<uint8_t>((p >> 11) & 31), g = static_cast<uint8_t>((p >> 5) & 63),
+                   b = static_cast<uint8_t>(p & 31);
         return {static_cast<uint8_t>((r << 3) | (r >> 2)), static_cast<uint8_t>((g << 2) | (g >> 4)),
                 static_cast<uint8_t>((b << 3) | (b >> 2))};
     }
