@@ -106,6 +106,7 @@ function showResult(r) {
     }
   }
   $("stats").textContent = r.stdout;
+  $("stats").hidden = r.stdout === "";
   const message = r.stopped ?? ((r.stderr || "").trimEnd() +
                                 (r.trap ? `\nhider-render stopped: ${r.trap}` : "")).trim();
   error.textContent = failed ? message || `hider-render exited with status ${r.code}` : "";

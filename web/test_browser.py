@@ -324,6 +324,28 @@ class Suite:
         url = self.b.evaluate("location.search")
         if "eye=" not in url:
             raise Failure(f"the URL does not keep the camera: {url}")
+        # Touch: a two-finger pinch apart zooms in, a one-finger drag orbits.
+        self.b.send("Emulation.setTouchEmulationEnabled", {"enabled": True, "maxTouchPoints": 2})
+        touch = lambda kind, points: self.b.send("Input.dispatchTouchEvent", {  # noqa: E731
+            "type": kind, "touchPoints": [{"x": px, "y": py, "id": i} for i, (px, py) in enumerate(points)]})
+        touch("touchStart", [(x - 30, y), (x + 30, y)])
+        touch("touchMove", [(x - 45, y), (x + 45, y)])
+        touch("touchMove", [(x - 60, y), (x + 60, y)])
+        touch("touchEnd", [])
+        self.wait_render()
+        self.compare_frame("beetle after a two-finger pinch (zoom in)")
+        args = self.page_args()
+        eye = [float(v) for v in args[args.index("--eye") + 1].split(",")]
+        pinched = sum((a - b) ** 2 for a, b in zip(eye, target)) ** 0.5
+        if not pinched < closer * 0.75:
+            raise Failure(f"pinch did not bring the eye closer ({closer} -> {pinched})")
+        touch("touchStart", [(x, y)])
+        touch("touchMove", [(x - 40, y - 20)])
+        touch("touchEnd", [])
+        self.wait_render()
+        self.compare_frame("beetle after a one-finger drag (orbit)")
+        if self.page_args() == args:
+            raise Failure("a one-finger drag did not move the camera")
 
     def drop(self, name, data):
         b64 = base64.b64encode(data).decode()
