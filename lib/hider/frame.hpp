@@ -9,7 +9,7 @@ namespace hider {
 /// A colour with 8 bits per channel; what shading produces before packing.
 struct Rgb {
     uint8_t r, g, b;
-    friend constexpr bool operator==(Rgb a, Rgb b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+    friend constexpr bool operator==(Rgb x, Rgb y) { return x.r == y.r && x.g == y.g && x.b == y.b; }
 };
 
 /// RGB888 storage: 3 bytes, r first (the byte order of a PPM).
