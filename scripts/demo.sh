@@ -1,7 +1,16 @@
 #!/usr/bin/env bash
 # Renders the demo: the benchmark torus and the Utah teapot, as PPM and PNG, with lib/ fixed-point code.
+#   bash scripts/demo.sh --web [PORT]   instead builds the web playground (hider-render as WebAssembly)
+#                                       and serves it on http://127.0.0.1:PORT/ (default 8000) until Ctrl-C
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = "--web" ]; then
+  bash scripts/install-deps.sh web
+  cmake -S web -B build/web-demo -G Ninja -DCMAKE_TOOLCHAIN_FILE="$PWD/toolchain/wasm32-wasi.cmake" \
+        -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build/web-demo -j 2
+  exec python3 web/serve.py build/web-demo/site "${2:-8000}"
+fi
 bash scripts/install-deps.sh host
 cmake -S . -B build/demo -G Ninja -DCMAKE_BUILD_TYPE=Release -DHIDER_BUILD_TESTS=OFF >/dev/null
 cmake --build build/demo --target hider-render >/dev/null
