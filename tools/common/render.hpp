@@ -12,7 +12,7 @@
 
 namespace hider::tool {
 
-enum class Algo { zbuffer, painter, newell, reverse };
+enum class Algo { zbuffer, painter, newell, reverse, raycast };
 enum class PixelFormat { rgb565, rgb888, grey8 };
 
 /// Names accepted by --algo, in order, comma-separated (for messages).
@@ -32,6 +32,12 @@ struct RenderOptions {
     size_t split_pool = 0;  ///< newell/reverse: extra polygons for cuts; 0 = 16 per triangle + 1024
 };
 
+/// What the ray caster or ray tracer did (render_ray.hpp).
+struct RayCounts {
+    uint64_t rays = 0, hits = 0, shadow_rays = 0;
+    uint64_t boxes = 0, triangles = 0;  ///< BVH box and triangle tests
+};
+
 struct RenderResult {
     int width = 0, height = 0;
     std::vector<uint8_t> rgb;  ///< width * height * 3, row 0 first
@@ -39,6 +45,7 @@ struct RenderResult {
     uint32_t pixels_covered = 0;  ///< distinct pixels written at least once
     NewellStats newell;           ///< newell and reverse only
     size_t polygons = 0;          ///< object-space algorithms: polygons drawn after cuts
+    RayCounts ray;                ///< raycast and ray-traced scenes only
 };
 
 /// Renders `scene` with lib/ only. Returns false with a reason for unusable options.
