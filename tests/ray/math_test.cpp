@@ -84,6 +84,21 @@ TEST_CASE("unit_q30 is within 2 LSB of the exact unit vector at any length") {
     }
     MESSAGE("worst unit_q30 error: " << worst << " LSB");
     CHECK(worst <= 2);
+    SUBCASE("the length comes with it, within 1 + 2^-28 relative") {
+        double worst_len = 0;
+        for (int i = 0; i < 100000; ++i) {
+            const int shift = static_cast<int>(rng() % 31);
+            auto comp = [&] { return static_cast<int32_t>(static_cast<int64_t>(rng() % 0xFFFFFFFEu) - 0x7FFFFFFF) >> shift; };
+            const int32_t x = comp(), y = comp(), z = comp();
+            if (x == 0 && y == 0 && z == 0) continue;
+            uint32_t len = 0;
+            REQUIRE(unit_q30(x, y, z, u, &len));
+            const double exact = std::sqrt(double(x) * x + double(y) * y + double(z) * z);
+            worst_len = std::fmax(worst_len, (std::fabs(len - exact) - 1) / exact);
+            CHECK(std::fabs(len - exact) <= 1 + exact * std::ldexp(1.0, -28));
+        }
+        MESSAGE("worst (|error| - 1) / length: " << worst_len);
+    }
 }
 
 TEST_CASE("reflected directions match r = d - 2 (d.n) n within 3 LSB") {

@@ -32,6 +32,7 @@ ray::Scene RayScene::view() const {
     s.background = background;
     s.max_bounces = bounces;
     s.max_distance = max_distance;
+    s.sphere_bound = sphere_bound;
     return s;
 }
 
@@ -488,6 +489,7 @@ bool parse_ray_scene(std::istream& in, const std::string& name, const std::strin
             return fail(why);
         s.meshes.push_back(std::move(loose));
     }
+    s.sphere_bound = ray::enclosing_sphere({s.spheres.data(), s.spheres.size()});
     std::vector<ray::BvhStackEntry> stack(s.stack_depth());
     const Status st = ray::validate_scene(s.view(), {stack.data(), stack.size()});
     if (st != Status::ok) {

@@ -33,6 +33,7 @@ struct RayScene {
     Rgb background{0, 0, 0};
     uint8_t bounces = 0;
     Q16 max_distance = Q16::max();
+    ray::Sphere sphere_bound{};  ///< ray::enclosing_sphere() of the spheres
 
     /// The scene for lib/ (spans into this object's arrays).
     ray::Scene view() const;

@@ -17,10 +17,12 @@ static_assert(kRayWorldLimitRaw == kWorldLimitRaw, "the ray tracer's world cube 
 struct PrimaryRays {
     Vec3q16 eye{};
     Vec3q30 forward{};  ///< f: a point's view depth is w = (p - eye) . f
-    int64_t corner[3]{};  ///< D of pixel (0, 0), before the shift
-    int64_t dx[3]{};      ///< D per pixel to the right: 4096 s
-    int64_t dy[3]{};      ///< D per row down: -4096 u
-    int shift = 0;        ///< D >> shift has |components| < 2^30 everywhere in the frame
+    // D times 2^(32 - shift), so the direction's int32 components are the high words (no 64-bit shift
+    // per pixel); shift is chosen so D >> shift has |components| < 2^30 everywhere in the frame.
+    int64_t corner[3]{};  ///< D of pixel (0, 0), scaled
+    int64_t dx[3]{};      ///< D per pixel to the right: 4096 s, scaled
+    int64_t dy[3]{};      ///< D per row down: -4096 u, scaled
+    int shift = 0;
     int32_t width = 0, height = 0;
     View view{};          ///< the rasterizer's view of the same camera
 };
@@ -34,16 +36,17 @@ inline Status make_primary_rays(const Camera& cam, int32_t width, int32_t height
     p.eye = cam.eye;
     p.forward = {-rot[2][0], -rot[2][1], -rot[2][2]};
     const int64_t k = p.view.k_q8;
-    for (int i = 0; i < 3; ++i) {
-        const int64_t s = rot[0][i].raw(), u = rot[1][i].raw(), f = -int64_t{rot[2][i].raw()};
-        p.corner[i] = k * f + 2048 * (1 - int64_t{width}) * s + 2048 * (int64_t{height} - 1) * u;
-        p.dx[i] = 4096 * s;
-        p.dy[i] = -4096 * u;
-    }
     // Every D of the frame is below (k + 2048 (W + H)) 2^30 in each component (axes of length 1 + a few
-    // LSB): with twice that as the bound, D >> shift stays below 2^30.
+    // LSB): with twice that as the bound, D >> shift stays below 2^30 and D 2^(32 - shift) below 2^62.
     const uint64_t bound = (static_cast<uint64_t>(k) + 2048 * static_cast<uint64_t>(width + height)) << 31;
     p.shift = max(0, bit_length64(bound) - 30);
+    const int64_t scale = int64_t{1} << (32 - p.shift);
+    for (int i = 0; i < 3; ++i) {
+        const int64_t s = rot[0][i].raw(), u = rot[1][i].raw(), f = -int64_t{rot[2][i].raw()};
+        p.corner[i] = (k * f + 2048 * (1 - int64_t{width}) * s + 2048 * (int64_t{height} - 1) * u) * scale;
+        p.dx[i] = 4096 * s * scale;
+        p.dy[i] = -4096 * u * scale;
+    }
     p.width = width;
     p.height = height;
     out = p;
@@ -54,7 +57,7 @@ inline Status make_primary_rays(const Camera& cam, int32_t width, int32_t height
 class RowRays {
 public:
     /// Row y of `p` (one product per component). Precondition: 0 <= y < p.height.
-    RowRays(const PrimaryRays& p, int32_t y) : shift_(p.shift) {
+    RowRays(const PrimaryRays& p, int32_t y) {
         for (int i = 0; i < 3; ++i) {
             d_[i] = p.corner[i] + p.dy[i] * y;
             step_[i] = p.dx[i];
@@ -62,7 +65,7 @@ public:
     }
     /// The current pixel's unnormalised direction, |components| < 2^30.
     void raw_direction(int32_t (&out)[3]) const {
-        for (int i = 0; i < 3; ++i) out[i] = static_cast<int32_t>(d_[i] >> shift_);
+        for (int i = 0; i < 3; ++i) out[i] = static_cast<int32_t>(d_[i] >> 32);  // = D >> shift
     }
     /// The current pixel's unit direction (Q30, within 2 LSB per component).
     Vec3q30 direction() const {
@@ -79,7 +82,6 @@ public:
 private:
     int64_t d_[3];
     int64_t step_[3];
-    int shift_;
 };
 
 }  // namespace hider::ray

@@ -8,7 +8,7 @@
 namespace hider::ray {
 
 /// Leading zero bits of v (64 for 0) in two clz32 steps (fixed.hpp's clz64 loops bit by bit).
-constexpr int leading_zeros64(uint64_t v) {
+__attribute__((always_inline)) constexpr int leading_zeros64(uint64_t v) {
     const uint32_t hi = static_cast<uint32_t>(v >> 32);
     if (hi != 0) return clz32(hi);
     const uint32_t lo = static_cast<uint32_t>(v);
@@ -60,37 +60,62 @@ constexpr uint32_t isqrt64_fast(uint64_t v) {
     return static_cast<uint32_t>(s);
 }
 
+namespace detail {
+/// round(|c| 2^e r / 2^31) with c's sign, for |c| < 2^30 and e in {0, 1}: one unsigned 32x32->64
+/// product (r may be 2^31) and a constant shift.
+__attribute__((always_inline)) constexpr int32_t scale_rounded(int32_t c, uint32_t r, int e) {
+    const uint32_t m = static_cast<uint32_t>(c < 0 ? -int64_t{c} : int64_t{c}) << e;
+    const int32_t v = static_cast<int32_t>((mul_wide_u(m, r) + (uint64_t{1} << 30)) >> 31);
+    return c < 0 ? -v : v;
+}
+}  // namespace detail
+
 /// The unit vector of (x, y, z) in Q30, each component within 2 LSB of the exact quotient (tested):
 /// the largest component is scaled into [2^29, 2^30) first, so the precision does not depend on the
-/// length. Returns false (out untouched) for the zero vector. Precondition: |components| < 2^31.
-constexpr bool unit_q30(int32_t x, int32_t y, int32_t z, Vec3q30& out) {
-    const uint32_t m = max(max(static_cast<uint32_t>(abs_value(int64_t{x})), static_cast<uint32_t>(abs_value(int64_t{y}))),
-                           static_cast<uint32_t>(abs_value(int64_t{z})));
+/// length. With `length`, also |(x, y, z)| in the components' units, within 1 + 2^-28 relative (the
+/// same reciprocal root gives it). Returns false (out untouched) for the zero vector.
+/// Precondition: |components| < 2^31.
+__attribute__((always_inline)) constexpr bool unit_q30(int32_t x, int32_t y, int32_t z, Vec3q30& out,
+                                                      uint32_t* length = nullptr) {
+    const uint32_t ax = static_cast<uint32_t>(x < 0 ? -int64_t{x} : int64_t{x});
+    const uint32_t ay = static_cast<uint32_t>(y < 0 ? -int64_t{y} : int64_t{y});
+    const uint32_t az = static_cast<uint32_t>(z < 0 ? -int64_t{z} : int64_t{z});
+    const uint32_t m = max(ax, max(ay, az));
     if (m == 0) return false;
-    const int shift = clz32(m) - 2;  // m << shift in [2^29, 2^30); -1 or 0 for m >= 2^30
-    int32_t c[3] = {x, y, z};
-    for (int32_t& e : c) e = shift >= 0 ? static_cast<int32_t>(static_cast<uint32_t>(e) << shift) : (e >> -shift);
-    const uint64_t len2 = static_cast<uint64_t>(mul_wide(c[0], c[0])) + static_cast<uint64_t>(mul_wide(c[1], c[1])) +
-                          static_cast<uint64_t>(mul_wide(c[2], c[2]));  // [2^58, 3 2^60]
-    const int k = leading_zeros64(len2) >> 1;  // 1 or 2
-    const uint32_t r = rsqrt_q30(static_cast<uint32_t>((len2 << (2 * k)) >> 32));
-    // c / sqrt(len2) in Q30 = c r 2^k / 2^32, rounded (add half, shift).
-    const int s = 32 - k;
-    auto scale = [&](int32_t e) {
-        return Q30::from_raw(static_cast<int32_t>((static_cast<int64_t>(mul_wide_u(static_cast<uint32_t>(abs_value(e)), r)) +
-                                                  (int64_t{1} << (s - 1))) >> s) * (e < 0 ? -1 : 1));
-    };
-    out = {scale(c[0]), scale(c[1]), scale(c[2])};
+    const int shift = clz32(m) - 2;  // m << shift in [2^29, 2^30); -1 or -2 for m >= 2^30
+    if (shift >= 0) {
+        x = static_cast<int32_t>(static_cast<uint32_t>(x) << shift);
+        y = static_cast<int32_t>(static_cast<uint32_t>(y) << shift);
+        z = static_cast<int32_t>(static_cast<uint32_t>(z) << shift);
+    } else {
+        x >>= -shift;
+        y >>= -shift;
+        z >>= -shift;
+    }
+    const uint64_t len2 = static_cast<uint64_t>(mul_wide(x, x)) + static_cast<uint64_t>(mul_wide(y, y)) +
+                          static_cast<uint64_t>(mul_wide(z, z));  // [2^58, 3 2^60]
+    // The top word of len2 normalised into [2^30, 2^32): len2 << 2k >> 32 for k = 1 or 2 (constant shifts).
+    const bool big = (len2 >> 60) != 0;
+    const uint32_t top = static_cast<uint32_t>(big ? len2 >> 30 : len2 >> 28);
+    const uint32_t r = rsqrt_q30(top);
+    // c / sqrt(len2) in Q30 = c r 2^k / 2^32 = (c 2^(k - 1)) r / 2^31, rounded.
+    const int e = big ? 0 : 1;
+    out = {Q30::from_raw(detail::scale_rounded(x, r, e)), Q30::from_raw(detail::scale_rounded(y, r, e)),
+           Q30::from_raw(detail::scale_rounded(z, r, e))};
+    if (length != nullptr) {  // sqrt(len2) = sqrt(top 2^32) / 2^k = top r / 2^(30 + k), then undo the shift
+        const uint32_t root = static_cast<uint32_t>(mul_wide_u(top, r) >> 31) >> e;
+        *length = shift >= 0 ? root >> shift : root << -shift;
+    }
     return true;
 }
 
 /// Dot product of two Q30 vectors, exact, in Q60.
-constexpr int64_t dot_q60(const Vec3q30& a, const Vec3q30& b) {
+__attribute__((always_inline)) constexpr int64_t dot_q60(const Vec3q30& a, const Vec3q30& b) {
     return mul_wide(a.x.raw(), b.x.raw()) + mul_wide(a.y.raw(), b.y.raw()) + mul_wide(a.z.raw(), b.z.raw());
 }
 
 /// Dot product of a Q30 direction and a Q16 vector, exact, in Q46 (|v| < 2^30 raw: below 3 2^60).
-constexpr int64_t dot_q46(const Vec3q30& d, const Vec3q16& v) {
+__attribute__((always_inline)) constexpr int64_t dot_q46(const Vec3q30& d, const Vec3q16& v) {
     return mul_wide(d.x.raw(), v.x.raw()) + mul_wide(d.y.raw(), v.y.raw()) + mul_wide(d.z.raw(), v.z.raw());
 }
 

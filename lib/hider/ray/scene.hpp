@@ -47,7 +47,35 @@ struct Scene {
     Rgb background{0, 0, 0};      ///< colour of a ray that meets nothing
     uint8_t max_bounces = 0;      ///< reflections followed (0: none)
     Q16 max_distance = Q16::max();  ///< a ray meets nothing farther than this
+    /// A sphere holding every sphere (radius 0: none): a ray that misses it skips all sphere tests.
+    /// enclosing_sphere() makes one; validate_scene() checks that it holds them all.
+    Sphere sphere_bound{};
 };
+
+/// A sphere holding all of `spheres` (radius 0 for none): centred on their bounding box, radius rounded
+/// up. Precondition: the spheres lie in the world cube. Cost: one square root per sphere.
+constexpr Sphere enclosing_sphere(Span<const Sphere> spheres) {
+    if (spheres.empty()) return {};
+    int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
+    for (const Sphere& s : spheres) {
+        const int32_t c[3] = {s.centre.x.raw(), s.centre.y.raw(), s.centre.z.raw()};
+        for (int i = 0; i < 3; ++i) {
+            lo[i] = min(lo[i], c[i] - s.radius.raw());
+            hi[i] = max(hi[i], c[i] + s.radius.raw());
+        }
+    }
+    const Vec3q16 centre{Q16::from_raw(lo[0] + (hi[0] - lo[0]) / 2), Q16::from_raw(lo[1] + (hi[1] - lo[1]) / 2),
+                         Q16::from_raw(lo[2] + (hi[2] - lo[2]) / 2)};
+    int64_t radius = 0;
+    for (const Sphere& s : spheres) {
+        const Vec3q16 d = s.centre - centre;
+        const uint64_t d2 = static_cast<uint64_t>(mul_wide(d.x.raw(), d.x.raw())) + static_cast<uint64_t>(mul_wide(d.y.raw(), d.y.raw())) +
+                            static_cast<uint64_t>(mul_wide(d.z.raw(), d.z.raw()));
+        const uint64_t root = isqrt64_fast(d2);
+        radius = max(radius, static_cast<int64_t>(root + (root * root < d2 ? 1 : 0)) + s.radius.raw());
+    }
+    return {centre, Q16::from_raw(static_cast<int32_t>(min<int64_t>(radius, INT32_MAX))), 0};
+}
 
 /// Most spheres, planes, meshes, lights or surfaces a scene may have (16-bit object indices).
 constexpr size_t kMaxSceneObjects = 65535;
@@ -77,7 +105,7 @@ inline Status validate_meshes(const Scene& s, Span<BvhStackEntry> stack) {
 
 /// Checks a scene once. invalid_argument: a reflectivity above 1, a negative checker size, a radius
 /// <= 0, a normal or light direction that is not unit length (within 2^-20), max_distance <= 0, too
-/// many objects. out_of_range: a sphere not wholly inside the world cube, a point light outside it, a
+/// many objects, a sphere bound that does not hold every sphere. out_of_range: a sphere not wholly inside the world cube, a point light outside it, a
 /// plane offset of 2^14 units or more, a mesh box outside it. bad_data: a surface index or a mesh/BVH
 /// fault (validate_bvh). capacity_exceeded: `stack` is shallower than a BVH needs. Cost O(scene size).
 inline Status validate_scene(const Scene& s, Span<BvhStackEntry> stack) {
@@ -97,6 +125,17 @@ inline Status validate_scene(const Scene& s, Span<BvhStackEntry> stack) {
         if (!detail::is_unit(pl.normal)) return Status::invalid_argument;
         if (abs_value(int64_t{pl.offset.raw()}) >= kMaxPlaneOffsetRaw) return Status::out_of_range;
         if (pl.surface >= s.surfaces.size()) return Status::bad_data;
+    }
+    if (s.sphere_bound.radius.raw() < 0) return Status::invalid_argument;
+    if (s.sphere_bound.radius.raw() > 0) {  // holds every sphere: |c - C| + r <= R, exactly
+        if (!in_world(s.sphere_bound.centre)) return Status::out_of_range;
+        for (const Sphere& sp : s.spheres) {
+            const Vec3q16 d = sp.centre - s.sphere_bound.centre;
+            const int64_t room = int64_t{s.sphere_bound.radius.raw()} - sp.radius.raw();
+            const uint64_t d2 = static_cast<uint64_t>(mul_wide(d.x.raw(), d.x.raw())) + static_cast<uint64_t>(mul_wide(d.y.raw(), d.y.raw())) +
+                                static_cast<uint64_t>(mul_wide(d.z.raw(), d.z.raw()));
+            if (room < 0 || d2 > static_cast<uint64_t>(room) * static_cast<uint64_t>(room)) return Status::invalid_argument;
+        }
     }
     for (const Light& l : s.lights) {
         if (l.kind == LightKind::point && !in_world(l.position)) return Status::out_of_range;

@@ -52,6 +52,21 @@ inline bool intersect_sphere(const Ray& ray, const Sphere& s, int32_t t_min, int
     return true;
 }
 
+/// Whether the open segment t_min < t < t_max of `ray` may meet sphere `s`: the cheap test of a
+/// bounding sphere. Conservative (never false when the segment meets the ball): the line must pass
+/// within r of the centre and [-b - r, -b + r], which holds the chord, must overlap the segment. No
+/// square root; the same b and q as intersect_sphere().
+inline bool segment_meets_sphere(const Ray& ray, const Sphere& s, int32_t t_min, int32_t t_max) {
+    const Vec3q16 oc = ray.origin - s.centre;
+    const int32_t b = round_q46_to_q16(dot_q46(ray.dir, oc));
+    const int64_t r = s.radius.raw();
+    if (int64_t{-b} + r <= t_min || int64_t{-b} - r >= t_max) return false;
+    const int32_t qx = oc.x.raw() - round_q46_to_q16(mul_wide(b, ray.dir.x.raw()));
+    const int32_t qy = oc.y.raw() - round_q46_to_q16(mul_wide(b, ray.dir.y.raw()));
+    const int32_t qz = oc.z.raw() - round_q46_to_q16(mul_wide(b, ray.dir.z.raw()));
+    return mul_wide(s.radius.raw(), s.radius.raw()) - mul_wide(qx, qx) - mul_wide(qy, qy) - mul_wide(qz, qz) >= 0;
+}
+
 /// Signed distance of p from the plane (positive on the normal's side), Q16 rounded to nearest.
 constexpr int32_t plane_distance(const Plane& pl, const Vec3q16& p) {
     return round_q46_to_q16(dot_q46(pl.normal, p)) - pl.offset.raw();

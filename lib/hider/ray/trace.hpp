@@ -5,8 +5,7 @@
 // Tie rule: equal t goes to spheres, then planes, then meshes, each in array order, and within a mesh
 // to the smaller triangle index. A secondary ray ignores the flat or convex object it leaves.
 #pragma once
-#include <hider/ray/camera.hpp>
-#include <hider/ray/scene.hpp>
+#include <hider/ray/cull.hpp>
 
 namespace hider::ray {
 
@@ -37,15 +36,25 @@ struct Skip {
     uint32_t triangle = 0;
 };
 
-/// Nearest hit (or, kAnyHit, any hit) of `ray` on t_min < t < t_max over the whole scene.
+/// A primary ray's pixel and the frame's sphere rectangles (sphere_rects()); null: no culling.
+struct PixelCull {
+    const PixelRect* rects;
+    int32_t x, y;
+};
+
+/// Nearest hit (or, kAnyHit, any hit) of `ray` on t_min < t < t_max over the whole scene. Spheres are
+/// skipped by the pixel's rectangles (primary rays) or else all at once by the scene's sphere bound.
 template <bool kAnyHit>
 bool scene_hit(const Scene& s, const Ray& ray, int32_t t_min, int32_t t_max, const Skip& skip,
-               Span<BvhStackEntry> stack, Hit& hit, TraceStats& stats) {
+               Span<BvhStackEntry> stack, Hit& hit, TraceStats& stats, const PixelCull* cull = nullptr) {
     bool found = false;
     int32_t best = t_max, t = 0;
     bool front = true;
-    for (size_t i = 0; i < s.spheres.size(); ++i) {
+    const bool spheres = cull != nullptr || s.sphere_bound.radius.raw() == 0 ||
+                         segment_meets_sphere(ray, s.sphere_bound, t_min, t_max);
+    for (size_t i = 0; spheres && i < s.spheres.size(); ++i) {
         if (skip.kind == ObjectKind::sphere && skip.object == i) continue;
+        if (cull != nullptr && !cull->rects[i].contains(cull->x, cull->y)) continue;
         if (!intersect_sphere(ray, s.spheres[i], t_min, best, t, front)) continue;
         hit = {t, ObjectKind::sphere, static_cast<uint16_t>(i), 0, front};
         if (kAnyHit) return true;
@@ -129,11 +138,9 @@ inline void irradiance(const Scene& s, const Vec3q16& p, const Vec3q30& n, const
         int32_t dist = INT32_MAX;
         if (light.kind == LightKind::point) {
             const Vec3q16 v = light.position - p;
-            if (!unit_q30(v.x.raw(), v.y.raw(), v.z.raw(), l)) continue;
-            const uint64_t len2 = static_cast<uint64_t>(mul_wide(v.x.raw(), v.x.raw())) +
-                                  static_cast<uint64_t>(mul_wide(v.y.raw(), v.y.raw())) +
-                                  static_cast<uint64_t>(mul_wide(v.z.raw(), v.z.raw()));
-            dist = static_cast<int32_t>(isqrt64_fast(len2)) - kRayEpsilonRaw;  // Q32 -> Q16
+            uint32_t len = 0;
+            if (!unit_q30(v.x.raw(), v.y.raw(), v.z.raw(), l, &len)) continue;
+            dist = static_cast<int32_t>(len) - kRayEpsilonRaw;  // |v| < 2^30.8 raw: fits
         }
         const int64_t ndotl_q16 = dot_q60(n, l) >> 44;
         if (ndotl_q16 <= 0) continue;
@@ -151,8 +158,10 @@ inline void irradiance(const Scene& s, const Vec3q16& p, const Vec3q30& n, const
 /// Colour seen along `primary` (origin inside the world cube): nearest hit, its shaded colour, and the
 /// mirror image weighted by reflectivity, bounce after bounce up to s.max_bounces (the last surface
 /// shows its own colour with the remaining weight); a ray meeting nothing within s.max_distance shows
-/// the background. Precondition: validate_scene(s, stack) == ok.
-inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, TraceStats& stats) {
+/// the background. `cull`: the primary ray's pixel and sphere rectangles, or null.
+/// Precondition: validate_scene(s, stack) == ok.
+inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, TraceStats& stats,
+                 const detail::PixelCull* cull = nullptr) {
     Ray ray = primary;
     detail::Skip skip;
     uint32_t weight = kReflectOne;  // Q15
@@ -161,7 +170,7 @@ inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, 
     for (uint32_t bounce = 0;; ++bounce) {
         ++stats.rays;
         Hit h;
-        if (!detail::scene_hit<false>(s, ray, kRayEpsilonRaw, t_max, skip, stack, h, stats)) {
+        if (!detail::scene_hit<false>(s, ray, kRayEpsilonRaw, t_max, skip, stack, h, stats, bounce == 0 ? cull : nullptr)) {
             acc[0] += weight * (s.background.r * 256u);
             acc[1] += weight * (s.background.g * 256u);
             acc[2] += weight * (s.background.b * 256u);
@@ -192,14 +201,21 @@ inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, 
     return {out(acc[0]), out(acc[1]), out(acc[2])};
 }
 
-/// Traces row y of the frame into `row` (width pixels of Format). Borrows `stack` for the call.
-/// Precondition: validate_scene(s, stack) == ok, 0 <= y < rays.height.
+/// Traces row y of the frame into `row` (width pixels of Format). With `rects` (sphere_rects() of this
+/// frame, one per sphere) primary rays test only the spheres whose rectangle holds their pixel; the
+/// frame is the same either way. Borrows `stack` and `rects` for the call.
+/// Precondition: validate_scene(s, stack) == ok, 0 <= y < rays.height, rects empty or >= spheres.
 template <class Format>
 TraceStats trace_row(const Scene& s, const PrimaryRays& rays, int32_t y, typename Format::Pixel* row,
-                     Span<BvhStackEntry> stack) {
+                     Span<BvhStackEntry> stack, Span<const PixelRect> rects = {}) {
+    HIDER_ASSERT(rects.empty() || rects.size() >= s.spheres.size());
     TraceStats stats;
     RowRays rr(rays, y);
-    for (int32_t x = 0; x < rays.width; ++x, rr.next()) row[x] = Format::pack(trace(s, {rays.eye, rr.direction()}, stack, stats));
+    detail::PixelCull cull{rects.data(), 0, y};
+    for (int32_t x = 0; x < rays.width; ++x, rr.next()) {
+        cull.x = x;
+        row[x] = Format::pack(trace(s, {rays.eye, rr.direction()}, stack, stats, rects.empty() ? nullptr : &cull));
+    }
     return stats;
 }
 
