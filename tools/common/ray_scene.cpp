@@ -95,16 +95,14 @@ private:
 
 bool world_point(const std::string& what, const double (&v)[3], Vec3q16& out, std::string& error) {
     Q16* c[3] = {&out.x, &out.y, &out.z};
+    static const char* kAxis[3] = {" x ", " y ", " z "};
     for (int i = 0; i < 3; ++i) {
-        if (!(std::fabs(v[i]) < kWorld)) {
-            error = what + " " + fmt(v[i]) + " is outside the world cube (|coordinate| < 8192)";
+        const double raw = std::nearbyint(v[i] * 65536.0);
+        if (!(std::fabs(raw) < ray::kRayWorldLimitRaw)) {  // also NaN
+            error = what + kAxis[i] + fmt(v[i]) + " is outside the world cube (|coordinate| < 8192)";
             return false;
         }
-        *c[i] = Q16::from_raw(static_cast<int32_t>(std::lround(v[i] * 65536.0)));
-        if (std::abs(c[i]->raw()) >= ray::kRayWorldLimitRaw) {
-            error = what + " " + fmt(v[i]) + " is outside the world cube (|coordinate| < 8192)";
-            return false;
-        }
+        *c[i] = Q16::from_raw(static_cast<int32_t>(raw));
     }
     return true;
 }
