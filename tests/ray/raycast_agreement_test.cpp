@@ -112,3 +112,14 @@ TEST_CASE("ray casting: the torus standard view, headlight colours and bands") {
     CHECK_FALSE(tool::render(s, opt, r, why));
     CHECK(why.find("depth") != std::string::npos);
 }
+
+TEST_CASE("a ray through the bunny's BVH does under 1% of the brute-force work" * doctest::test_suite("slow")) {
+    const tool::Scene s = test::load_model("stanford-bunny.obj");
+    const tool::RenderResult r = run(s, tool::Algo::raycast, true);
+    // Brute force tests every triangle per ray; the walk tests boxes and a few triangles (a box test
+    // costs less than a triangle test: counting both as one is conservative). Ir figures: hider-bench raycast.
+    const double per_ray = double(r.ray.boxes + r.ray.triangles) / double(r.ray.rays);
+    MESSAGE("bunny: " << s.tris.size() << " triangles, per ray " << double(r.ray.boxes) / double(r.ray.rays) << " box and "
+                      << double(r.ray.triangles) / double(r.ray.rays) << " triangle tests");
+    CHECK(per_ray * 100 < double(s.tris.size()));
+}
