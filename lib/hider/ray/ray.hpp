@@ -12,6 +12,16 @@ struct Ray {
     Vec3q30 dir;  ///< unit length (within a few LSB)
 };
 
+/// Sets r to (o, d) field by field: a whole-struct copy becomes a memcpy call at -Os on RV32 and ARMv6-M.
+__attribute__((always_inline)) inline void set_ray(Ray& r, const Vec3q16& o, const Vec3q30& d) {
+    r.origin.x = o.x;
+    r.origin.y = o.y;
+    r.origin.z = o.z;
+    r.dir.x = d.x;
+    r.dir.y = d.y;
+    r.dir.z = d.z;
+}
+
 /// Kinds of object a hit can be on, in the order the tie rule ranks them.
 enum class ObjectKind : uint8_t { none, sphere, plane, triangle };
 

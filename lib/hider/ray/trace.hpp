@@ -146,7 +146,9 @@ inline void irradiance(const Scene& s, const Vec3q16& p, const Vec3q30& n, const
         if (ndotl_q16 <= 0) continue;
         ++stats.shadow_rays;
         Hit blocker;
-        if (scene_hit<true>(s, {p, l}, kRayEpsilonRaw, dist, skip, stack, blocker, stats)) continue;
+        Ray shadow;
+        set_ray(shadow, p, l);
+        if (scene_hit<true>(s, shadow, kRayEpsilonRaw, dist, skip, stack, blocker, stats)) continue;
         const uint32_t k = static_cast<uint32_t>(min<int64_t>(ndotl_q16, 65536));
         e[0] += (k * (light.color.r * 257u)) >> 16;
         e[1] += (k * (light.color.g * 257u)) >> 16;
@@ -162,7 +164,8 @@ inline void irradiance(const Scene& s, const Vec3q16& p, const Vec3q30& n, const
 /// Precondition: validate_scene(s, stack) == ok.
 inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, TraceStats& stats,
                  const detail::PixelCull* cull = nullptr) {
-    Ray ray = primary;
+    Ray ray;
+    set_ray(ray, primary.origin, primary.dir);
     detail::Skip skip;
     uint32_t weight = kReflectOne;  // Q15
     uint32_t acc[3] = {0, 0, 0};    // Q23
@@ -195,7 +198,7 @@ inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, 
         }
         weight = (weight * r) >> 15;
         if (weight == 0) break;
-        ray = {p, reflect(ray.dir, n)};
+        set_ray(ray, p, reflect(ray.dir, n));
     }
     auto out = [](uint32_t a) { return static_cast<uint8_t>(min<uint32_t>((a + (1u << 22)) >> 23, 255u)); };
     return {out(acc[0]), out(acc[1]), out(acc[2])};
@@ -214,7 +217,9 @@ TraceStats trace_row(const Scene& s, const PrimaryRays& rays, int32_t y, typenam
     detail::PixelCull cull{rects.data(), 0, y};
     for (int32_t x = 0; x < rays.width; ++x, rr.next()) {
         cull.x = x;
-        row[x] = Format::pack(trace(s, {rays.eye, rr.direction()}, stack, stats, rects.empty() ? nullptr : &cull));
+        Ray ray;
+        set_ray(ray, rays.eye, rr.direction());
+        row[x] = Format::pack(trace(s, ray, stack, stats, rects.empty() ? nullptr : &cull));
     }
     return stats;
 }
