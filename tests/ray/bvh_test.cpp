@@ -88,7 +88,7 @@ TEST_CASE("the BVH walk finds exactly the brute-force nearest and any hit") {
         std::mt19937 rng(17);
         const Bvh bvh = b.bvh.view();
         long hits = 0;
-        for (int i = 0; i < 3000; ++i) {
+        for (int i = 0; i < 1500; ++i) {
             const Ray ray = random_ray(rng, bvh.nodes[0], (i % 2 == 0 ? 400.0 : 1500.0) * 65536);
             for (bool cull : {false, true}) {
                 BvhQuery q{ray, 16, INT32_MAX, cull, UINT32_MAX};
@@ -114,8 +114,8 @@ TEST_CASE("the BVH walk finds exactly the brute-force nearest and any hit") {
             }
         }
         MESSAGE(b.scene.tris.size() << " triangles, depth " << b.bvh.header.max_depth << ", nodes " << b.bvh.nodes.size()
-                                    << ": " << hits << " hits of 6000 rays");
-        CHECK(hits > 1000);
+                                    << ": " << hits << " hits of 3000 rays");
+        CHECK(hits > 500);
     }
 }
 

@@ -32,7 +32,21 @@ void mix(uint64_t& h, uint64_t v) { h = (h ^ v) * 0x100000001B3ull + 0x9E3779B97
 
 class Tracer {
 public:
-    explicit Tracer(const RtScene& s) : s_(s) {}
+    /// Bounds every mesh's triangles by a sphere, so most rays skip them (the answers do not change).
+    explicit Tracer(const RtScene& s) : s_(s) {
+        for (const RtTriangle& t : s.triangles) {
+            if (t.mesh >= int(bounds_.size())) bounds_.resize(size_t(t.mesh) + 1, Bound{});
+            Bound& b = bounds_[size_t(t.mesh)];
+            for (const RtVec& v : t.v) {
+                b.lo = {std::fmin(b.lo.x, v.x), std::fmin(b.lo.y, v.y), std::fmin(b.lo.z, v.z)};
+                b.hi = {std::fmax(b.hi.x, v.x), std::fmax(b.hi.y, v.y), std::fmax(b.hi.z, v.z)};
+            }
+        }
+        for (Bound& b : bounds_) {
+            b.centre = mul(add(b.lo, b.hi), 0.5);
+            b.radius = std::sqrt(dot(sub(b.hi, b.lo), sub(b.hi, b.lo))) * 0.5 * 1.0001 + 1e-9;
+        }
+    }
 
     /// Nearest (or any) hit on (t_min, t_max).
     bool hit(RtVec o, RtVec d, double t_min, double t_max, Skip skip, bool any, Hit& out) const {
@@ -66,9 +80,17 @@ public:
             best = t;
             if (any) return true;
         }
+        std::vector<char> near_mesh(bounds_.size());
+        for (size_t m = 0; m < bounds_.size(); ++m) {  // the segment passes within the bound's radius
+            const RtVec oc = sub(bounds_[m].centre, o);
+            const double t = std::fmin(std::fmax(dot(oc, d), t_min), best);
+            const RtVec gap = sub(oc, mul(d, t));
+            near_mesh[m] = dot(gap, gap) <= bounds_[m].radius * bounds_[m].radius;
+        }
         for (size_t i = 0; i < s_.triangles.size(); ++i) {
             if (skip.kind == kTriangle && skip.index == int(i)) continue;
             const RtTriangle& tr = s_.triangles[i];  // Moller-Trumbore
+            if (!near_mesh[size_t(tr.mesh)]) continue;
             const RtVec e1 = sub(tr.v[1], tr.v[0]), e2 = sub(tr.v[2], tr.v[0]), pv = cross(d, e2);
             const double det = dot(e1, pv);
             if (det == 0) continue;
@@ -160,7 +182,12 @@ public:
     }
 
 private:
+    struct Bound {
+        RtVec lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300}, centre{};
+        double radius = 0;
+    };
     const RtScene& s_;
+    std::vector<Bound> bounds_;
 };
 
 }  // namespace

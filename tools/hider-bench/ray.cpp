@@ -191,15 +191,11 @@ CastSetup cast_setup(const std::string& model_path, bool torus_view_args) {
 /// The primary ray queries of a grid of pixels (every `step`-th in x and y), as cast_row makes them.
 std::vector<ray::BvhQuery> sample_queries(const CastSetup& c, int step) {
     std::vector<ray::BvhQuery> q;
-    const uint64_t near_q46 = uint64_t(c.rays.view.near_raw) << 30, far_q46 = uint64_t(c.rays.view.far_raw) << 30;
     for (int y = step / 2; y < c.rays.height; y += step) {
         ray::RowRays rr(c.rays, y);
         for (int x = 0; x < c.rays.width; ++x, rr.next()) {
-            if (x % step != step / 2) continue;
-            const Vec3q30 d = rr.direction();
-            const int64_t cos_q30 = ray::dot_q60(d, c.rays.forward) >> 30;
-            q.push_back({{c.rays.eye, d}, ray::detail::quotient_sat(near_q46, uint32_t(cos_q30), false) - 1,
-                         ray::detail::quotient_sat(far_q46, uint32_t(cos_q30), true), true, UINT32_MAX});
+            ray::BvhQuery one{};
+            if (x % step == step / 2 && ray::primary_query(c.rays, rr.direction(), true, one)) q.push_back(one);
         }
     }
     return q;

@@ -18,6 +18,21 @@ constexpr int32_t quotient_sat(uint64_t n, uint32_t d, bool round_up) {
 }
 }  // namespace detail
 
+/// The walk of primary ray `d` that keeps the z-buffer's near <= w <= far: w = t (d . f), so the BVH query
+/// covers t in (near / cos - 1, far / cos] (rounded outward), cull as asked, nothing skipped. False when
+/// the ray does not point forward (cos <= 0: never for a pixel's ray).
+inline bool primary_query(const PrimaryRays& rays, const Vec3q30& d, bool cull, BvhQuery& q) {
+    const int64_t cos_q30 = dot_q60(d, rays.forward) >> 30;
+    if (cos_q30 <= 0) return false;
+    const uint64_t near_q46 = static_cast<uint64_t>(rays.view.near_raw) << 30, far_q46 = static_cast<uint64_t>(rays.view.far_raw) << 30;
+    set_ray(q.ray, rays.eye, d);
+    q.t_min = detail::quotient_sat(near_q46, static_cast<uint32_t>(cos_q30), false) - 1;
+    q.t_max = detail::quotient_sat(far_q46, static_cast<uint32_t>(cos_q30), true);
+    q.cull = cull;
+    q.skip = UINT32_MAX;
+    return true;
+}
+
 /// Casts row y of the frame of `rays` against `mesh` and writes width pixels of Format to `row`:
 /// opt.shade headlight or id (Shade::depth is not a ray-casting mode: the caller rejects it), pixels
 /// that meet nothing get `background`. Counts rays and hits and the BVH's work. Preconditions:
@@ -28,18 +43,12 @@ TraceStats cast_row(const PrimaryRays& rays, const Mesh& mesh, const Bvh& bvh, c
     TraceStats stats;
     const FaceShading shading(rays.view, opt);
     const typename Format::Pixel empty = Format::pack(background);
-    const uint64_t near_q46 = static_cast<uint64_t>(rays.view.near_raw) << 30, far_q46 = static_cast<uint64_t>(rays.view.far_raw) << 30;
     RowRays rr(rays, y);
     for (int32_t x = 0; x < rays.width; ++x, rr.next()) {
-        const Vec3q30 d = rr.direction();
         ++stats.rays;
-        // t where the ray crosses the near and far planes: w / cos, cos = d . f (> 0 for every pixel).
-        const int64_t cos_q30 = dot_q60(d, rays.forward) >> 30;
         row[x] = empty;
-        if (cos_q30 <= 0) continue;
-        const int32_t t_near = detail::quotient_sat(near_q46, static_cast<uint32_t>(cos_q30), false);
-        const int32_t t_far = detail::quotient_sat(far_q46, static_cast<uint32_t>(cos_q30), true);
-        const BvhQuery q{{rays.eye, d}, t_near - 1, t_far, opt.cull, UINT32_MAX};
+        BvhQuery q;
+        if (!primary_query(rays, rr.direction(), opt.cull, q)) continue;
         uint32_t tri = 0;
         TriangleHit hit{};
         if (!bvh_walk(bvh, mesh, q, stack, tri, hit, &stats.bvh)) continue;
