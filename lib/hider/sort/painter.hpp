@@ -57,22 +57,20 @@ template <bool kCount = false, class Format, class Depth>
 FrameStats paint_in_order(const View& view, const Mesh& mesh, Span<const ScreenPoly> polys, Span<const uint32_t> order,
                           const FrameView<Format, Depth>& frame, const DrawOptions& opt) {
     FrameStats st;
-    if (!detail::frame_matches(view, frame)) {
+    if (!frame_matches(view, frame)) {
         st.status = Status::invalid_argument;
         return st;
     }
     const FaceShading shading(view, opt);
-    const detail::BandBounds bb = detail::band_bounds(frame);
+    const BandBounds bb = band_bounds(frame);
     for (size_t k = 0; k < order.size(); ++k) {
         const ScreenPoly& p = polys[order[k]];
         TriangleRaster tr;
         int32_t y0 = 0, y1 = 0;
         if (!detail::setup_in_band(p, bb, frame, tr, y0, y1)) continue;
         ++st.triangles_drawn;
-        const uint32_t dz = tr.dzdx();
-        const uint32_t n = detail::with_poly_shader<Format>(opt, shading, mesh, p, [&](const auto& shader) {
-            return tr.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) { span_paint(frame.row(y), x0, x1, z, dz, shader); });
-        });
+        const uint32_t n = with_face_shader<Format>(opt, shading, mesh, p.tri, (p.flags & kPolyFront) != 0,
+                                                    [&](const auto& shader) { return paint_rows(tr, y0, y1, frame, shader); });
         st.fragments += n;
         if constexpr (kCount) st.pixels_written += n;
     }

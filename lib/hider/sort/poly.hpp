@@ -3,7 +3,8 @@
 // planes the z-buffer steps through. Plane-side tests are exact (128-bit), splitting keeps face ids.
 #pragma once
 #include <hider/int128.hpp>
-#include <hider/raster/zbuffer.hpp>
+#include <hider/raster/paint.hpp>
+#include <hider/raster/vertices.hpp>
 
 namespace hider {
 
@@ -40,15 +41,15 @@ inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVer
     whole.height = view.height;
     whole.y0 = 0;
     whole.y1 = view.height;
-    const detail::BandBounds bb = detail::band_bounds(whole);
+    const BandBounds bb = band_bounds(whole);
     for (size_t t = 0; t < mesh.tris.size(); ++t) {
         ++st.triangles_in;
-        detail::for_each_piece(view, mesh, verts, t, st, [&](const ScreenVertex& a, const ScreenVertex& b,
+        for_each_clipped(view, mesh, verts, t, st, [&](const ScreenVertex& a, const ScreenVertex& b,
                                                              const ScreenVertex& c) {
             const int32_t area = TriangleRaster::signed_area(a, b, c);
             if (area == 0) return;
             if (cull && area > 0) { ++st.triangles_culled; return; }
-            if (detail::misses_band(detail::screen_box(a, b, c), bb)) return;
+            if (misses_band(screen_box(a, b, c), bb)) return;
             ScreenPoly p{{a, b, c}, 0, 0, 0, 0, 0, 0, static_cast<uint32_t>(t), kNotMoved,
                          static_cast<uint8_t>(area < 0 ? kPolyFront : 0)};
             update_extents(p);
@@ -60,27 +61,13 @@ inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVer
 namespace detail {
 /// Sets `tr` up for polygon p when p can touch the band; [y0, y1) are then its rows inside the band.
 template <class Frame>
-__attribute__((always_inline)) inline bool setup_in_band(const ScreenPoly& p, const BandBounds& bb, const Frame& frame, TriangleRaster& tr, int32_t& y0,
-                   int32_t& y1) {
+__attribute__((always_inline)) inline bool setup_in_band(const ScreenPoly& p, const BandBounds& bb, const Frame& frame,
+                                                         TriangleRaster& tr, int32_t& y0, int32_t& y1) {
     if (p.ymax < bb.y_first || p.ymin > bb.y_last) return false;
     if (!tr.setup(p.v[0], p.v[1], p.v[2], frame.width, frame.height)) return false;
     y0 = max(frame.y0, tr.first_row());
     y1 = min(frame.y1, tr.end_row());
     return true;
-}
-
-/// Returns draw(shader) with polygon p's shader: grey by depth per pixel, or its flat face colour.
-template <class Format, class Draw>
-__attribute__((always_inline)) inline uint32_t with_poly_shader(const DrawOptions& opt, const FaceShading& shading, const Mesh& mesh, const ScreenPoly& p,
-                          Draw&& draw) {
-    if (opt.shade == Shade::depth) return draw(DepthShader<Format>(opt.depth_range));
-    return draw(FlatShader<typename Format::Pixel>{Format::pack(shading.color(mesh, p.tri, (p.flags & kPolyFront) != 0))});
-}
-
-/// True when the frame is usable and sized like the view.
-template <class Frame>
-bool frame_matches(const View& view, const Frame& frame) {
-    return frame.valid() && frame.width == view.width && frame.height == view.height;
 }
 }  // namespace detail
 
