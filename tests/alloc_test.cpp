@@ -71,7 +71,7 @@ TEST_CASE("ray tracing and ray casting a frame make no heap allocation") {
     tool::BakedBvh bvh;
     REQUIRE(tool::build_bvh(torus.mesh(), bvh, why));
     std::vector<ray::BvhStackEntry> stack(64);
-    std::vector<ray::PixelRect> rects(scene.spheres.size());
+    std::vector<ray::SphereRect> rects(scene.spheres.size());
     std::vector<uint16_t> row(320);
     const ray::Scene s = scene.view();
     const long before = g_allocations;

@@ -18,7 +18,7 @@ namespace demo = hider::scenes::raytrace_demo;
 struct Buffers {
     hider::Span<uint16_t> row;                     ///< >= width RGB565 pixels
     hider::Span<hider::ray::BvhStackEntry> stack;  ///< >= demo::kStackDepth entries
-    hider::Span<hider::ray::PixelRect> rects;      ///< >= the scene's spheres
+    hider::Span<hider::ray::SphereRect> rects;      ///< >= the scene's spheres
 };
 
 /// What one frame did, summed over its rows.

@@ -214,7 +214,7 @@ TEST_CASE("sphere rectangles change no pixel: culled and unculled frames are equ
         PrimaryRays rays;
         const int w = 48 + int(rng() % 40), h = 32 + int(rng() % 30);
         if (make_primary_rays(cam, w, h, rays) != Status::ok) continue;
-        std::vector<PixelRect> rects(s.spheres.size());
+        std::vector<SphereRect> rects(s.spheres.size());
         REQUIRE(sphere_rects(s, rays, {rects.data(), rects.size()}) == Status::ok);
         CHECK(sphere_rects(s, rays, {rects.data(), rects.size() - 1}) == Status::invalid_argument);
         std::vector<uint16_t> a(w), b(w);
@@ -223,7 +223,7 @@ TEST_CASE("sphere rectangles change no pixel: culled and unculled frames are equ
             (void)trace_row<Rgb565Format>(s, rays, y, b.data(), stack());
             REQUIRE(a == b);
             for (int x = 0; x < w; ++x)
-                for (const PixelRect& r : rects) culled_tests += !r.contains(x, y);
+                for (const SphereRect& r : rects) culled_tests += !r.contains(x, y);
         }
     }
     MESSAGE("primary sphere tests skipped by the rectangles: " << culled_tests);

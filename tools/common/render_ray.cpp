@@ -50,7 +50,7 @@ void cast_all(const Scene& scene, const ray::PrimaryRays& rays, const ray::Bvh& 
 template <class Format>
 void trace_all(const RayScene& scene, const ray::Scene& s, const ray::PrimaryRays& rays, int width, int height,
                const RenderOptions& opt, std::vector<ray::BvhStackEntry>& stack, RenderResult& out) {
-    std::vector<ray::PixelRect> rects(scene.spheres.size());
+    std::vector<ray::SphereRect> rects(scene.spheres.size());
     if (ray::sphere_rects(s, rays, {rects.data(), rects.size()}) != Status::ok) rects.clear();  // cannot fail: sized above
     render_rows<Format>(width, height, opt, out, [&](int y, typename Format::Pixel* row) {
         add(out.ray, ray::trace_row<Format>(s, rays, y, row, {stack.data(), stack.size()}, {rects.data(), rects.size()}));

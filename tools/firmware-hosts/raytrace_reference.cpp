@@ -12,7 +12,7 @@ namespace {
 
 uint16_t g_row[raytrace::demo::kWidth];
 hider::ray::BvhStackEntry g_stack[raytrace::demo::kStackDepth];
-hider::ray::PixelRect g_rects[raytrace::demo::kSphereCount];
+hider::ray::SphereRect g_rects[raytrace::demo::kSphereCount];
 uint8_t g_ppm_row[raytrace::demo::kWidth * 3];
 
 }  // namespace

@@ -10,7 +10,7 @@ struct RayRowJob {
     const ray::Scene* scene = nullptr;
     const ray::PrimaryRays* rays = nullptr;
     Span<ray::BvhStackEntry> stack;
-    Span<const ray::PixelRect> rects;
+    Span<const ray::SphereRect> rects;
     uint16_t* row = nullptr;
     int32_t y = 0;
     ray::TraceStats stats{};  ///< out

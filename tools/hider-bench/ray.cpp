@@ -107,7 +107,7 @@ int raytrace_run_command(const Args& args) {
     ray::PrimaryRays rays;
     if (ray::make_primary_rays(scene.camera, scene.width, scene.height, rays) != Status::ok) fail("raytrace-run: camera rejected");
     std::vector<ray::BvhStackEntry> stack(scene.stack_depth());
-    std::vector<ray::PixelRect> rects(std::max<size_t>(1, scene.spheres.size()));
+    std::vector<ray::SphereRect> rects(std::max<size_t>(1, scene.spheres.size()));
     if (ray::validate_scene(s, {stack.data(), stack.size()}) != Status::ok || ray::sphere_rects(s, rays, {rects.data(), rects.size()}) != Status::ok)
         fail("raytrace-run: scene rejected");
     AlignedBuffer<uint16_t> row(static_cast<size_t>(scene.width));

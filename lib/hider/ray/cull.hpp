@@ -9,7 +9,7 @@
 namespace hider::ray {
 
 /// Pixels [x0, x1] x [y0, y1] (inclusive) whose primary rays may meet a sphere; x0 > x1 when none.
-struct PixelRect {
+struct SphereRect {
     int16_t x0, y0, x1, y1;
     constexpr bool contains(int32_t x, int32_t y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
 };
@@ -39,7 +39,7 @@ inline void pixel_span(int64_t c, int64_t w, int64_t r, int64_t k, int32_t n, bo
 /// Fills out[i] with the pixels whose primary rays (of `rays`) may meet sphere i; a sphere reaching
 /// behind or nearly to the eye gets the whole frame. invalid_argument when out is shorter than the
 /// sphere list. Cost per sphere: three dot products and four 64-bit divisions.
-inline Status sphere_rects(const Scene& s, const PrimaryRays& rays, Span<PixelRect> out) {
+inline Status sphere_rects(const Scene& s, const PrimaryRays& rays, Span<SphereRect> out) {
     if (out.size() < s.spheres.size()) return Status::invalid_argument;
     const Q30(&rot)[3][3] = rays.view.to_view.rot.m;
     const Vec3q30 sx{rot[0][0], rot[0][1], rot[0][2]}, uy{rot[1][0], rot[1][1], rot[1][2]};
@@ -51,7 +51,7 @@ inline Status sphere_rects(const Scene& s, const PrimaryRays& rays, Span<PixelRe
                       w = round_q46_to_q16(dot_q46(rays.forward, rel));
         // Rounding margin: a few LSB for positions, the unit rows and the hit test, plus 2^-24 of the range.
         const int64_t r = int64_t{sp.radius.raw()} + 64 + ((abs_value(w) + sp.radius.raw()) >> 24);
-        PixelRect& rect = out[i];
+        SphereRect& rect = out[i];
         if (w - r < 256) {  // reaches to within 2^-8 units of the eye's plane, or behind it: no culling
             rect = {0, 0, static_cast<int16_t>(rays.width - 1), static_cast<int16_t>(rays.height - 1)};
             continue;

@@ -38,7 +38,7 @@ struct Skip {
 
 /// A primary ray's pixel and the frame's sphere rectangles (sphere_rects()); null: no culling.
 struct PixelCull {
-    const PixelRect* rects;
+    const SphereRect* rects;
     int32_t x, y;
 };
 
@@ -210,7 +210,7 @@ inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, 
 /// Precondition: validate_scene(s, stack) == ok, 0 <= y < rays.height, rects empty or >= spheres.
 template <class Format>
 TraceStats trace_row(const Scene& s, const PrimaryRays& rays, int32_t y, typename Format::Pixel* row,
-                     Span<BvhStackEntry> stack, Span<const PixelRect> rects = {}) {
+                     Span<BvhStackEntry> stack, Span<const SphereRect> rects = {}) {
     HIDER_ASSERT(rects.empty() || rects.size() >= s.spheres.size());
     TraceStats stats;
     RowRays rr(rays, y);
