@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Renders the demo: the benchmark torus and the Utah teapot, as PPM and PNG, with lib/ fixed-point code.
+# Renders the demo: the benchmark torus and the Utah teapot, as PPM and PNG, and the ray-traced spheres
+# (tests/data/scenes/spheres.txt), with lib/ fixed-point code.
 #   bash scripts/demo.sh --web [PORT]   instead builds the web playground (hider-render as WebAssembly)
 #                                       and serves it on http://127.0.0.1:PORT/ (default 8000) until Ctrl-C
 set -euo pipefail
@@ -18,4 +19,5 @@ render=build/demo/tools/hider-render
 $render tests/data/models/teapot.obj --eye 2,4,5 --no-cull -o demo.ppm
 $render tests/data/models/teapot.obj --eye 2,4,5 --no-cull -o demo.png
 $render tests/data/models/torus.obj --eye 0,0,-2.5 --target 0,0,0 --fov 73.7398 --near 0.25 --stats -o torus.png
-echo "wrote demo.ppm, demo.png (teapot) and torus.png (benchmark view)"
+$render --scene tests/data/scenes/spheres.txt --size 320x256 --stats -o raytrace.png
+echo "wrote demo.ppm, demo.png (teapot), torus.png (benchmark view) and raytrace.png (ray-traced spheres)"

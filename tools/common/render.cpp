@@ -1,6 +1,7 @@
 // Host driver: vertex projection once per frame, then the chosen algorithm per band.
 #include "common/render.hpp"
 
+#include "common/render_ray.hpp"
 #include "host/ppm.hpp"
 
 namespace hider::tool {
@@ -197,13 +198,14 @@ bool render_format(const Scene& scene, const RenderOptions& opt, RenderResult& o
 
 size_t default_split_pool(size_t triangles) { return triangles * 16 + 1024; }
 
-std::string algo_names() { return "zbuffer, painter, newell, reverse"; }
+std::string algo_names() { return "zbuffer, painter, newell, reverse, raycast"; }
 
 bool parse_algo(const std::string& name, Algo& out) {
     if (name == "zbuffer") { out = Algo::zbuffer; return true; }
     if (name == "painter") { out = Algo::painter; return true; }
     if (name == "newell") { out = Algo::newell; return true; }
     if (name == "reverse") { out = Algo::reverse; return true; }
+    if (name == "raycast") { out = Algo::raycast; return true; }
     return false;
 }
 
@@ -216,6 +218,7 @@ bool render(const Scene& scene, const RenderOptions& opt, RenderResult& out, std
         error = "band rows must be >= 1";
         return false;
     }
+    if (opt.algo == Algo::raycast) return render_raycast(scene, opt, out, error);
     switch (opt.format) {
         case PixelFormat::rgb565: return render_format<Rgb565Format>(scene, opt, out, error);
         case PixelFormat::rgb888: return render_format<Rgb888Format>(scene, opt, out, error);

@@ -13,7 +13,7 @@
 
 namespace hider::tool {
 
-enum class Algo { zbuffer, painter, newell, reverse };
+enum class Algo { zbuffer, painter, newell, reverse, raycast };
 enum class PixelFormat { rgb565, rgb888, grey8 };
 
 /// Largest room for Newell's cuts the tools give or try (polygons).
@@ -39,6 +39,12 @@ struct RenderOptions {
     size_t split_pool = 0;  ///< newell/reverse: extra polygons for cuts; 0 = default_split_pool()
 };
 
+/// What the ray caster or ray tracer did (render_ray.hpp).
+struct RayCounts {
+    uint64_t rays = 0, hits = 0, shadow_rays = 0;
+    uint64_t boxes = 0, triangles = 0;  ///< BVH box and triangle tests
+};
+
 struct RenderResult {
     int width = 0, height = 0;
     std::vector<uint8_t> rgb;  ///< width * height * 3, row 0 first
@@ -48,6 +54,7 @@ struct RenderResult {
     size_t polygons = 0;          ///< object-space algorithms: polygons drawn after cuts
     size_t pool = 0;              ///< newell and reverse: the room for cuts it had (polygons)
     size_t pool_needed = 0;       ///< when cuts were dropped: the room that would have held them (0: more than kMaxSplitPool)
+    RayCounts ray;                ///< raycast and ray-traced scenes only
 };
 
 /// Renders `scene` with lib/ only. Returns false with a reason for unusable options.

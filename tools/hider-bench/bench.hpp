@@ -43,6 +43,10 @@ int sort_command(const Args& args);       ///< hider-bench sort ...
 int sort_run_command(const Args& args);   ///< internal: one painter_order call that sort runs under callgrind
 int newell_command(const Args& args);     ///< hider-bench newell ...
 int newell_run_command(const Args& args); ///< internal: painter_order then newell_order, run under callgrind
+int raytrace_command(const Args& args);      ///< hider-bench raytrace ... (ray.cpp)
+int raytrace_run_command(const Args& args);  ///< internal: the demo's rows, one measured call each
+int raycast_command(const Args& args);       ///< hider-bench raycast ... (ray.cpp)
+int raycast_run_command(const Args& args);   ///< internal: a ray-cast frame, or sampled rays (BVH / brute force)
 
 /// Directory of the benchmark models: HIDER_BENCH_MODELS_DIR (the source tree's tests/data/models).
 std::string default_models_dir();

@@ -31,6 +31,11 @@ const char* kUsage =
     "         callgrind Ir per polygon of painter_order on 1k..69k polygons of the bunny (no culling)\n"
     "       hider-bench newell [--models DIR] [--valgrind PATH]\n"
     "         Newell statistics and callgrind Ir of newell_order vs painter_order for every model\n"
+    "       hider-bench raytrace [--valgrind PATH] [--build-root DIR] [--scene FILE.txt]\n"
+    "         instructions per pixel (mean, worst row) of the ray-traced demo scene: host (callgrind) and\n"
+    "         firmware/raytrace of each cross build tree under QEMU\n"
+    "       hider-bench raycast [--models DIR] [--valgrind PATH]\n"
+    "         callgrind Ir per ray of mesh ray casting (torus, bunny), BVH against brute force\n"
     "exit status: 0 ok, 2 error, 77 valgrind (targets: every cross build tree) not found\n";
 
 }  // namespace
@@ -116,6 +121,10 @@ int main(int argc, char** argv) {
     if (command == "sort-run") return sort_run_command(args);
     if (command == "newell") return newell_command(args);
     if (command == "newell-run") return newell_run_command(args);
+    if (command == "raytrace") return raytrace_command(args);
+    if (command == "raytrace-run") return raytrace_run_command(args);
+    if (command == "raycast") return raycast_command(args);
+    if (command == "raycast-run") return raycast_run_command(args);
     if (command == "-h" || command == "--help") {
         std::cout << kUsage;
         return 0;
