@@ -186,9 +186,9 @@ void print_result(Io& io, Algo algo, const Result& r) {
     io.print(", triangle setups ");
     io.print_u32(r.stats.triangles_drawn);
     io.print(", fragments ");
-    io.print_u32(r.stats.fragments);
+    io.print_u32(static_cast<uint32_t>(r.stats.fragments));  // a 160x128 frame stays far below 2^32
     io.print(", pixels written ");
-    io.print_u32(r.stats.pixels_written);
+    io.print_u32(static_cast<uint32_t>(r.stats.pixels_written));
     io.print("\n");
     if (algo != Algo::painter) {
         io.print("newell: pair tests ");
@@ -207,7 +207,7 @@ void print_result(Io& io, Algo algo, const Result& r) {
     }
     if (algo == Algo::reverse) {
         io.print("reverse: pixels written ");
-        io.print_u32(r.stats.pixels_written);
+        io.print_u32(static_cast<uint32_t>(r.stats.pixels_written));
         io.print(", covered ");
         io.print_u32(r.covered);
         io.print(r.coverage_mismatches == 0 ? " (equal in every band)\n" : " (DIFFERENT)\n");

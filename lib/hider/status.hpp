@@ -34,8 +34,9 @@ struct [[nodiscard]] FrameStats {
     uint32_t triangles_clipped = 0;  ///< triangles that needed near/far/guard clipping
     uint32_t triangles_outside = 0;  ///< wholly outside one clip plane (sorted algorithms: or no pixel centre)
     uint32_t triangles_degenerate = 0;  ///< zero area on the screen (sorted algorithms)
-    uint32_t fragments = 0;          ///< pixel centres covered (z-buffer: counted by draw_zbuffer<true> only)
-    uint32_t pixels_written = 0;     ///< colour writes (only counted when the variant counts them)
+    uint64_t fragments = 0;       ///< pixel centres covered (z-buffer: counted by draw_zbuffer<true> only); 64 bits,
+                                  ///< since a frame of many overlapping triangles can pass 2^32
+    uint64_t pixels_written = 0;  ///< colour writes (only counted when the variant counts them)
 
     constexpr bool ok() const { return status == Status::ok; }
     /// Adds another call's counts (a band of the same frame); the first non-ok status wins.

@@ -276,9 +276,13 @@ TEST_CASE("A line longer than 1 MiB is an error, a line of exactly 1 MiB is not"
     }
 }
 
-TEST_CASE("Vertex and face counts are limited, 2^24 each by default") {
+TEST_CASE("Vertex and face counts are limited: 2^24 vertices, 2^24 - 1 faces (the largest 24-bit face id)") {
     CHECK(hider::tool::kObjMaxVertices == 16777216u);
-    CHECK(hider::tool::kObjMaxFaces == 16777216u);
+    CHECK(hider::tool::kObjMaxFaces == 16777215u);
+    // The last face's id must still encode to a colour that is not the background.
+    const uint32_t id = hider::tool::kObjMaxFaces;
+    CHECK(((id >> 16) & 255u) == 255u);
+    CHECK(((id >> 16 & 255u) | (id >> 8 & 255u) | (id & 255u)) != 0u);
     ObjLimits limits;
     limits.max_vertices = 3;
     limits.max_faces = 2;

@@ -16,7 +16,10 @@
 #include <sstream>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
+
+#include "common/gen_scenes.hpp"
 
 namespace {
 
@@ -542,4 +545,110 @@ TEST_CASE("A write that fails midway leaves no partial output file") {
     // written so far. A 1-block file size limit makes the write fail with EFBIG (SIGXFSZ ignored).
     const Run r = run({triangle_model(), "-o", out_ppm(), "--size", "100x100"}, out_ppm(), "trap '' XFSZ; ulimit -f 1; ");
     check_error(r, {out_ppm() + ": ", "write failed"});
+}
+
+namespace {
+
+/// A generated scene written as OBJ into the scratch directory, and its camera options.
+std::pair<std::string, Args> generated(const std::string& name) {
+    hider::tool::gen::GenScene g;
+    std::string why;
+    REQUIRE_MESSAGE(hider::tool::gen::by_name(name, g, why), why);
+    const std::string path = scratch_path(name + ".obj");
+    std::ofstream out(path);
+    hider::tool::gen::write_obj(g, out);
+    out.close();
+    Args cam;
+    std::istringstream flags(hider::tool::gen::camera_flags(g));
+    for (std::string w; flags >> w;) cam.push_back(w);
+    return {path, cam};
+}
+
+}  // namespace
+
+TEST_CASE("A full Newell pool is a warning naming the pool and the size it needed; --strict makes it exit 2") {
+    const auto [model, cam] = generated("dense-1-150");
+    const Run small = render(model, with(cam, {"--no-cull", "--algo", "newell", "--pool", "100"}));
+    INFO("stderr: ", small.err);
+    CHECK(small.code == 0);
+    CHECK(small.output_created);
+    CHECK(contains(small.err, "hider-render: warning: Newell's cut pool of 100 polygons is full"));
+    const size_t at = small.err.find("needs a pool of ");
+    REQUIRE(at != std::string::npos);
+    const long needed = std::atol(small.err.c_str() + at + 16);
+    CHECK(needed > 100);
+    const Run strict = render(model, with(cam, {"--no-cull", "--algo", "reverse", "--pool", "100", "--strict"}));
+    CHECK(strict.code == 2);
+    CHECK(contains(strict.err, "hider-render: error: Newell's cut pool of 100 polygons is full"));
+    // The size it names is enough: no warning, exit 0 even with --strict.
+    const Run enough = render(model, with(cam, {"--no-cull", "--algo", "newell", "--pool", std::to_string(needed), "--strict"}));
+    INFO("stderr with the named pool: ", enough.err);
+    CHECK(enough.code == 0);
+    CHECK(enough.err.empty());
+    // The default pool holds it.
+    const Run dflt = render(model, with(cam, {"--no-cull", "--algo", "newell", "--strict"}));
+    CHECK(dflt.code == 0);
+    CHECK(dflt.err.empty());
+}
+
+TEST_CASE("A far plane beyond the scene is clamped, and the default near plane does not follow it") {
+    const std::string torus = std::string(HIDER_TEST_DATA) + "/models/torus.obj";
+    for (const char* far : {"5000", "1e308"}) {
+        const Run r = render(torus, {"--far", far, "--stats"});
+        INFO("--far ", far, " stderr: ", r.err);
+        CHECK(r.code == 0);
+        CHECK(contains(r.out, "triangles 1000 drawn 456 "));  // as with the default far plane
+    }
+    check_error(render(torus, {"--near", "1e308"}), {"near plane (1e+308) lies beyond the whole scene"});
+}
+
+TEST_CASE("Coordinates near the double range are named, never printed as nan") {
+    const std::string torus = std::string(HIDER_TEST_DATA) + "/models/torus.obj";
+    const Run r = render(torus, {"--target", "1e308,1e308,1e308"});
+    check_error(r, {"default eye", "give --eye"});
+    CHECK_FALSE(contains(r.err, "nan"));
+    const Run eye = render(triangle_model(), {"--eye", "-1.7e308,0,1.7e308"});
+    CHECK_FALSE(contains(eye.err, "nan"));
+}
+
+TEST_CASE("The output format follows the extension, case-insensitively; unknown extensions are refused") {
+    const std::string torus = std::string(HIDER_TEST_DATA) + "/models/torus.obj";
+    const std::string upper = scratch_path("OUT.PNG");
+    const Run png = run({torus, "-o", upper}, upper);
+    CHECK(png.code == 0);
+    CHECK(read_file(upper).substr(0, 4) == "\x89PNG");
+    const std::string jpg = scratch_path("out.jpg");
+    const Run bad = run({torus, "-o", jpg}, jpg);
+    check_error(bad, {"unknown image format '.jpg'", "use .ppm or .png"});
+    const std::string none = scratch_path("noext");
+    check_error(run({torus, "-o", none}, none), {"unknown image format '(no extension)'"});
+}
+
+TEST_CASE("--help lists the algorithm names") {
+    const Run r = run({"--help"});
+    CHECK(r.code == 0);
+    for (const char* algo : {"zbuffer", "painter", "newell", "reverse", "raycast"}) CHECK(contains(r.out, algo));
+}
+
+TEST_CASE("--stats counts every triangle in exactly one bucket for the sorted algorithms") {
+    // The benchmark view: 444 front faces, 554 back faces and 2 that cover no pixel centre.
+    const std::string torus = std::string(HIDER_TEST_DATA) + "/models/torus.obj";
+    for (const char* algo : {"painter", "newell", "reverse"}) {
+        const Run r = render(torus, {"--eye", "0,0,-2.5", "--target", "0,0,0", "--fov", "73.7398", "--near", "0.25", "--algo",
+                                     algo, "--stats"});
+        INFO(algo, " stdout: ", r.out);
+        CHECK(contains(r.out, "triangles 1000 drawn 444 culled 554 degenerate 0 outside 2 "));
+    }
+    // A scene with zero-area and clipped triangles: the buckets still add up to the triangles in.
+    const std::string model = write_model("buckets.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 0 0 5\nv 1 0 5\nv 0 1 5\n"
+                                                         "f 1 2 3\nf 1 2 4\nf 3 2 1\nf 5 6 7\n");
+    const Run r = render(model, {"--eye", "0.3,0.3,3", "--target", "0.3,0.3,0", "--near", "0.5", "--algo", "painter", "--stats"});
+    INFO("stdout: ", r.out);
+    unsigned in = 0, drawn = 0, culled = 0, degenerate = 0, outside = 0, clipped = 0;
+    REQUIRE(std::sscanf(r.out.c_str(), "triangles %u drawn %u culled %u degenerate %u outside %u clipped %u", &in, &drawn, &culled,
+                        &degenerate, &outside, &clipped) == 6);
+    CHECK(in == 4);
+    CHECK(degenerate == 1);  // f 1 2 4 is a line
+    CHECK(culled == 1);      // f 3 2 1 runs clockwise
+    CHECK(drawn + culled + degenerate + outside == in);
 }

@@ -24,6 +24,19 @@ bool parse_int(const std::string& s, long& out) {
     return end == s.c_str() + s.size() && errno == 0;
 }
 
+bool output_format(const std::string& path, bool& png, std::string& why) {
+    const size_t slash = path.find_last_of('/'), dot = path.find_last_of('.');
+    std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : path.substr(dot + 1);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == "ppm" || ext == "png") {
+        png = ext == "png";
+        return true;
+    }
+    why = "output '" + path + "': unknown image format '" + (ext.empty() ? std::string("(no extension)") : "." + ext) +
+          "' (use .ppm or .png)";
+    return false;
+}
+
 bool parse_vec3(const std::string& opt, const std::string& s, Vec3d& out, std::string& why) {
     size_t start = 0;
     for (int i = 0; i < 3; ++i) {

@@ -13,6 +13,10 @@ bool parse_double(const std::string& s, double& out);
 /// Decimal integer (optional '-'), the whole string, in range of long. False on anything else.
 bool parse_int(const std::string& s, long& out);
 
+/// The image format of an output path by its extension, case-insensitively: .ppm (png = false) or .png
+/// (png = true). False with the user message for any other extension.
+bool output_format(const std::string& path, bool& png, std::string& why);
+
 /// "x,y,z" for option `opt`; on failure returns false and sets `why` to the user message.
 bool parse_vec3(const std::string& opt, const std::string& s, Vec3d& out, std::string& why);
 

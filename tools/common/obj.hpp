@@ -22,7 +22,8 @@ namespace hider::tool {
 
 inline constexpr std::size_t kObjMaxLineBytes = std::size_t{1} << 20;  ///< longest line, '\n' and '\r' excluded
 inline constexpr uint32_t kObjMaxVertices = uint32_t{1} << 24;         ///< most `v` lines in one file
-inline constexpr uint32_t kObjMaxFaces = uint32_t{1} << 24;            ///< most `f` lines in one file
+/// Most `f` lines in one file: face ids are 24-bit colours in id images (--shade id) and 0 is the background.
+inline constexpr uint32_t kObjMaxFaces = (uint32_t{1} << 24) - 1;
 
 /// Input limits: the defaults are the project's and also the maximum (larger values are cut to them);
 /// smaller ones let tests reach each limit cheaply.

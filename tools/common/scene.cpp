@@ -81,20 +81,14 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
     }
     const Vec3d up = args.up.value_or(Vec3d{0, 1, 0});
     const double dist = length(sub(eye, mid));
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(eye[i])) {
+            error = "the default eye for target (" + fmt(target[0]) + ", " + fmt(target[1]) + ", " + fmt(target[2]) +
+                    ") lies beyond the range of double; give --eye";
+            return false;
+        }
     if (!std::isfinite(dist) || !std::isfinite((dist + r) * 1.01)) {
-        error = "scene is too large to represent (eye " + fmt(dist) + " from the model)";
-        return false;
-    }
-    // Defaults frame the model; a near or far given alone is never compared with the other's default.
-    double far = args.far.value_or(std::max((dist + r) * 1.01, args.near.value_or(0.0) * 2));
-    double near = args.near.value_or(std::max((dist - r) * 0.99, far / 1000.0));
-    if (!args.near && args.far && near >= far) near = far / 1000.0;
-    if (!(near > 0) || !std::isfinite(near)) {
-        error = "near plane must be > 0 (got " + fmt(near) + ")";
-        return false;
-    }
-    if (!(far > near) || !std::isfinite(far)) {
-        error = "far plane (" + fmt(far) + ") must be greater than near (" + fmt(near) + ")";
+        error = "scene is too large to represent: eye and model lie more than " + fmt(1.79e308) + " apart";
         return false;
     }
     if (length(up) == 0) {
@@ -117,15 +111,31 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
         return false;
     }
     const double scale = kFitHalfExtent / half;
-    // Far beyond the scene changes no visibility: clamp it to just past the farthest box corner.
+    // A far plane beyond the scene changes no visibility: far is clamped to just past the farthest box
+    // corner, and the default near follows the clamped far, never a far given far beyond the scene.
     double farthest = 0;
     for (int c = 0; c < 8; ++c) {
         const Vec3d corner{(c & 1) ? bhi[0] : blo[0], (c & 2) ? bhi[1] : blo[1], (c & 4) ? bhi[2] : blo[2]};
         farthest = std::max(farthest, length(sub(corner, eye)));
     }
-    far = std::min(far, farthest * 1.01);
+    if (args.near && !(*args.near > 0)) {
+        error = "near plane must be > 0 (got " + fmt(*args.near) + ")";
+        return false;
+    }
+    if (args.far && !(*args.far > 0)) {
+        error = "far plane must be > 0 (got " + fmt(*args.far) + ")";
+        return false;
+    }
+    if (args.near && args.far && !(*args.far > *args.near)) {
+        error = "far plane (" + fmt(*args.far) + ") must be greater than near (" + fmt(*args.near) + ")";
+        return false;
+    }
+    double far = std::min(args.far.value_or((dist + r) * 1.01), farthest * 1.01);
+    if (args.near && !args.far) far = std::max(far, std::min(*args.near * 2, farthest * 1.01));
+    double near = args.near.value_or(std::max((dist - r) * 0.99, far / 1000.0));
+    if (!args.near && near >= far) near = far / 1000.0;
     if (!(far > near)) {
-        error = "near plane (" + fmt(near) + ") lies beyond the whole scene";
+        error = "near plane (" + fmt(near) + ") lies beyond the whole scene (farthest point " + fmt(farthest) + ")";
         return false;
     }
     const double near_world = near * scale, far_world = far * scale;

@@ -109,7 +109,7 @@ int frame_command(const Args& args) {
     std::printf("frame %s %dx%d depth %d-bit, %ld frame%s, statistics per frame:\n", model_path.c_str(),
                 f.width, f.height, depth_bits, frames, frames == 1 ? "" : "s");
     std::printf("triangles %" PRIu32 " drawn %" PRIu32 " culled %" PRIu32 " clipped %" PRIu32 " outside %" PRIu32
-                " fragments %" PRIu32 " covered %" PRIu32 " pixels %zu\n",
+                " fragments %" PRIu64 " covered %" PRIu32 " pixels %zu\n",
                 s.triangles_in, s.triangles_drawn, s.triangles_culled, s.triangles_clipped, s.triangles_outside,
                 s.fragments, covered, pixels);
     return 0;

@@ -26,7 +26,7 @@ const char* kUsage =
     "usage: hider-render MODEL.obj -o OUT.ppm|OUT.png [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
     "                    [--fov DEG] [--near N] [--far F] [--shade headlight|id|depth] [--no-cull]\n"
     "                    [--algo NAME] [--depth-bits 16|32] [--band ROWS] [--format rgb565|rgb888|grey8]\n"
-    "                    [--painter-key farthest|barycenter] [--pool N] [--stats]\n"
+    "                    [--painter-key farthest|barycenter] [--pool N] [--stats] [--strict]\n"
     "       hider-render --scene FILE.txt -o OUT.ppm|OUT.png [--size WxH] [--band ROWS] [--format ...] [--stats]\n";
 
 [[noreturn]] void fail(const std::string& msg) {
@@ -40,6 +40,39 @@ Vec3d parse_vec(const std::string& opt, const std::string& s) {
     std::string why;
     if (!parse_vec3(opt, s, v, why)) fail(why);
     return v;
+}
+
+/// Writes the frame as PPM or PNG by the extension of `path` (checked before rendering); exits 2 on failure.
+void write_image(const std::string& path, const RenderResult& r) {
+    bool png = false;
+    std::string why;
+    if (!output_format(path, png, why) ||
+        !(png ? port::write_png(path, r.width, r.height, r.rgb, why) : port::write_ppm(path, r.width, r.height, r.rgb, why)))
+        fail(why);
+}
+
+/// Says on stderr what a render could not do (a full pool, a spent budget, a piece with too many cuts)
+/// and returns the exit status: 0, or 2 with --strict.
+int warn_incomplete(const RenderOptions& opt, const RenderResult& r, bool strict) {
+    if (r.stats.status == Status::ok) return 0;
+    const NewellStats& n = r.newell;
+    const char* kind = strict ? "hider-render: error: " : "hider-render: warning: ";
+    if (n.dropped != 0) {
+        std::cerr << kind << "Newell's cut pool of " << r.pool << " polygons is full: " << n.dropped << " cuts dropped, ";
+        if (r.pool_needed != 0)
+            std::cerr << "this view needs a pool of " << r.pool_needed << " (--pool " << r.pool_needed << ")\n";
+        else
+            std::cerr << "and a pool of " << kMaxSplitPool << " was not enough either\n";
+    }
+    if (n.too_deep != 0)
+        std::cerr << kind << n.too_deep << " pairs left uncut: their pieces already carry " << kMaxPieceCuts << " cuts\n";
+    if (n.budget_exhausted)
+        std::cerr << kind << "Newell's budget of pair tests ran out after " << n.pair_tests
+                  << "; the rest is drawn in depth order\n";
+    if (n.dropped == 0 && n.too_deep == 0 && !n.budget_exhausted)
+        std::cerr << kind << "the frame is incomplete: " << status_name(r.stats.status) << "\n";
+    (void)opt;
+    return strict ? 2 : 0;
 }
 
 /// Options that only make sense with an OBJ model (the scene file sets its own camera and shading).
@@ -56,16 +89,16 @@ int render_scene_file(const std::string& scene_path, const std::string& model_pa
         if (model_only_option(argv[i])) fail(std::string(argv[i]) + " does not apply to --scene (the scene file sets camera and shading)");
     if (opt.algo != Algo::zbuffer && opt.algo != Algo::raycast) fail("--scene is ray traced: --algo must be raycast (or left out)");
     if (out_path.empty()) fail(std::string("no output given (-o OUT.ppm)\n") + kUsage);
+    bool png = false;
+    std::string why_format;
+    if (!output_format(out_path, png, why_format)) fail(why_format);
     RayScene scene;
     std::string why;
     if (!load_ray_scene(scene_path, scene, why)) fail(why);
     const int width = size_given ? cam.width : scene.width, height = size_given ? cam.height : scene.height;
     RenderResult result;
     if (!render_ray_scene(scene, width, height, opt, result, why)) fail(scene_path + ": " + why);
-    const bool png = out_path.size() > 4 && out_path.compare(out_path.size() - 4, 4, ".png") == 0;
-    if (!(png ? port::write_png(out_path, result.width, result.height, result.rgb, why)
-              : port::write_ppm(out_path, result.width, result.height, result.rgb, why)))
-        fail(why);
+    write_image(out_path, result);
     if (stats) {
         const RayCounts& r = result.ray;
         std::printf("rays %llu hits %llu shadow-rays %llu box-tests %llu triangle-tests %llu\n",
@@ -83,7 +116,7 @@ int main(int argc, char** argv) {
     bool size_given = false;
     CameraArgs cam;
     RenderOptions opt;
-    bool stats = false;
+    bool stats = false, strict = false;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&]() -> std::string {
@@ -151,14 +184,18 @@ int main(int argc, char** argv) {
             if (!parse_int(v, n) || n < 1 || n > (1L << 24)) fail("--pool needs a polygon count 1..16777216 (got '" + v + "')");
             opt.split_pool = static_cast<size_t>(n);
         } else if (a == "--stats") stats = true;
-        else if (a == "-h" || a == "--help") { std::cout << kUsage; return 0; }
+        else if (a == "--strict") strict = true;
+        else if (a == "-h" || a == "--help") { std::cout << kUsage << "algorithms: " << algo_names() << "\n"; return 0; }
         else if (!a.empty() && a[0] == '-') fail("unknown option '" + a + "'\n" + kUsage);
         else if (model_path.empty()) model_path = a;
         else fail("more than one model given ('" + model_path + "', '" + a + "')");
     }
+    std::string why_format;
     if (!scene_path.empty()) return render_scene_file(scene_path, model_path, out_path, size_given, cam, opt, stats, argc, argv);
     if (model_path.empty()) fail(std::string("no model given\n") + kUsage);
     if (out_path.empty()) fail(std::string("no output given (-o OUT.ppm)\n") + kUsage);
+    bool png = false;
+    if (!output_format(out_path, png, why_format)) fail(why_format);
     if (opt.shade == Shade::id) opt.format = PixelFormat::rgb888;  // ids need all 24 bits
 
     ObjModel model;
@@ -169,16 +206,13 @@ int main(int argc, char** argv) {
     if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
     RenderResult result;
     if (!render(scene, opt, result, why)) fail(why);
-    const bool png = out_path.size() > 4 && out_path.compare(out_path.size() - 4, 4, ".png") == 0;
-    if (!(png ? port::write_png(out_path, result.width, result.height, result.rgb, why)
-              : port::write_ppm(out_path, result.width, result.height, result.rgb, why)))
-        fail(why);
+    write_image(out_path, result);
     if (stats) {
         const FrameStats& s = result.stats;
-        std::printf("triangles %u drawn %u culled %u clipped %u outside %u\n", s.triangles_in, s.triangles_drawn,
-                    s.triangles_culled, s.triangles_clipped, s.triangles_outside);
-        std::printf("fragments %u written %u covered %u overdraw %.2f\n", s.fragments, s.pixels_written,
-                    result.pixels_covered,
+        std::printf("triangles %u drawn %u culled %u degenerate %u outside %u clipped %u\n", s.triangles_in,
+                    s.triangles_drawn, s.triangles_culled, s.triangles_degenerate, s.triangles_outside, s.triangles_clipped);
+        std::printf("fragments %llu written %llu covered %u overdraw %.2f\n", static_cast<unsigned long long>(s.fragments),
+                    static_cast<unsigned long long>(s.pixels_written), result.pixels_covered,
                     result.pixels_covered == 0 ? 0.0 : static_cast<double>(s.pixels_written) / result.pixels_covered);
         if (opt.algo == Algo::raycast)
             std::printf("rays %llu hits %llu box-tests %llu triangle-tests %llu\n", static_cast<unsigned long long>(result.ray.rays),
@@ -192,5 +226,5 @@ int main(int argc, char** argv) {
         }
         if (s.status != Status::ok) std::printf("status %s\n", status_name(s.status));
     }
-    return 0;
+    return warn_incomplete(opt, result, strict);
 }

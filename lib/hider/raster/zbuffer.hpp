@@ -99,7 +99,7 @@ template <class Pixel> struct is_flat_shader<FlatShader<Pixel>> { static constex
 /// (counted when kCount) and adds the pixels written to `written`.
 template <bool kCount, class Format, class Depth, class Shader>
 uint32_t scan_depth_tested(const TriangleRaster& tr, int32_t y_begin, int32_t y_end,
-                           const FrameView<Format, Depth>& frame, Shader shader, uint32_t& written) {
+                           const FrameView<Format, Depth>& frame, Shader shader, uint64_t& written) {
     using Pixel = typename Format::Pixel;
     if constexpr (sizeof(Pixel) == sizeof(Depth)) {
         // Same stride, same element size: every pixel's colour is this many bytes after its depth.
@@ -112,13 +112,13 @@ uint32_t scan_depth_tested(const TriangleRaster& tr, int32_t y_begin, int32_t y_
         } else {
             DepthTestRows<kCount, Format, Depth, Shader> rows(frame, span);
             const uint32_t fragments = tr.scan(y_begin, y_end, rows);
-            written += rows.written;
+            if constexpr (kCount) written += rows.written;
             return fragments;
         }
     } else {
         DepthTestRows<kCount, Format, Depth, Shader> rows(frame, shader, tr.dzdx());
         const uint32_t fragments = tr.scan(y_begin, y_end, rows);
-        written += rows.written;
+        if constexpr (kCount) written += rows.written;
         return fragments;
     }
 }
@@ -152,14 +152,15 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
         if (!tr.setup(a, b, c, area, frame.width, frame.height, bb)) return;  // no pixel centre of the band
         st.triangles_drawn += whole_frame || owns(tr.first_row());  // first_row(): the same rounding
         const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
-        if (opt.shade == Shade::depth) {
-            st.fragments += detail::scan_depth_tested<kCount>(tr, y_begin, y_end, frame,
-                                                              DepthShader<Format>(opt.depth_range), st.pixels_written);
-            return;
-        }
-        st.fragments += detail::scan_depth_tested<kCount>(
-            tr, y_begin, y_end, frame, FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))},
-            st.pixels_written);
+        uint32_t n = 0;  // fragments, counted only by draw_zbuffer<true>
+        if (opt.shade == Shade::depth)
+            n = detail::scan_depth_tested<kCount>(tr, y_begin, y_end, frame, DepthShader<Format>(opt.depth_range), st.pixels_written);
+        else
+            n = detail::scan_depth_tested<kCount>(tr, y_begin, y_end, frame,
+                                                  FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))},
+                                                  st.pixels_written);
+        if constexpr (kCount) st.fragments += n;
+        (void)n;
     };
     // Loop invariants in locals: the lambdas capture st by reference, so GCC would reload them per triangle.
     const bool cull = opt.cull;
