@@ -42,7 +42,7 @@ struct Buffers {
     hider::Span<hider::ScreenVertex> verts;  ///< one per mesh vertex
     hider::Span<hider::ScreenPoly> polys;    ///< pool: the built triangles plus room for Newell's cuts
     hider::Span<hider::PieceCut> cuts;       ///< two per cut Newell may make
-    hider::NewellScratch newell;             ///< heap, positions, grid links and cells, chain
+    hider::NewellScratch newell;             ///< sort keys (shared with keys/scratch below), heap, grid, chain
     hider::Span<uint32_t> order;             ///< >= polys.size()
     hider::Span<hider::SortKey> keys;        ///< >= polys.size()
     hider::Span<hider::SortKey> scratch;     ///< >= polys.size()
@@ -70,7 +70,9 @@ struct Storage {
     uint32_t coverage[hider::coverage_words(kWidth) * kRows];
     uint8_t ppm_row[kWidth * 3];
 
-    Buffers buffers() { return {verts, polys, cuts, {heap, heap_pos, links, cells, chain}, order, keys, scratch, color, coverage, kRows}; }
+    Buffers buffers() {
+        return {verts, polys, cuts, {keys, scratch, heap, heap_pos, links, cells, chain}, order, keys, scratch, color, coverage, kRows};
+    }
 };
 
 /// What one render did. `stats` sums the bands (triangle counts are per band setup).

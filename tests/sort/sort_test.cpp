@@ -173,7 +173,9 @@ TEST_CASE("newell_order refuses an order list or scratch smaller than the polygo
     std::vector<uint32_t> ord(10), heap(10), pos(10), links(20), cells(grid_cells(32, 32)), chain(10);
     BoundedList<ScreenPoly> polys(store.data(), store.size());
     BoundedList<PieceCut> cuts(cut_store.data(), cut_store.size());
-    NewellScratch scratch{{heap.data(), 10}, {pos.data(), 10}, {links.data(), 20}, {cells.data(), cells.size()}, {chain.data(), 10}};
+    std::vector<SortKey> keys(10), sort_scratch(10);
+    NewellScratch scratch{{keys.data(), 10}, {sort_scratch.data(), 10}, {heap.data(), 10}, {pos.data(), 10},
+                          {links.data(), 20},  {cells.data(), cells.size()},  {chain.data(), 10}};
     NewellStats ns;
     BoundedList<uint32_t> order(ord.data(), ord.size());
     CHECK(newell_order(view, polys, cuts, scratch, order, ns) == Status::ok);
@@ -188,6 +190,10 @@ TEST_CASE("newell_order refuses an order list or scratch smaller than the polygo
     NewellScratch short_cells = scratch;
     short_cells.cells = {cells.data(), cells.size() - 1};
     CHECK(newell_order(view, polys, cuts, short_cells, order, ns) == Status::invalid_argument);
+    for (size_t i = 0; i < 3; ++i) polys.push_back(ScreenPoly{});
+    NewellScratch short_keys = scratch;
+    short_keys.keys = {keys.data(), 2};
+    CHECK(newell_order(view, polys, cuts, short_keys, order, ns) == Status::invalid_argument);
     NewellScratch short_chain = scratch;
     short_chain.chain = {chain.data(), 9};
     CHECK(newell_order(view, polys, cuts, short_chain, order, ns) == Status::invalid_argument);

@@ -72,8 +72,12 @@ Status order_polygons(const RenderOptions& opt, const View& view, const Mesh& me
     store.links.resize(2 * cap);
     store.cells.resize(grid_cells(view.width, view.height));
     order = BoundedList<uint32_t>(store.order.data(), cap);
-    const NewellScratch scratch{{store.heap.data(), cap}, {store.heap_pos.data(), cap}, {store.links.data(), 2 * cap},
-                                {store.cells.data(), store.cells.size()}, {store.chain.data(), cap}};
+    store.keys.resize(built);
+    store.scratch.resize(built);
+    const NewellScratch scratch{{store.keys.data(), built},       {store.scratch.data(), built},
+                                {store.heap.data(), cap},        {store.heap_pos.data(), cap},
+                                {store.links.data(), 2 * cap},   {store.cells.data(), store.cells.size()},
+                                {store.chain.data(), cap}};
     NewellOptions nopt;
     nopt.face_ids = mesh.ids;  // a fanned OBJ face is flat: its triangles need no order among themselves
     const Status s = newell_order(view, polys, cuts, scratch, order, ns, nopt);

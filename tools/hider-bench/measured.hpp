@@ -49,6 +49,7 @@ struct NewellJob {
     BoundedList<ScreenPoly>* polys = nullptr;
     BoundedList<PieceCut>* cuts = nullptr;
     NewellScratch scratch{};
+    NewellOptions options{};
     BoundedList<uint32_t>* order = nullptr;
     NewellStats stats{};         ///< out
     Status status = Status::ok;  ///< out
@@ -65,5 +66,5 @@ extern "C" __attribute__((noinline)) void hider_bench_span(const hider::tool::be
 /// painter_order(job->polys, DepthKey::farthest, ...) into job->order.
 extern "C" __attribute__((noinline)) void hider_bench_sort(const hider::tool::bench::SortJob* job);
 
-/// newell_order(job->view, *job->polys, *job->cuts, job->scratch, *job->order, job->stats) -> job->status.
+/// newell_order(job->view, *job->polys, *job->cuts, job->scratch, *job->order, job->stats, job->options) -> job->status.
 extern "C" __attribute__((noinline)) void hider_bench_newell(hider::tool::bench::NewellJob* job);

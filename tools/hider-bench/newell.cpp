@@ -123,9 +123,11 @@ int newell_run_command(const Args& args) {
     job.view = p.view;
     job.polys = &polys;
     job.cuts = &cuts;
-    job.scratch = {{heap.data(), cap}, {heap_pos.data(), cap}, {links.data(), 2 * cap}, {cells.data(), cells.size()},
-                   {chain.data(), cap}};
+    AlignedBuffer<SortKey> keys(built), sort_scratch(built);
+    job.scratch = {{keys.data(), built}, {sort_scratch.data(), built}, {heap.data(), cap}, {heap_pos.data(), cap},
+                   {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), cap}};
     job.order = &order;
+    job.options.face_ids = {p.scene.ids.data(), p.scene.ids.size()};  // as render() passes them
     hider_bench_newell(&job);
     if (job.status != Status::ok && job.status != Status::capacity_exceeded)
         fail(model_path + ": newell_order: " + status_name(job.status));

@@ -1,10 +1,11 @@
 // A hierarchical grid of polygon boxes over caller memory, so Newell compares a polygon only with those
-// whose screen boxes can overlap its own. Level 0 has cells of kGridCellPixels; each level doubles the
-// side until one cell covers the frame. A polygon sits in exactly one cell: on the finest level whose
-// cells are at least as large as its box, in the cell holding the box's top-left corner, so its box
-// lies within that cell and the next one right and down. Memory: two links per polygon plus one head
-// per cell (grid_cells()); insert and remove are O(1), a query visits the cells around the box on
-// every level.
+// whose screen boxes can overlap its own and whose depth ranges reach its own. Level 0 has cells of
+// kGridCellPixels; each level doubles the side until one cell covers the frame. A polygon sits in exactly
+// one cell: on the finest level whose cells are at least as large as its box, in the cell holding the
+// box's top-left corner, so its box lies within that cell and the next one right and down. Each cell's
+// list is sorted by zmax, farthest first, so a query stops in a cell at the first polygon wholly nearer
+// than the box's zmin. Memory: two links per polygon plus one head per cell (grid_cells()); remove is
+// O(1), insert walks its cell's list, a query visits the cells around the box on every level.
 #pragma once
 #include <hider/sort/poly.hpp>
 
@@ -52,6 +53,7 @@ public:
             cols_[l] = detail::grid_cells_at(width, l);
             rows_[l] = detail::grid_cells_at(height, l);
             offset_[l] = static_cast<uint32_t>(offset);
+            count_[l] = 0;
             offset += static_cast<size_t>(cols_[l]) * static_cast<size_t>(rows_[l]);
         }
         heads_ = heads.data();
@@ -63,36 +65,48 @@ public:
     }
     size_t capacity() const { return capacity_; }
 
-    /// Adds polygon `id` (< capacity()) with box p.
-    void insert(uint32_t id, const ScreenPoly& p) {
+    /// Adds polygon `id` (< capacity()) with box p; `polys` holds the polygons already in the grid (their
+    /// zmax orders the cell's list).
+    void insert(uint32_t id, const ScreenPoly& p, const ScreenPoly* polys) {
         const Cell c = cell_of(p);
         const uint32_t head = offset_[c.level] + static_cast<uint32_t>(c.cy * cols_[c.level] + c.cx);
-        next_[id] = heads_[head];
-        prev_[id] = kHeadTag | head;
-        if (heads_[head] != kNone) prev_[heads_[head]] = id;
-        heads_[head] = id;
+        uint32_t before = kHeadTag | head, after = heads_[head];
+        while (after != kNone && polys[after].zmax > p.zmax) {
+            before = after;
+            after = next_[after];
+        }
+        next_[id] = after;
+        prev_[id] = before;
+        if (after != kNone) prev_[after] = id;
+        if ((before & kHeadTag) != 0) heads_[head] = id;
+        else next_[before] = id;
+        ++count_[c.level];
     }
 
-    /// Removes polygon `id`, which is in the grid.
-    void remove(uint32_t id) {
-        const uint32_t n = next_[id], p = prev_[id];
-        if ((p & kHeadTag) != 0) heads_[p & ~kHeadTag] = n;
-        else next_[p] = n;
-        if (n != kNone) prev_[n] = p;
+    /// Removes polygon `id`, which is in the grid with box p (as inserted).
+    void remove(uint32_t id, const ScreenPoly& p) {
+        const uint32_t n = next_[id], before = prev_[id];
+        if ((before & kHeadTag) != 0) heads_[before & ~kHeadTag] = n;
+        else next_[before] = n;
+        if (n != kNone) prev_[n] = before;
+        --count_[cell_of(p).level];
     }
 
-    /// Calls fn(id) for every polygon in the grid whose box may overlap p's (a superset: the caller
-    /// tests the boxes), until fn returns true; returns true if it did. fn must not change the grid.
+    /// Calls fn(id) for every polygon in the grid whose box may overlap p's and whose zmax is above p's
+    /// zmin (a superset: the caller tests the boxes), until fn returns true; returns true if it did. fn
+    /// must not change the grid.
     template <class Fn>
-    bool query(const ScreenPoly& p, Fn&& fn) const {
+    bool query(const ScreenPoly& p, const ScreenPoly* polys, Fn&& fn) const {
         const PixelBox b = pixel_box(p);
         for (int l = 0; l < levels_; ++l) {
+            if (count_[l] == 0) continue;  // most meshes use two or three levels
             const int shift = kCellShift + l;
             const int32_t cx0 = max<int32_t>(0, (b.x0 >> shift) - 1), cx1 = min<int32_t>(cols_[l] - 1, b.x1 >> shift);
             const int32_t cy0 = max<int32_t>(0, (b.y0 >> shift) - 1), cy1 = min<int32_t>(rows_[l] - 1, b.y1 >> shift);
             for (int32_t cy = cy0; cy <= cy1; ++cy)
                 for (int32_t cx = cx0; cx <= cx1; ++cx)
-                    for (uint32_t id = heads_[offset_[l] + static_cast<uint32_t>(cy * cols_[l] + cx)]; id != kNone; id = next_[id])
+                    for (uint32_t id = heads_[offset_[l] + static_cast<uint32_t>(cy * cols_[l] + cx)];
+                         id != kNone && polys[id].zmax > p.zmin; id = next_[id])
                         if (fn(id)) return true;
         }
         return false;
@@ -134,6 +148,7 @@ private:
     int levels_ = 0;
     int32_t cols_[kMaxLevels] = {}, rows_[kMaxLevels] = {};
     uint32_t offset_[kMaxLevels] = {};
+    uint32_t count_[kMaxLevels] = {};  ///< polygons on each level
 };
 
 }  // namespace hider

@@ -1,4 +1,5 @@
-// Newell, Newell & Sancha (1972). Polygons leave a heap farthest first (largest zmax). The candidate P is
+// Newell, Newell & Sancha (1972). Polygons leave farthest first (largest zmax): from the depth-sorted input,
+// or from a heap for the polygons that wait again (moved back, or pieces of a cut). The candidate P is
 // compared with every waiting Q whose screen box can overlap its own (a grid, grid.hpp) and whose depth
 // range overlaps, cheapest test first: boxes, P behind Q's plane, Q in front of P's plane, projections
 // disjoint. When all fail and Q must come first, Q becomes the candidate and P waits again; a Q moved
@@ -10,6 +11,7 @@
 // rounding of cut points; polygons of one face (NewellOptions) are never ordered against each other.
 #pragma once
 #include <hider/sort/grid.hpp>
+#include <hider/sort/painter.hpp>
 #include <hider/sort/plane.hpp>
 
 namespace hider {
@@ -37,8 +39,10 @@ struct NewellOptions {
     uint64_t max_pair_tests = 0;
 };
 
-/// Caller memory of newell_order() besides the pools, for a polygon pool of capacity N.
+/// Caller memory of newell_order() besides the pools, for a polygon pool of capacity N holding n polygons.
 struct NewellScratch {
+    Span<SortKey> keys;       ///< >= n (the polygons sorted by depth once, radix_sort)
+    Span<SortKey> sort_scratch;  ///< >= n
     Span<uint32_t> heap;      ///< >= N
     Span<uint32_t> heap_pos;  ///< >= N
     Span<uint32_t> links;     ///< >= 2 N (the grid)
@@ -59,13 +63,16 @@ public:
 
     Status run(const ScreenGrid& grid_setup) {
         grid_ = grid_setup;
-        for (uint32_t i = 0; i < polys_.size(); ++i) {
-            grid_.insert(i, polys_[i]);
-            push(i);
+        n_ = polys_.size();
+        for (uint32_t i = 0; i < n_; ++i) {
+            s_.keys[i] = {~polys_[i].zmax, i};  // ascending ~zmax: farthest first, ties by index
+            s_.heap_pos[i] = kPending;
         }
+        radix_sort({s_.keys.data(), n_}, {s_.sort_scratch.data(), n_});
+        for (size_t i = n_; i-- > 0;) grid_.insert(s_.keys[i].index, polys_[s_.keys[i].index], polys_.data());  // nearest first: each goes to its cell's head
         uint32_t cur = kNone;
-        while (cur != kNone || heap_size_ != 0) {
-            if (cur == kNone) cur = pop();
+        for (;;) {
+            if (cur == kNone && (cur = next()) == kNone) break;
             if (ns_.budget_exhausted) {
                 finish(cur);
                 cur = kNone;
@@ -84,6 +91,14 @@ private:
         PieceCut far_cut, near_cut;
     };
 
+    /// The candidate, with its outline and plane computed when a first pair needs them.
+    struct Candidate {
+        ScreenPoly poly;
+        Outline outline;
+        ScreenPlane plane;
+        bool ready;
+    };
+
     /// What comparing the candidate with the waiting polygons decided.
     struct Action {
         enum Kind : uint8_t { none, move, cut } kind = none;
@@ -96,11 +111,11 @@ private:
     uint32_t step(uint32_t cur) {
         if (chain_len_ == 0) s_.chain[chain_len_++] = cur;
         const ScreenPoly p = polys_[cur];
-        Outline po;
-        outline_of(p, cuts(), po);
-        const ScreenPlane pp = plane_of(p);
+        Candidate cand;  // its outline and plane once a pair needs them (no clearing: they are written first)
+        cand.poly = p;
+        cand.ready = false;
         Action act;
-        grid_.query(p, [&](uint32_t qi) { return qi != cur && compare(cur, p, po, pp, qi, act); });
+        grid_.query(p, polys_.data(), [&](uint32_t qi) { return qi != cur && compare(cur, cand, qi, act); });
         switch (act.kind) {
             case Action::none:
                 finish(cur);
@@ -126,7 +141,8 @@ private:
     }
 
     /// Tests the pair (P = polys[cur], Q = polys[qi]); true (with act filled) when the order must change.
-    bool compare(uint32_t cur, const ScreenPoly& p, const Outline& po, const ScreenPlane& pp, uint32_t qi, Action& act) {
+    bool compare(uint32_t cur, Candidate& cand, uint32_t qi, Action& act) {
+        const ScreenPoly& p = cand.poly;
         const ScreenPoly& q = polys_[qi];
         if (q.zmax <= p.zmin) return false;  // Q wholly nearer than P (or level with it)
         if (ns_.budget_exhausted) return false;
@@ -138,6 +154,13 @@ private:
         if (p.xmax <= q.xmin || q.xmax <= p.xmin) return false;  // (1) no shared pixel centre possible
         if (p.ymax <= q.ymin || q.ymax <= p.ymin) return false;  // (2)
         if (!faces_.empty() && faces_[p.tri] == faces_[q.tri]) return false;  // one flat face
+        if (!cand.ready) {
+            outline_of(p, cuts(), cand.outline);
+            cand.plane = plane_of(p);
+            cand.ready = true;
+        }
+        const Outline& po = cand.outline;
+        const ScreenPlane& pp = cand.plane;
         Outline qo;
         outline_of(q, cuts(), qo);
         const ScreenPlane qp = plane_of(q);
@@ -243,7 +266,7 @@ private:
     /// new slot, both back in the grid and the heap.
     void replace(uint32_t id, const ScreenPoly& far, const ScreenPoly& near, const PieceCut& far_cut, const PieceCut& near_cut,
                  bool in_heap) {
-        grid_.remove(id);
+        grid_.remove(id, polys_[id]);
         if (in_heap) heap_remove(id);
         polys_[id] = far;
         polys_[id].cut = static_cast<uint32_t>(cuts_.size());
@@ -258,8 +281,8 @@ private:
         ++ns_.splits;
         ++chain_;  // the pieces start a new chain of moves
         chain_len_ = 0;
-        grid_.insert(id, polys_[id]);
-        grid_.insert(other, polys_[other]);
+        grid_.insert(id, polys_[id], polys_.data());
+        grid_.insert(other, polys_[other], polys_.data());
         push(id);
         push(other);
     }
@@ -268,14 +291,28 @@ private:
         const bool added = order_.push_back(id);  // order.capacity() >= polys.capacity()
         HIDER_ASSERT(added);
         (void)added;
-        grid_.remove(id);
+        grid_.remove(id, polys_[id]);
         ++chain_;
         chain_len_ = 0;
     }
 
     Span<const PieceCut> cuts() const { return {cuts_.data(), cuts_.size()}; }
 
-    // Indexed binary max-heap of polygon indices by (zmax, then lower index first).
+    /// The next candidate: the farther of the sorted input's next waiting polygon and the heap's top
+    /// (kNone when both are empty). Input entries of polygons moved or cut since are skipped.
+    uint32_t next() {
+        while (pend_ < n_ && s_.heap_pos[s_.keys[pend_].index] != kPending) ++pend_;
+        if (pend_ < n_ && (heap_size_ == 0 || before(s_.keys[pend_].index, s_.heap[0]))) {
+            const uint32_t id = s_.keys[pend_++].index;
+            s_.heap_pos[id] = kNone;
+            return id;
+        }
+        return heap_size_ != 0 ? pop() : kNone;
+    }
+
+    // Indexed binary max-heap of polygon indices by (zmax, then lower index first). heap_pos[id] is the
+    // position, kPending for a polygon still waiting in the sorted input, kNone for the candidate or
+    // one already out.
     bool before(uint32_t a, uint32_t b) const {
         const uint32_t za = polys_[a].zmax, zb = polys_[b].zmax;
         return za > zb || (za == zb && a < b);
@@ -320,6 +357,7 @@ private:
     void heap_remove(uint32_t id) {
         const size_t pos = s_.heap_pos[id];
         s_.heap_pos[id] = kNone;
+        if (pos == kPending) return;  // its sorted-input entry is now stale
         if (pos == --heap_size_) return;
         const uint32_t last = s_.heap[heap_size_];
         place(pos, last);
@@ -335,6 +373,9 @@ private:
     uint64_t budget_;
     Span<const uint32_t> faces_;
     ScreenGrid grid_;
+    static constexpr uint32_t kPending = 0xFFFFFFFEu;
+    size_t n_ = 0;          ///< polygons in the sorted input (the built ones)
+    size_t pend_ = 0;       ///< next entry of the sorted input
     size_t heap_size_ = 0;
     /// Moves since the last output or cut form a chain (Q before P, R before Q, ...): a polygon moved
     /// twice in one chain closes a cycle. A polygon's moved_at holds the chain it was last moved in.
@@ -359,7 +400,8 @@ inline Status newell_order(const View& view, BoundedList<ScreenPoly>& polys, Bou
                            const NewellOptions& opt = {}) {
     const size_t cap = polys.capacity();
     ScreenGrid grid;
-    if (order.capacity() < cap || scratch.heap.size() < cap || scratch.heap_pos.size() < cap ||
+    if (order.capacity() < cap || scratch.keys.size() < polys.size() || scratch.sort_scratch.size() < polys.size() ||
+        scratch.heap.size() < cap || scratch.heap_pos.size() < cap ||
         scratch.links.size() / 2 < cap || scratch.chain.size() < cap || !grid.reset(view.width, view.height, scratch.cells, scratch.links))
         return Status::invalid_argument;
     order.clear();
