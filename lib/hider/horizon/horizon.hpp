@@ -1,0 +1,289 @@
+// Floating horizons (Wright 1973; Rogers, "Procedural Elements", s. 4-2) over caller memory, and the
+// drawer that tests one curve against them. Per column, `upper` is the topmost and `lower` the
+// bottommost row any earlier curve reached (row 0 on top, so upper <= lower once set); a pixel of a
+// later curve is visible above upper or below lower. A curve is a polyline in screen space (points in
+// 1/16 pixel); the drawer walks it column by column, takes the rows it covers in each pixel column
+// (rows whose centre line it crosses there, else the row of its middle), draws the visible part of
+// that run, then widens the column's horizons. Crossings between columns are interpolated, so a curve
+// passing behind a horizon is drawn exactly up to where it crosses it. Rows are stored clamped to
+// [-1, height], which keeps every comparison with rows of the frame exact; columns outside the frame
+// are skipped, so no access leaves the arrays.
+#pragma once
+#include <hider/fixed.hpp>
+#include <hider/frame.hpp>
+#include <hider/status.hpp>
+
+namespace hider::horizon {
+
+constexpr int kPointFracBits = 4;                   ///< PlotPoint coordinates carry 4 fraction bits
+constexpr int32_t kPointLimit = int32_t{1} << 24;   ///< |x|, |y| of a PlotPoint (projection clamps)
+constexpr int32_t kNoPoint = INT32_MIN;             ///< PlotPoint::x of a point behind the near plane
+
+/// A projected point: x, y in 1/16 pixel from the frame's top-left corner; pixel (c, r) covers
+/// [16c, 16c + 16) x [16r, 16r + 16). x == kNoPoint marks a point that has no projection.
+struct PlotPoint {
+    int32_t x, y;
+};
+
+/// Upper and lower horizon, one int16 per column each, in caller memory. Build with make_horizon().
+struct Horizon {
+    int16_t* upper = nullptr;
+    int16_t* lower = nullptr;
+    int32_t width = 0, height = 0;
+};
+
+/// Views `upper` and `lower` (at least `width` entries each) as the horizons of a width x height frame
+/// and resets them. invalid_argument for short or missing arrays or a size outside 1..kMaxFrameSide.
+inline Status make_horizon(Span<int16_t> upper, Span<int16_t> lower, int32_t width, int32_t height, Horizon& out) {
+    if (width < 1 || height < 1 || width > kMaxFrameSide || height > kMaxFrameSide) return Status::invalid_argument;
+    if (upper.data() == nullptr || lower.data() == nullptr || upper.size() < static_cast<size_t>(width) ||
+        lower.size() < static_cast<size_t>(width))
+        return Status::invalid_argument;
+    out = {upper.data(), lower.data(), width, height};
+    for (int32_t c = 0; c < width; ++c) {
+        out.upper[c] = INT16_MAX;  // nothing drawn yet: every row is above the upper horizon...
+        out.lower[c] = INT16_MIN;  // ...and below the lower one
+    }
+    return Status::ok;
+}
+
+/// Forgets every curve drawn (a new plot, or a new pass that nothing before can hide).
+inline void reset(const Horizon& h) {
+    for (int32_t c = 0; c < h.width; ++c) {
+        h.upper[c] = INT16_MAX;
+        h.lower[c] = INT16_MIN;
+    }
+}
+
+namespace detail {
+/// ceil(2^24 / d) for d in [1, 256): t = (b - a) * kSlope[d] >> 9 is (b - a) / d in Q15, exactly 2^15 at
+/// b - a = d and never above it. 1 KB of flash; saves a division per column boundary (a library call
+/// on ARMv6-M) for segments shorter than 16 pixels, which is nearly all of them in a dense plot.
+struct SlopeTable {
+    uint32_t v[256];
+    constexpr SlopeTable() : v() {
+        for (uint32_t d = 1; d < 256; ++d) v[d] = ((uint32_t{1} << 24) + d - 1) / d;
+    }
+};
+inline constexpr SlopeTable kSlope{};
+}  // namespace detail
+
+/// Maps a height value to a colour: ramp[(v - v_min) * size / (v_max - v_min + 1)], clamped.
+struct ValueRamp {
+    Span<const Rgb> ramp;
+    int32_t v_min = 0, v_max = 0;
+
+    Rgb operator()(int32_t v) const {
+        const int64_t span = int64_t{v_max} - v_min + 1;
+        const int64_t t = clamp<int64_t>(int64_t{v} - v_min, 0, span - 1);
+        return ramp[static_cast<size_t>(t * static_cast<int64_t>(ramp.size()) / span)];
+    }
+};
+
+/// Draws curves against a Horizon into a Target (target.hpp). Use: set_pixel() (or set_ramp() when
+/// kByValue), then per curve move_to(), line_to() for each further point, finish(). Points within one
+/// curve must run monotonically in x for the result to be exact (a curve that folds back over its own
+/// columns is hidden there by itself). Borrows the horizon's arrays and the target for its lifetime.
+template <class Target, bool kByValue = false>
+class CurveDrawer {
+public:
+    using Pixel = typename Target::Pixel;
+
+    /// Precondition: h.width == t.width(), h.height == t.height().
+    CurveDrawer(const Horizon& h, const Target& t)
+        : upper_(h.upper), lower_(h.lower), width_(h.width), height_(h.height), band0_(t.band_begin()),
+          band1_(t.band_end()), target_(t) {}
+
+    /// Batches: until end_batch(), curves are tested against the horizons as they were at
+    /// begin_batch() and widen `pending_upper/lower` (>= width entries, all empty: INT16_MAX / INT16_MIN)
+    /// instead; end_batch() merges them. For lines that cannot hide each other (a line and the mesh
+    /// pieces ending on it), so none hides another where they share a pixel column.
+    void begin_batch(int16_t* pending_upper, int16_t* pending_lower) {
+        pending_upper_ = pending_upper;
+        pending_lower_ = pending_lower;
+        batch_first_ = INT32_MAX;
+        batch_last_ = INT32_MIN;
+    }
+    void end_batch() {
+        for (int32_t c = batch_first_; c <= batch_last_; ++c) {
+            upper_[c] = min(upper_[c], pending_upper_[c]);
+            lower_[c] = max(lower_[c], pending_lower_[c]);
+            pending_upper_[c] = INT16_MAX;
+            pending_lower_[c] = INT16_MIN;
+        }
+        pending_upper_ = pending_lower_ = nullptr;
+    }
+
+    void set_pixel(Pixel p) { pixel_ = p; }
+    /// false: curves still update the horizons but draw nothing (lines that only bound the surface).
+    void set_visible(bool v) { visible_ = v; }
+    /// kByValue only: a column's colour is ramp(value of its topmost point).
+    void set_ramp(const ValueRamp& r) { ramp_ = r; }
+
+    /// Starts a new piece at p (the pending column of the previous piece is finished first).
+    void move_to(PlotPoint p, int32_t value = 0) {
+        finish();
+        col_ = p.x >> kPointFracBits;
+        ymin_ = ymax_ = p.y;
+        vtop_ = value;
+        last_ = p;
+        vlast_ = value;
+    }
+
+    /// Continues the piece with a straight segment to p.
+    void line_to(PlotPoint p, int32_t value = 0) {
+        const int32_t c = p.x >> kPointFracBits;
+        if (c == col_) {
+            include(p.y, value);
+        } else {
+            cross(p, value, c);
+        }
+        last_ = p;
+        vlast_ = value;
+    }
+
+    /// Draws the pending column and ends the piece.
+    void finish() {
+        flush();
+        col_ = kNoColumn;
+    }
+
+    /// Pixels written so far.
+    uint32_t pixels() const { return pixels_; }
+
+private:
+    static constexpr int32_t kNoColumn = INT32_MIN / 2;  // never a frame column, never equal to p.x >> 4
+
+    __attribute__((always_inline)) void include(int32_t y, int32_t v) {
+        if (y < ymin_) {
+            ymin_ = y;
+            if constexpr (kByValue) vtop_ = v;
+        }
+        if (y > ymax_) ymax_ = y;
+    }
+
+    /// The segment last_ -> p leaves column col_ for column c: visits each column boundary in between
+    /// that lies in 0..width (the rest are outside the frame), finishing one column per boundary.
+    void cross(PlotPoint p, int32_t value, int32_t c) {
+        const bool right = c > col_;
+        const int32_t first = right ? col_ + 1 : col_;  // boundary b is at x = 16 b
+        const int32_t last = right ? c : c + 1;
+        int32_t b = right ? max(first, int32_t{0}) : min(first, width_);
+        const int32_t end = right ? min(last, width_) : max(last, int32_t{0});
+        if (right ? b > end : b < end) {  // both ends beyond the same side of the frame
+            restart(c, p.y, value);
+            return;
+        }
+        const PlotPoint a = last_;
+        const PlotPoint& l = right ? a : p;  // left and right end, so a segment gives the same rows both ways
+        const PlotPoint& r = right ? p : a;
+        const int32_t dx = r.x - l.x, dy = r.y - l.y;
+        const int32_t vl = right ? vlast_ : value, dv = right ? value - vlast_ : vlast_ - value;
+        if (dx < 256 && dy < 65536 && dy > -65536) {  // short: a Q15 fraction from the slope table
+            const uint32_t inv = detail::kSlope.v[dx];
+            for (;;) {
+                const int32_t t = static_cast<int32_t>((static_cast<uint32_t>(b * 16 - l.x) * inv) >> 9);
+                boundary(b, right, l.y + ((dy * t) >> 15), kByValue ? vl + static_cast<int32_t>((int64_t{dv} * t) >> 15) : 0);
+                if (b == end) break;
+                b += right ? 1 : -1;
+            }
+        } else {  // long: exact DDA, y = l.y + floor((x - l.x) dy / dx), one 64-bit division per segment
+            const int32_t step = right ? 16 : -16;
+            const int64_t n = int64_t{b * 16 - l.x} * dy;
+            int32_t q = static_cast<int32_t>(div_floor(n, dx));
+            int32_t rem = static_cast<int32_t>(n - int64_t{q} * dx);
+            const int32_t dq = static_cast<int32_t>(div_floor(int64_t{step} * dy, dx));
+            const int32_t drem = static_cast<int32_t>(int64_t{step} * dy - int64_t{dq} * dx);
+            for (;;) {
+                const int32_t v = kByValue ? vl + static_cast<int32_t>(int64_t{dv} * (b * 16 - l.x) / dx) : 0;
+                boundary(b, right, l.y + q, v);
+                if (b == end) break;
+                b += right ? 1 : -1;
+                q += dq;
+                rem += drem;
+                if (rem >= dx) {
+                    rem -= dx;
+                    ++q;
+                }
+            }
+        }
+        if (end != last) {  // left the frame before reaching p's column
+            restart(c, p.y, value);
+            return;
+        }
+        include(p.y, value);
+    }
+
+    /// The curve crosses boundary b (x = 16 b) at height y: finish the column it leaves, open the next.
+    __attribute__((always_inline)) void boundary(int32_t b, bool right, int32_t y, int32_t v) {
+        include(y, v);
+        flush();
+        col_ = right ? b : b - 1;
+        ymin_ = ymax_ = y;
+        vtop_ = v;
+    }
+
+    void restart(int32_t c, int32_t y, int32_t v) {
+        col_ = c;
+        ymin_ = ymax_ = y;
+        vtop_ = v;
+    }
+
+    /// Draws the visible rows of the pending column and widens its horizons.
+    void flush() {
+        const int32_t c = col_;
+        if (static_cast<uint32_t>(c) >= static_cast<uint32_t>(width_)) return;
+        // Rows whose centre (16 r + 8) lies in [ymin, ymax]; none: the row of the middle.
+        int32_t lo = (ymin_ + 7) >> kPointFracBits, hi = (ymax_ - 8) >> kPointFracBits;
+        if (lo > hi) lo = hi = (ymin_ + ymax_) >> (kPointFracBits + 1);
+        const int32_t up = upper_[c], down = lower_[c];
+        if (lo >= up && hi <= down) return;  // wholly between the horizons: hidden, nothing changes
+        const int32_t top_end = min(hi, up - 1), bottom_begin = max(lo, down + 1);
+        if (top_end + 1 >= bottom_begin) {
+            draw(c, lo, hi);
+        } else {
+            if (top_end >= lo) draw(c, lo, top_end);
+            if (bottom_begin <= hi) draw(c, bottom_begin, hi);
+        }
+        if (!visible_) lo = hi = (lo + hi) >> 1;  // an undrawn line: its middle, so it hides nothing its
+                                                  // own pixels would not (they are not there to cover it)
+        const int16_t top = static_cast<int16_t>(clamp(lo, int32_t{-1}, height_));
+        const int16_t bottom = static_cast<int16_t>(clamp(hi, int32_t{-1}, height_));
+        if (pending_upper_ == nullptr) {
+            upper_[c] = static_cast<int16_t>(min<int32_t>(up, top));
+            lower_[c] = static_cast<int16_t>(max<int32_t>(down, bottom));
+        } else {
+            pending_upper_[c] = min(pending_upper_[c], top);
+            pending_lower_[c] = max(pending_lower_[c], bottom);
+            batch_first_ = min(batch_first_, c);
+            batch_last_ = max(batch_last_, c);
+        }
+    }
+
+    void draw(int32_t c, int32_t y_first, int32_t y_last) {
+        y_first = max(y_first, band0_);
+        y_last = min(y_last, band1_ - 1);
+        if (y_first > y_last || !visible_) return;
+        Pixel p = pixel_;
+        if constexpr (kByValue) p = Target::pack(ramp_(vtop_));
+        target_.vline(c, y_first, y_last, p);
+        pixels_ += static_cast<uint32_t>(y_last - y_first + 1);
+    }
+
+    int16_t* upper_;
+    int16_t* lower_;
+    int16_t* pending_upper_ = nullptr;  // in a batch: where the horizons widen until end_batch()
+    int16_t* pending_lower_ = nullptr;
+    int32_t batch_first_ = 0, batch_last_ = 0;
+    int32_t width_, height_, band0_, band1_;
+    const Target& target_;
+    Pixel pixel_{};
+    bool visible_ = true;
+    ValueRamp ramp_{};
+    int32_t col_ = kNoColumn;
+    int32_t ymin_ = 0, ymax_ = 0, vtop_ = 0, vlast_ = 0;
+    PlotPoint last_{0, 0};
+    uint32_t pixels_ = 0;
+};
+
+}  // namespace hider::horizon

@@ -1,0 +1,305 @@
+// Projection of a surface y = f(x, z) sampled on a grid (curve k at z = z0 + k dz, sample i at
+// x = x0 + i dx, height y = value * y_unit) with the hider-render camera (view.hpp: gluLookAt +
+// gluPerspective, CONVENTIONS.md). For a grid the homogeneous screen coordinates U, V, W (X = U / W,
+// Y = V / W in 1/16 pixel from the top-left corner) are affine in (i, k, value), so prepare() turns
+// the camera into int32 steps once (exact 128-bit setup, each of U, V, W scaled to 29 bits over the
+// surface's bounding box) and a sample costs three multiplies, a table reciprocal of W and two
+// 32x16-bit products: no division, the same integer operations on every target.
+#pragma once
+#include <hider/horizon/horizon.hpp>
+#include <hider/int128.hpp>
+#include <hider/view.hpp>
+
+namespace hider::horizon {
+
+/// Where the samples lie. Heights are integers of any type; world y (Q16 raw) = value * y_unit_raw.
+struct Surface {
+    int32_t samples = 0;  ///< points per curve, >= 2
+    int32_t curves = 0;   ///< curves, >= 2
+    Q16 x0{}, dx{};       ///< sample i at x = x0 + i dx, dx > 0
+    Q16 z0{}, dz{};       ///< curve k at z = z0 + k dz, dz > 0 (curve index grows with z)
+    int32_t value_min = 0, value_max = 0;  ///< every height value lies here; others are clamped (and counted)
+    int32_t y_unit_raw = 1;                ///< world y per value unit, Q16 raw (1: values are Q16 heights)
+};
+
+/// Homogeneous screen coordinates of a surface point, each in its own per-frame scale.
+struct HomPoint {
+    int32_t u, v, w;
+};
+
+/// Which planes a plot sweeps in order of distance from the eye: the curves z = const (their lines run
+/// along x), or, when x runs into the picture (seen from the side), the planes x = const.
+enum class Sweep : uint8_t { curves, x_lines };
+
+/// What projecting one curve found besides its points.
+struct RowCounts {
+    uint32_t behind = 0;          ///< samples in front of the near plane's far side (no point)
+    uint32_t values_clamped = 0;  ///< heights outside [value_min, value_max]
+    uint32_t points_clamped = 0;  ///< projections beyond kPointLimit
+};
+
+namespace detail {
+/// round(2^24 / (256 + j)) - 2^15 for j = 0..256: 2^45 / w for w normalised to [2^29, 2^30) by linear
+/// interpolation between entries (|error| <= 1.3 units of 2^16, 2^-15.5 relative). 514 bytes of flash.
+struct RecipTable {
+    uint16_t v[257];
+    constexpr RecipTable() : v() {
+        for (uint32_t j = 0; j <= 256; ++j) v[j] = static_cast<uint16_t>(((uint32_t{1} << 24) + (256 + j) / 2) / (256 + j) - 32768);
+    }
+};
+inline constexpr RecipTable kRecip{};
+
+/// Number of significant bits of |x|.
+inline int bit_length(const Int128& x) {
+    const Int128 a = x.sign() < 0 ? -x : x;
+    const uint64_t hi = static_cast<uint64_t>(a.hi);
+    if (hi != 0) return 128 - clz64(hi);
+    return 64 - clz64(a.lo);
+}
+
+/// round(x / 2^s) (ties toward +inf) for 0 <= s <= 120; the result must fit int64.
+inline int64_t round_shift(const Int128& x, int s) {
+    if (s == 0) return static_cast<int64_t>(x.lo);
+    Int128 half;
+    if (s <= 64) half.lo = uint64_t{1} << (s - 1);
+    else half.hi = int64_t{1} << (s - 65);
+    const Int128 y = x + half;
+    if (s < 64) return static_cast<int64_t>(y.shr(s).lo);
+    return y.hi >> (s - 64);  // s == 64: the high word itself
+}
+
+/// floor(u * r / 2^s) for |u| < 2^29, r <= 2^16, s >= 16, from two 32-bit products (exact).
+__attribute__((always_inline)) inline int32_t mul_recip(int32_t u, uint32_t r, int s) {
+    const int32_t hi = (u >> 16) * static_cast<int32_t>(r);   // |u >> 16| < 2^13
+    const uint32_t lo = static_cast<uint32_t>(u & 0xFFFF) * r;  // < 2^32
+    return (hi + static_cast<int32_t>(lo >> 16)) >> (s - 16);
+}
+}  // namespace detail
+
+/// A surface and camera prepared for projection. prepare() once per camera/surface (about a hundred
+/// 64-bit products); the projection functions are const and may run for any number of frames.
+class SurfaceProjection {
+public:
+    /// Most samples per curve and curves per surface (keeps the summed rounding of the steps below 2^17).
+    static constexpr int32_t kMaxCount = 65535;
+
+    /// Checks the surface and the camera and builds the per-frame steps. Errors: those of make_view(),
+    /// invalid_argument (fewer than 2 samples or curves, dx or dz <= 0, value_min > value_max, y_unit < 1),
+    /// out_of_range (a corner of the surface's bounding box outside the world range).
+    Status prepare(const Camera& cam, int32_t width, int32_t height, const Surface& s) {
+        if (s.samples < 2 || s.curves < 2 || s.samples > kMaxCount || s.curves > kMaxCount || s.dx.raw() <= 0 ||
+            s.dz.raw() <= 0 || s.value_min > s.value_max || s.y_unit_raw < 1)
+            return Status::invalid_argument;
+        const int64_t xs[2] = {s.x0.raw(), s.x0.raw() + int64_t{s.dx.raw()} * (s.samples - 1)};
+        const int64_t zs[2] = {s.z0.raw(), s.z0.raw() + int64_t{s.dz.raw()} * (s.curves - 1)};
+        const int64_t ys[2] = {int64_t{s.value_min} * s.y_unit_raw, int64_t{s.value_max} * s.y_unit_raw};
+        for (int e = 0; e < 2; ++e)
+            if (!in_world(xs[e]) || !in_world(ys[e]) || !in_world(zs[e])) return Status::out_of_range;
+        View view;
+        const Status st = make_view(cam, width, height, view);
+        if (st != Status::ok) return st;
+        surface_ = s;
+        width_ = width;
+        height_ = height;
+        eye_x_raw_ = cam.eye.x.raw();
+        eye_z_raw_ = cam.eye.z.raw();
+        // Heights enter as (value - value_min) >> shift, below 2^15.
+        value_shift_ = 0;
+        while (((int64_t{s.value_max} - s.value_min) >> value_shift_) >= (int64_t{1} << 15)) ++value_shift_;
+
+        // U, V, W as linear forms of the world point (raw Q16) in units of 2^-38: U = X W, V = Y W with X, Y
+        // in subpixels from the top-left, W = w (distance along the view axis, Q16 raw).
+        const Transform& t = view.to_view;
+        const int64_t k = view.k_q8, cx = int64_t{2048} * width, cy = int64_t{2048} * height;
+        Form f[3];
+        for (int a = 0; a < 3; ++a) {
+            const int64_t r0 = t.rot.m[0][a].raw(), r1 = t.rot.m[1][a].raw(), r2 = t.rot.m[2][a].raw();
+            f[0].c[a] = k * r0 - cx * r2;
+            f[1].c[a] = -k * r1 - cy * r2;
+            f[2].c[a] = -256 * r2;
+        }
+        f[0].c0 = k * t.trans.x.raw() - cx * t.trans.z.raw();
+        f[1].c0 = -k * t.trans.y.raw() - cy * t.trans.z.raw();
+        f[2].c0 = -256 * int64_t{t.trans.z.raw()};
+        const int64_t unit = int64_t{s.y_unit_raw} * (int64_t{1} << value_shift_);
+        int64_t w_top = 0;
+        for (int q = 0; q < 3; ++q) {
+            // Scale so |F| < 2^28 at every corner of the bounding box (F is affine: the corners bound it).
+            int bits = 0;
+            for (int c = 0; c < 8; ++c) bits = max(bits, detail::bit_length(f[q].at(xs[c & 1], ys[(c >> 1) & 1], zs[c >> 2])));
+            const int shift = max(bits - 28, 0);
+            Axis& ax = axis_[q];
+            ax.shift = shift;
+            ax.base = static_cast<int32_t>(detail::round_shift(f[q].at(xs[0], ys[0], zs[0]), shift));
+            ax.di = static_cast<int32_t>(detail::round_shift(mul128(f[q].c[0], s.dx.raw()), shift));
+            ax.dk = static_cast<int32_t>(detail::round_shift(mul128(f[q].c[2], s.dz.raw()), shift));
+            ax.dv = static_cast<int32_t>(detail::round_shift(mul128(f[q].c[1], unit), shift));
+            if (q == 2) {
+                for (int c = 0; c < 8; ++c)
+                    w_top = max(w_top, detail::round_shift(f[2].at(xs[c & 1], ys[(c >> 1) & 1], zs[c >> 2]), shift));
+                near_w_ = static_cast<int32_t>(max<int64_t>(
+                    detail::round_shift(mul128(int64_t{view.near_raw}, int64_t{1} << 38), shift), 1));
+            }
+        }
+        // Rounding of the steps: at most 1/2 unit each, times i + k + value + 1 < 2^17 in total.
+        w_top = min<int64_t>(w_top + (int64_t{1} << 17), (int64_t{1} << 29) - 1);
+        n0_ = 0;
+        while ((w_top << n0_) < (int64_t{1} << 29)) ++n0_;
+        du_ = axis_[0].shift - axis_[2].shift;
+        dv_ = axis_[1].shift - axis_[2].shift;
+        fast_n_ = 24 - max(du_, dv_);
+        sweep_ = choose_sweep();
+        return Status::ok;
+    }
+
+    const Surface& surface() const { return surface_; }
+    int32_t width() const { return width_; }
+    int32_t height() const { return height_; }
+    /// The eye's world x and z (Q16 raw): which lines lie on which side of it.
+    int32_t eye_x_raw() const { return eye_x_raw_; }
+    int32_t eye_z_raw() const { return eye_z_raw_; }
+    /// The sweep this view needs (chosen by prepare()).
+    Sweep sweep() const { return sweep_; }
+
+    /// Homogeneous coordinates of sample i of curve k with height `value` (clamped to the surface's range).
+    HomPoint at(int32_t i, int32_t k, int32_t value) const {
+        const int32_t h = reduce(clamp(value, surface_.value_min, surface_.value_max));
+        return {axis_[0].at(i, k, h), axis_[1].at(i, k, h), axis_[2].at(i, k, h)};
+    }
+
+    /// a + (b - a) t for t in [0, 2^16] (Q16).
+    static HomPoint lerp(const HomPoint& a, const HomPoint& b, int32_t t_q16) {
+        auto mix = [t_q16](int32_t p, int32_t q) {
+            return p + static_cast<int32_t>((int64_t{q - p} * t_q16) >> 16);
+        };
+        return {mix(a.u, b.u), mix(a.v, b.v), mix(a.w, b.w)};
+    }
+
+    /// The point where the segment from a (in front of the near plane) to b (behind it) crosses it.
+    PlotPoint near_crossing(const HomPoint& a, const HomPoint& b, RowCounts& counts) const {
+        const int64_t num = int64_t{a.w} - near_w_, den = int64_t{a.w} - b.w;  // den > num >= 0
+        HomPoint p = lerp(a, b, static_cast<int32_t>(den == 0 ? 0 : (num << 16) / den));
+        p.w = max(p.w, near_w_);
+        return project(p, counts);
+    }
+
+    /// Screen point of h (1/16 pixel from the top-left), or x == kNoPoint behind the near plane.
+    /// Coordinates beyond kPointLimit are clamped to it (counted in counts.points_clamped).
+    __attribute__((always_inline)) PlotPoint project(const HomPoint& h, RowCounts& counts) const {
+        if (h.w < near_w_) {
+            ++counts.behind;
+            return {kNoPoint, 0};
+        }
+        uint32_t wn = static_cast<uint32_t>(h.w) << n0_;
+        int n = n0_;
+        while (wn < (uint32_t{1} << 29)) {
+            wn <<= 1;
+            ++n;
+        }
+        // r = 2^45 / wn from the table: index from the top 9 bits, 7 bits of interpolation.
+        const uint32_t j = (wn >> 21) - 256, f = (wn >> 14) & 127u;
+        const uint32_t t0 = detail::kRecip.v[j], t1 = detail::kRecip.v[j + 1];
+        const uint32_t r = 32768u + t0 - (((t0 - t1) * f) >> 7);
+        if (n <= fast_n_) return {detail::mul_recip(h.u, r, 45 - n - du_), detail::mul_recip(h.v, r, 45 - n - dv_)};
+        return {scale_slow(h.u, r, 45 - n - du_, counts), scale_slow(h.v, r, 45 - n - dv_, counts)};
+    }
+
+    /// Projects the constant-x line at sample i from the heights values[0..curves) of each curve there
+    /// into out[0..curves).
+    RowCounts project_column(const int32_t* values, int32_t i, PlotPoint* out) const {
+        RowCounts counts;
+        for (int32_t k = 0, n = surface_.curves; k < n; ++k) {
+            if (values[k] < surface_.value_min || values[k] > surface_.value_max) ++counts.values_clamped;
+            out[k] = project(at(i, k, values[k]), counts);
+        }
+        return counts;
+    }
+
+    /// Projects curve k from its heights values[0..samples) into out[0..samples).
+    template <class T>
+    RowCounts project_row(const T* values, int32_t k, PlotPoint* out) const {
+        RowCounts counts;
+        const int32_t vmin = surface_.value_min, vmax = surface_.value_max;
+        int32_t u = axis_[0].base + k * axis_[0].dk, v = axis_[1].base + k * axis_[1].dk,
+                w = axis_[2].base + k * axis_[2].dk;
+        const int32_t du = axis_[0].di, dv = axis_[1].di, dw = axis_[2].di;
+        const int32_t hu = axis_[0].dv, hv = axis_[1].dv, hw = axis_[2].dv;
+        const int shift = value_shift_;
+        for (int32_t i = 0, n = surface_.samples; i < n; ++i) {
+            int32_t value = static_cast<int32_t>(values[i]);
+            if (value < vmin || value > vmax) {
+                value = clamp(value, vmin, vmax);
+                ++counts.values_clamped;
+            }
+            const int32_t h = static_cast<int32_t>((static_cast<uint32_t>(value) - static_cast<uint32_t>(vmin)) >> shift);
+            out[i] = project({u + h * hu, v + h * hv, w + h * hw}, counts);
+            u += du;
+            v += dv;
+            w += dw;
+        }
+        return counts;
+    }
+
+private:
+    /// One of U, V, W: value = (base + k dk + i di + h dv), then times 2^shift in units of 2^-38.
+    struct Axis {
+        int32_t base = 0, di = 0, dk = 0, dv = 0;
+        int shift = 0;
+        int32_t at(int32_t i, int32_t k, int32_t h) const { return base + k * dk + i * di + h * dv; }
+    };
+    /// c . p + c0 2^30 for a world point p (raw Q16).
+    struct Form {
+        int64_t c[3] = {0, 0, 0};
+        int64_t c0 = 0;
+        Int128 at(int64_t x, int64_t y, int64_t z) const {
+            return mul128(c0, int64_t{1} << 30) + mul128(c[0], x) + mul128(c[1], y) + mul128(c[2], z);
+        }
+    };
+
+    /// The curves when a step along x moves across the screen at least as much (relative to its
+    /// length there) as a step along z; measured on chords through the middle of the surface at mid height.
+    Sweep choose_sweep() const {
+        const int32_t mid = surface_.value_min + static_cast<int32_t>((int64_t{surface_.value_max} - surface_.value_min) / 2);
+        const int32_t m = surface_.samples, n = surface_.curves;
+        RowCounts c;
+        const PlotPoint x0 = project(at(m / 4, n / 2, mid), c), x1 = project(at(m - 1 - m / 4, n / 2, mid), c);
+        const PlotPoint z0 = project(at(m / 2, n / 4, mid), c), z1 = project(at(m / 2, n - 1 - n / 4, mid), c);
+        if (x0.x == kNoPoint || x1.x == kNoPoint || z0.x == kNoPoint || z1.x == kNoPoint) return Sweep::curves;
+        const int64_t ax = abs_value(int64_t{x1.x} - x0.x), ay = abs_value(int64_t{x1.y} - x0.y);
+        const int64_t bx = abs_value(int64_t{z1.x} - z0.x), by = abs_value(int64_t{z1.y} - z0.y);
+        // ax / (ax + ay) >= bx / (bx + by), products below 2^52.
+        return ax * (bx + by) >= bx * (ax + ay) ? Sweep::curves : Sweep::x_lines;
+    }
+
+    static constexpr bool in_world(int64_t c) { return c > -kWorldLimitRaw && c < kWorldLimitRaw; }
+    /// (value - value_min) >> value_shift, below 2^15, for value in [value_min, value_max].
+    int32_t reduce(int32_t value) const {
+        return static_cast<int32_t>((static_cast<uint32_t>(value) - static_cast<uint32_t>(surface_.value_min)) >> value_shift_);
+    }
+
+    /// floor(u r / 2^s) clamped to +-kPointLimit, for any s (points very close to the near plane).
+    static int32_t scale_slow(int32_t u, uint32_t r, int s, RowCounts& counts) {
+        const int64_t p = int64_t{u} * r;
+        int64_t q;
+        if (s >= 0) {
+            q = p >> s;
+        } else {
+            const int64_t room = int64_t{kPointLimit} >> min(-s, 40);
+            q = (p >= room || p <= -room) ? (p < 0 ? -int64_t{kPointLimit} - 1 : int64_t{kPointLimit} + 1) : p * (int64_t{1} << -s);
+        }
+        if (q > kPointLimit || q < -kPointLimit) {
+            ++counts.points_clamped;
+            return q < 0 ? -kPointLimit : kPointLimit;
+        }
+        return static_cast<int32_t>(q);
+    }
+
+    Surface surface_{};
+    Axis axis_[3];
+    int32_t width_ = 0, height_ = 0, eye_x_raw_ = 0, eye_z_raw_ = 0;
+    Sweep sweep_ = Sweep::curves;
+    int32_t near_w_ = 1;
+    int value_shift_ = 0, n0_ = 0, du_ = 0, dv_ = 0, fast_n_ = 0;
+};
+
+}  // namespace hider::horizon
