@@ -11,19 +11,10 @@
 #pragma once
 #include <hider/fixed.hpp>
 #include <hider/frame.hpp>
+#include <hider/horizon/walk_kernel.hpp>
 #include <hider/status.hpp>
 
 namespace hider::horizon {
-
-constexpr int kPointFracBits = 4;                   ///< PlotPoint coordinates carry 4 fraction bits
-constexpr int32_t kPointLimit = int32_t{1} << 24;   ///< |x|, |y| of a PlotPoint (projection clamps)
-constexpr int32_t kNoPoint = INT32_MIN;             ///< PlotPoint::x of a point behind the near plane
-
-/// A projected point: x, y in 1/16 pixel from the frame's top-left corner; pixel (c, r) covers
-/// [16c, 16c + 16) x [16r, 16r + 16). x == kNoPoint marks a point that has no projection.
-struct PlotPoint {
-    int32_t x, y;
-};
 
 /// Upper and lower horizon, one int16 per column each, in caller memory. Build with make_horizon().
 struct Horizon {
@@ -142,6 +133,44 @@ public:
         vlast_ = value;
     }
 
+    /// Points of this drawer's curves all have |y| < 2^15 (SurfaceProjection::compact()): walk() may
+    /// use the walk kernel.
+    void set_compact(bool c) { compact_ = c; }
+
+    /// line_to() for each point of [p, end) (none kNoPoint), with the same results: walk_kernel.hpp's
+    /// loop, which hands back the columns to draw and the steps it does not take. Not for kByValue.
+    void walk(const PlotPoint* p, const PlotPoint* end) {
+        static_assert(!kByValue, "walk() carries no heights");
+        if (!compact_) {
+            for (; p != end; ++p) line_to(*p);
+            return;
+        }
+        int32_t runs[3 * kQueuedRuns];
+        WalkKernel k{p, end, col_, ymin_, ymax_, upper_, lower_, static_cast<uint32_t>(width_), detail::kSlope.v, runs,
+                     runs + 3 * kQueuedRuns};
+        for (;;) {
+            const int r = run_walk_kernel(k);
+            show_queue(runs, k.runs);
+            k.runs = runs;
+            if (r == kWalkDone) break;
+            if (r == kWalkCross) {
+                col_ = k.col;
+                ymin_ = k.ymin;
+                ymax_ = k.ymax;
+                last_ = k.p[-1];
+                line_to(*k.p);
+                k.col = col_;
+                k.ymin = ymin_;
+                k.ymax = ymax_;
+                ++k.p;
+            }
+        }
+        col_ = k.col;
+        ymin_ = k.ymin;
+        ymax_ = k.ymax;
+        if (end != p) last_ = end[-1];
+    }
+
     /// Draws the pending column and ends the piece.
     void finish() {
         flush();
@@ -152,7 +181,8 @@ public:
     uint32_t pixels() const { return pixels_; }
 
 private:
-    static constexpr int32_t kNoColumn = INT32_MIN / 2;  // never a frame column, never equal to p.x >> 4
+    static constexpr int32_t kNoColumn = INT32_MIN / 2;
+    static constexpr int kQueuedRuns = 32;  ///< columns the walk kernel queues before they are drawn  // never a frame column, never equal to p.x >> 4
 
     __attribute__((always_inline)) void include(int32_t y, int32_t v) {
         if (y < ymin_) {
@@ -230,28 +260,74 @@ private:
     }
 
     /// Draws the visible rows of the pending column and widens its horizons.
-    void flush() {
-        const int32_t c = col_;
+    __attribute__((always_inline)) void flush() { flush_column(col_, ymin_, ymax_); }
+
+    /// The rows a curve covers in column c, from its extent [ymin, ymax] there: those whose centre
+    /// (16 r + 8) lies inside, or the row of the middle when none does. Wholly between the horizons
+    /// (most columns of the far curves): hidden, nothing changes; else show() draws and widens.
+    __attribute__((always_inline)) void flush_column(int32_t c, int32_t ymin, int32_t ymax) {
         if (static_cast<uint32_t>(c) >= static_cast<uint32_t>(width_)) return;
-        // Rows whose centre (16 r + 8) lies in [ymin, ymax]; none: the row of the middle.
-        int32_t lo = (ymin_ + 7) >> kPointFracBits, hi = (ymax_ - 8) >> kPointFracBits;
-        if (lo > hi) lo = hi = (ymin_ + ymax_) >> (kPointFracBits + 1);
+        int32_t lo = (ymin + 7) >> kPointFracBits, hi = (ymax - 8) >> kPointFracBits;
+        if (lo > hi) lo = hi = (ymin + ymax) >> (kPointFracBits + 1);
         const int32_t up = upper_[c], down = lower_[c];
-        if (lo >= up && hi <= down) return;  // wholly between the horizons: hidden, nothing changes
-        const int32_t top_end = min(hi, up - 1), bottom_begin = max(lo, down + 1);
-        if (top_end + 1 >= bottom_begin) {
-            draw(c, lo, hi);
-        } else {
-            if (top_end >= lo) draw(c, lo, top_end);
-            if (bottom_begin <= hi) draw(c, bottom_begin, hi);
+        if (lo >= up && hi <= down) return;
+        show(c, lo, hi, up, down);
+    }
+
+    /// show() for each queued (lo, column, hi) triple, the common case (a drawn line, no batch, no
+    /// height colours) in one loop.
+    void show_queue(const int32_t* q, const int32_t* end) {
+        if (kByValue || !visible_ || pending_upper_ != nullptr) {
+            for (; q != end; q += 3) show(q[1], q[0], q[2], upper_[q[1]], lower_[q[1]]);
+            return;
         }
-        if (!visible_) lo = hi = (lo + hi) >> 1;  // an undrawn line: its middle, so it hides nothing its
-                                                  // own pixels would not (they are not there to cover it)
+        int16_t* const upper = upper_;
+        int16_t* const lower = lower_;
+        const int32_t height = height_;
+        for (; q != end; q += 3) {
+            const int32_t lo = q[0], c = q[1], hi = q[2];
+            const int32_t up = upper[c], down = lower[c];
+            int32_t a = lo, b = hi;  // rows drawn: [a, b] (and [down + 1, hi] when two parts)
+            if (lo < up) {
+                upper[c] = static_cast<int16_t>(clamp(lo, int32_t{-1}, height));
+                if (hi > down) {
+                    lower[c] = static_cast<int16_t>(clamp(hi, int32_t{-1}, height));
+                    if (up <= down) {  // a horizon between the parts: the lower one first
+                        draw(c, down + 1, hi);
+                        b = up - 1;
+                    }  // else nothing drawn here yet: one part
+                } else if (hi >= up) {
+                    b = up - 1;
+                }
+            } else if (hi > down) {
+                lower[c] = static_cast<int16_t>(clamp(hi, int32_t{-1}, height));
+                a = max(lo, down + 1);
+            } else {
+                continue;  // hidden after all (a column queued twice)
+            }
+            draw(c, a, b);
+        }
+    }
+
+    /// Draws the rows of [lo, hi] outside the horizons (up, down) of column c and widens them.
+    void show(int32_t c, int32_t lo, int32_t hi, int32_t up, int32_t down) {
+        if (visible_) {
+            const int32_t top_end = min(hi, up - 1), bottom_begin = max(lo, down + 1);
+            if (top_end + 1 >= bottom_begin) {
+                draw(c, lo, hi);
+            } else {
+                if (top_end >= lo) draw(c, lo, top_end);
+                if (bottom_begin <= hi) draw(c, bottom_begin, hi);
+            }
+        } else {
+            lo = hi = (lo + hi) >> 1;  // an undrawn line: its middle, so it hides nothing its own pixels
+                                       // would not (they are not there to cover it)
+        }
         const int16_t top = static_cast<int16_t>(clamp(lo, int32_t{-1}, height_));
         const int16_t bottom = static_cast<int16_t>(clamp(hi, int32_t{-1}, height_));
         if (pending_upper_ == nullptr) {
-            upper_[c] = static_cast<int16_t>(min<int32_t>(up, top));
-            lower_[c] = static_cast<int16_t>(max<int32_t>(down, bottom));
+            if (top < up) upper_[c] = top;
+            if (bottom > down) lower_[c] = bottom;
         } else {
             pending_upper_[c] = min(pending_upper_[c], top);
             pending_lower_[c] = max(pending_lower_[c], bottom);
@@ -260,10 +336,10 @@ private:
         }
     }
 
-    void draw(int32_t c, int32_t y_first, int32_t y_last) {
+    __attribute__((always_inline)) void draw(int32_t c, int32_t y_first, int32_t y_last) {
         y_first = max(y_first, band0_);
         y_last = min(y_last, band1_ - 1);
-        if (y_first > y_last || !visible_) return;
+        if (y_first > y_last) return;
         Pixel p = pixel_;
         if constexpr (kByValue) p = Target::pack(ramp_(vtop_));
         target_.vline(c, y_first, y_last, p);
@@ -279,6 +355,7 @@ private:
     const Target& target_;
     Pixel pixel_{};
     bool visible_ = true;
+    bool compact_ = false;
     ValueRamp ramp_{};
     int32_t col_ = kNoColumn;
     int32_t ymin_ = 0, ymax_ = 0, vtop_ = 0, vlast_ = 0;

@@ -120,6 +120,7 @@ public:
             const PlotStyle& st)
         : proj_(p), s_(p.surface()), src_(src), buf_(b), style_(st), drawer_(h, t) {
         if constexpr (kByValue) drawer_.set_ramp({st.colours, s_.value_min, s_.value_max});
+        drawer_.set_compact(p.compact());
         last_x_line_ = (s_.samples - 1 + st.mesh_step - 1) / st.mesh_step;
         points_ = kCurves ? s_.samples : s_.curves;
         whole_previous_ = !kCurves || st.mesh;
@@ -178,6 +179,7 @@ private:
             c = proj_.project_column(row_, a, buf_.current.data());
         }
         stats_.samples += static_cast<uint32_t>(points_);
+        all_in_front_ = c.behind == 0;
         add(c);
     }
 
@@ -217,35 +219,55 @@ private:
     /// Whether the constant-x line at sample i is part of the picture.
     bool x_line_drawn(int32_t i) const {
         const int32_t last = s_.samples - 1;
-        const bool edge = i == 0 || i == last;
-        return (style_.mesh && (i % style_.mesh_step == 0 || i == last)) || (edge && style_.side_edges);
+        if (i == 0 || i == last) return style_.mesh || style_.side_edges;
+        return style_.mesh && i % style_.mesh_step == 0;
     }
 
-    /// Sets the drawer up for the constant-x line at sample i; false (drawer invisible) when that
-    /// line is not part of the picture.
-    bool x_line_style(int32_t i) {
-        const int32_t last = s_.samples - 1, step = style_.mesh_step;
-        const bool drawn = x_line_drawn(i);
+    /// Sets the drawer up for constant-x line j (at sample i); `drawn`: part of the picture (else it
+    /// only widens the horizons).
+    void x_line_style(int32_t j, bool drawn) {
         drawer_.set_visible(drawn);
         if constexpr (!kByValue) {
-            const uint32_t j = static_cast<uint32_t>(i == last ? last_x_line_ : i / step);
-            drawer_.set_pixel(Target::pack(style_.shading == Shading::id ? id_colour(static_cast<uint32_t>(s_.curves) + 1 + j)
-                                                                          : style_.mesh_colour));
+            drawer_.set_pixel(Target::pack(style_.shading == Shading::id
+                                               ? id_colour(static_cast<uint32_t>(s_.curves + 1 + j))
+                                               : style_.mesh_colour));
         }
-        return drawn;
     }
+
+    /// Index j of the constant-x line at sample i (i a multiple of mesh_step, or the last sample).
+    int32_t x_line_index(int32_t i) const { return i == s_.samples - 1 ? last_x_line_ : i / style_.mesh_step; }
 
     /// Draws line a (points pts, heights row), clipped at the near plane.
     void draw_line(int32_t a, const PlotPoint* pts, const Value* row) {
-        if (kCurves) curve_style(a);
-        else x_line_style(a);
+        if constexpr (kCurves) {
+            curve_style(a);
+        } else {
+            const bool drawn = x_line_drawn(a);
+            x_line_style(drawn ? x_line_index(a) : 0, drawn);
+        }
+        if constexpr (!kByValue) {
+            if (all_in_front_ && pts == buf_.current.data()) {  // one piece, no near-plane checks
+                drawer_.move_to(pts[0]);
+                drawer_.walk(pts + 1, pts + points_);
+                drawer_.finish();
+                ++stats_.curves;
+                return;
+            }
+        }
         bool pen = false;
         for (int32_t b = 0, n = points_; b < n; ++b) {
             const PlotPoint p = pts[b];
             const int32_t value = kByValue ? static_cast<int32_t>(row[b]) : 0;
             if (p.x != kNoPoint) {
                 if (pen) {
-                    drawer_.line_to(p, value);
+                    if constexpr (!kByValue) {  // the rest of a run of projected points in one go
+                        int32_t e = b + 1;
+                        while (e < n && pts[e].x != kNoPoint) ++e;
+                        drawer_.walk(pts + b, pts + e);
+                        b = e - 1;
+                    } else {
+                        drawer_.line_to(p, value);
+                    }
                 } else {
                     if (b > 0) {  // came back in front of the near plane: start on it
                         drawer_.move_to(crossing(a, b, row[b], a, b - 1, row[b - 1]), value);
@@ -279,11 +301,17 @@ private:
     void pieces(int32_t a, bool split) {
         if constexpr (kCurves) {
             const int32_t last = s_.samples - 1;
-            for (int32_t j = 0; j <= last_x_line_; ++j) {
-                const int32_t i = min(j * style_.mesh_step, last);
-                if (!x_line_style(i)) continue;
-                piece(a, i, split, style_.mesh ? buf_.previous[static_cast<size_t>(i)] : ends_[i == 0 ? 0 : 1],
-                      style_.mesh ? static_cast<int32_t>(prev_row_[i]) : end_values_[i == 0 ? 0 : 1]);
+            if (!style_.mesh) {  // the side edges at most
+                if (!style_.side_edges) return;
+                for (int32_t e = 0; e < 2; ++e) {
+                    x_line_style(e == 0 ? 0 : last_x_line_, true);
+                    piece(a, e == 0 ? 0 : last, split, ends_[e], end_values_[e]);
+                }
+                return;
+            }
+            for (int32_t j = 0, i = 0; j <= last_x_line_; ++j, i = min(i + style_.mesh_step, last)) {
+                x_line_style(j, true);
+                piece(a, i, split, buf_.previous[static_cast<size_t>(i)], static_cast<int32_t>(prev_row_[i]));
             }
         } else {
             for (int32_t k = 0; k < s_.curves; ++k) {
@@ -298,6 +326,12 @@ private:
     void piece(int32_t a, int32_t b, bool split, PlotPoint pa, int32_t va) {
         const int32_t vb = static_cast<int32_t>(row_[b]);
         PlotPoint pb = buf_.current[static_cast<size_t>(b)];
+        if (!split && pa.x != kNoPoint && pb.x != kNoPoint) {  // the common case: both ends projected
+            drawer_.move_to(pa, va);
+            drawer_.line_to(pb, vb);
+            drawer_.finish();
+            return;
+        }
         HomPoint ha = proj_.at(sample_i(prev_a_, b), curve_k(prev_a_, b), va);
         RowCounts c;
         if (split) {  // start where the piece crosses the plane through the eye
@@ -333,6 +367,7 @@ private:
     int32_t end_values_[2] = {0, 0};
     int32_t prev_a_ = 0, last_x_line_ = 0, points_ = 0;
     bool have_prev_ = false, whole_previous_ = false, batches_ = false;
+    bool all_in_front_ = false;  ///< the current buffer has no point behind the near plane
 };
 
 template <class Target, class Source, bool kByValue, bool kCurves>

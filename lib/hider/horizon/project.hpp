@@ -7,6 +7,8 @@
 // 32x16-bit products: no division, the same integer operations on every target.
 #pragma once
 #include <hider/horizon/horizon.hpp>
+#include <hider/horizon/level_pass.hpp>
+#include <hider/horizon/row_pass.hpp>
 #include <hider/int128.hpp>
 #include <hider/view.hpp>
 
@@ -39,15 +41,8 @@ struct RowCounts {
 };
 
 namespace detail {
-/// round(2^24 / (256 + j)) - 2^15 for j = 0..256: 2^45 / w for w normalised to [2^29, 2^30) by linear
-/// interpolation between entries (|error| <= 1.3 units of 2^16, 2^-15.5 relative). 514 bytes of flash.
-struct RecipTable {
-    uint16_t v[257];
-    constexpr RecipTable() : v() {
-        for (uint32_t j = 0; j <= 256; ++j) v[j] = static_cast<uint16_t>(((uint32_t{1} << 24) + (256 + j) / 2) / (256 + j) - 32768);
-    }
-};
-inline constexpr RecipTable kRecip{};
+template <class A, class B> struct is_same_type { static constexpr bool value = false; };
+template <class A> struct is_same_type<A, A> { static constexpr bool value = true; };
 
 /// Number of significant bits of |x|.
 inline int bit_length(const Int128& x) {
@@ -68,12 +63,6 @@ inline int64_t round_shift(const Int128& x, int s) {
     return y.hi >> (s - 64);  // s == 64: the high word itself
 }
 
-/// floor(u * r / 2^s) for |u| < 2^29, r <= 2^16, s >= 16, from two 32-bit products (exact).
-__attribute__((always_inline)) inline int32_t mul_recip(int32_t u, uint32_t r, int s) {
-    const int32_t hi = (u >> 16) * static_cast<int32_t>(r);   // |u >> 16| < 2^13
-    const uint32_t lo = static_cast<uint32_t>(u & 0xFFFF) * r;  // < 2^32
-    return (hi + static_cast<int32_t>(lo >> 16)) >> (s - 16);
-}
 }  // namespace detail
 
 /// A surface and camera prepared for projection. prepare() once per camera/surface (about a hundred
@@ -82,6 +71,8 @@ class SurfaceProjection {
 public:
     /// Most samples per curve and curves per surface (keeps the summed rounding of the steps below 2^17).
     static constexpr int32_t kMaxCount = 65535;
+    /// Bound on the rounding of U, V, W: at most 1/2 unit per step, times i + k + value + 1 < 2^17.
+    static constexpr int64_t kStepError = int64_t{1} << 17;
 
     /// Checks the surface and the camera and builds the per-frame steps. Errors: those of make_view(),
     /// invalid_argument (fewer than 2 samples or curves, dx or dz <= 0, value_min > value_max, y_unit < 1),
@@ -122,7 +113,7 @@ public:
         f[1].c0 = -k * t.trans.y.raw() - cy * t.trans.z.raw();
         f[2].c0 = -256 * int64_t{t.trans.z.raw()};
         const int64_t unit = int64_t{s.y_unit_raw} * (int64_t{1} << value_shift_);
-        int64_t w_top = 0;
+        int64_t w_top = 0, w_bottom = INT64_MAX;
         for (int q = 0; q < 3; ++q) {
             // Scale so |F| < 2^28 at every corner of the bounding box (F is affine: the corners bound it).
             int bits = 0;
@@ -135,20 +126,39 @@ public:
             ax.dk = static_cast<int32_t>(detail::round_shift(mul128(f[q].c[2], s.dz.raw()), shift));
             ax.dv = static_cast<int32_t>(detail::round_shift(mul128(f[q].c[1], unit), shift));
             if (q == 2) {
-                for (int c = 0; c < 8; ++c)
-                    w_top = max(w_top, detail::round_shift(f[2].at(xs[c & 1], ys[(c >> 1) & 1], zs[c >> 2]), shift));
+                for (int c = 0; c < 8; ++c) {
+                    const int64_t w = detail::round_shift(f[2].at(xs[c & 1], ys[(c >> 1) & 1], zs[c >> 2]), shift);
+                    w_top = max(w_top, w);
+                    w_bottom = min(w_bottom, w - kStepError);
+                }
                 near_w_ = static_cast<int32_t>(max<int64_t>(
                     detail::round_shift(mul128(int64_t{view.near_raw}, int64_t{1} << 38), shift), 1));
             }
         }
-        // Rounding of the steps: at most 1/2 unit each, times i + k + value + 1 < 2^17 in total.
-        w_top = min<int64_t>(w_top + (int64_t{1} << 17), (int64_t{1} << 29) - 1);
+        w_top = min<int64_t>(w_top + kStepError, (int64_t{1} << 29) - 1);
         n0_ = 0;
         while ((w_top << n0_) < (int64_t{1} << 29)) ++n0_;
         du_ = axis_[0].shift - axis_[2].shift;
         dv_ = axis_[1].shift - axis_[2].shift;
         fast_n_ = 24 - max(du_, dv_);
+        // Every sample in front of the near plane and on the fast path: project_row() needs no checks.
+        int n_max = n0_;
+        if (w_bottom >= near_w_)
+            while (n_max < 40 && (w_bottom << n_max) < (int64_t{1} << 29)) ++n_max;
+        // Every shift 31 - n - du (or dv) in [7, 31]: no check per point (the passes shift by s, s + dvu).
+        checked_ = !(w_bottom >= near_w_ && n_max <= fast_n_ && n0_ + min(du_, dv_) >= 0);
+        level_ = !checked_ && axis_[2].di == 0 && axis_[1].di == 0;  // no yaw: W, V constant along a curve
         sweep_ = choose_sweep();
+        compact_ = false;
+        if (w_bottom >= near_w_) {  // every point in front: the corners' hull bounds the screen points
+            compact_ = true;
+            RowCounts c;
+            for (int q = 0; q < 8; ++q) {
+                const PlotPoint pt = project(at(q & 1 ? s.samples - 1 : 0, q & 4 ? s.curves - 1 : 0,
+                                                q & 2 ? s.value_max : s.value_min), c);
+                compact_ = compact_ && abs_value(pt.x) < kCompactLimit && abs_value(pt.y) < kCompactLimit;
+            }
+        }
         return Status::ok;
     }
 
@@ -160,6 +170,9 @@ public:
     int32_t eye_z_raw() const { return eye_z_raw_; }
     /// The sweep this view needs (chosen by prepare()).
     Sweep sweep() const { return sweep_; }
+    /// Every point of the surface projects in front of the near plane within |x|, |y| < 2^15 (what the
+    /// walk kernel needs).
+    bool compact() const { return compact_; }
 
     /// Homogeneous coordinates of sample i of curve k with height `value` (clamped to the surface's range).
     HomPoint at(int32_t i, int32_t k, int32_t value) const {
@@ -196,12 +209,10 @@ public:
             wn <<= 1;
             ++n;
         }
-        // r = 2^45 / wn from the table: index from the top 9 bits, 7 bits of interpolation.
-        const uint32_t j = (wn >> 21) - 256, f = (wn >> 14) & 127u;
-        const uint32_t t0 = detail::kRecip.v[j], t1 = detail::kRecip.v[j + 1];
-        const uint32_t r = 32768u + t0 - (((t0 - t1) * f) >> 7);
-        if (n <= fast_n_) return {detail::mul_recip(h.u, r, 45 - n - du_), detail::mul_recip(h.v, r, 45 - n - dv_)};
-        return {scale_slow(h.u, r, 45 - n - du_, counts), scale_slow(h.v, r, 45 - n - dv_, counts)};
+        const uint32_t r = detail::recip45(wn);  // 2^45 / wn
+        if (n <= fast_n_ && n + min(du_, dv_) >= 0)  // shifts in [7, 31]: |X|, |Y| < 2^24
+            return {detail::scale16(h.u, r, 31 - n - du_), detail::scale16(h.v, r, 31 - n - dv_)};
+        return {scale_slow(h.u, r, 31 - n - du_, counts), scale_slow(h.v, r, 31 - n - dv_, counts)};
     }
 
     /// Projects the constant-x line at sample i from the heights values[0..curves) of each curve there
@@ -218,6 +229,13 @@ public:
     /// Projects curve k from its heights values[0..samples) into out[0..samples).
     template <class T>
     RowCounts project_row(const T* values, int32_t k, PlotPoint* out) const {
+        if (!checked_ && value_shift_ == 0 && in_type_range<T>()) {
+            if constexpr (detail::is_same_type<T, uint8_t>::value) {
+                if (level_ && project_row_level(values, k, out)) return {};
+            }
+            project_row_fast(values, k, out);
+            return {};
+        }
         RowCounts counts;
         const int32_t vmin = surface_.value_min, vmax = surface_.value_max;
         int32_t u = axis_[0].base + k * axis_[0].dk, v = axis_[1].base + k * axis_[1].dk,
@@ -271,15 +289,128 @@ private:
         return ax * (bx + by) >= bx * (ax + ay) ? Sweep::curves : Sweep::x_lines;
     }
 
+    /// Whether every value of T lies in [value_min, value_max] (no clamping needed).
+    template <class T>
+    bool in_type_range() const {
+        if constexpr (sizeof(T) > 2) {
+            return false;
+        } else {
+            constexpr int32_t lo = static_cast<T>(-1) < 0 ? -(int32_t{1} << (8 * sizeof(T) - 1)) : 0;
+            constexpr int32_t hi = static_cast<T>(-1) < 0 ? (int32_t{1} << (8 * sizeof(T) - 1)) - 1 : (int32_t{1} << (8 * sizeof(T))) - 1;
+            return surface_.value_min <= lo && surface_.value_max >= hi;
+        }
+    }
+
+    /// project_row() when every sample is in front of the near plane, needs the fast product and no
+    /// clamping (prepare() and in_type_range() decide): the same points from the two passes of
+    /// row_pass.hpp (Thumb-1 loops on ARMv6-M for 8-bit heights).
+    template <class T>
+    void project_row_fast(const T* values, int32_t k, PlotPoint* out) const {
+        const int32_t n = surface_.samples, vmin = surface_.value_min;
+        RowPass p;
+        p.out = out;
+        p.out_end = out + n;
+        // W << n0 fits 30 bits for every sample (prepare()), so the steps shift with it.
+        p.hw = static_cast<int32_t>(static_cast<uint32_t>(axis_[2].dv) << n0_);
+        p.dw = static_cast<int32_t>(static_cast<uint32_t>(axis_[2].di) << n0_);
+        p.w = static_cast<int32_t>(static_cast<uint32_t>(axis_[2].base + k * axis_[2].dk - vmin * axis_[2].dv) << n0_);
+        p.s0 = 31 - du_ - n0_;
+        p.unused = 0;
+        p.table = reinterpret_cast<uintptr_t>(detail::kRecip.v) - 1024;
+        p.hu = axis_[0].dv;
+        p.du = axis_[0].di;
+        p.u = axis_[0].base + k * axis_[0].dk - vmin * p.hu;
+        p.hv = axis_[1].dv;
+        p.dv = axis_[1].di;
+        p.v = axis_[1].base + k * axis_[1].dk - vmin * p.hv;
+        p.dvu = du_ - dv_;
+        if constexpr (detail::is_same_type<T, uint8_t>::value) {
+            p.values = values;
+            run_row_passes(p);
+        } else {  // the same two loops over other integer types
+            uint32_t w = static_cast<uint32_t>(p.w);
+            for (int32_t i = 0; i < n; ++i, w += static_cast<uint32_t>(p.dw)) {
+                uint32_t wn = w + static_cast<uint32_t>(static_cast<int32_t>(values[i]) * p.hw);
+                int32_t s = p.s0;
+                while ((wn >> 29) == 0) {
+                    wn <<= 1;
+                    --s;
+                }
+                out[i].x = s;
+                out[i].y = static_cast<int32_t>(detail::recip45(wn));
+            }
+            int32_t u = p.u, v = p.v;
+            for (int32_t i = 0; i < n; ++i, u += p.du, v += p.dv) {
+                const int32_t value = static_cast<int32_t>(values[i]);
+                const int s = out[i].x;
+                const uint32_t r = static_cast<uint32_t>(out[i].y);
+                out[i].x = detail::scale16(u + value * p.hu, r, s);
+                out[i].y = detail::scale16(v + value * p.hv, r, s + p.dvu);
+            }
+        }
+    }
+
+    /// project_row() for 8-bit heights when level_: the knots of curve k, then the level pass. False
+    /// (nothing written) when W varies by more than a quarter over the heights or a knot leaves the fast
+    /// path's range: project_row_fast() then.
+    bool project_row_level(const uint8_t* values, int32_t k, PlotPoint* out) const {
+        // W and V at value 0 and 256 lie within one step of the box (|.| < 2^29): int32 throughout.
+        constexpr int32_t kStep = 1 << kLevelKnotBits;
+        const int32_t vmin = surface_.value_min, dw = axis_[2].dv * kStep, dv = axis_[1].dv * kStep;
+        const int32_t w0 = axis_[2].base + k * axis_[2].dk - vmin * axis_[2].dv;
+        const int32_t v0 = axis_[1].base + k * axis_[1].dk - vmin * axis_[1].dv;
+        const int32_t w_end = w0 + (kLevelKnots - 1) * dw, w_lo = min(w0, w_end);
+        if (w_lo < near_w_ || 8 * abs_value(w_end - w0) > w_lo || max(w0, w_end) >= (int32_t{1} << (30 - n0_)))
+            return false;
+        LevelKnot knots[kLevelKnots];
+        int e_max = 0;
+        for (int32_t j = 0, w = w0, v = v0; j < kLevelKnots; ++j, w += dw, v += dv) {
+            uint32_t wn = static_cast<uint32_t>(w) << n0_;
+            int ej = n0_;
+            while ((wn >> 29) == 0) {
+                wn <<= 1;
+                ++ej;
+            }
+            const int sy = 31 - ej - dv_;
+            if (31 - ej - du_ < 7 || sy < 7 || sy > 31) return false;
+            const uint32_t r = detail::recip45(wn);
+            knots[j] = {static_cast<int32_t>(r), ej, detail::scale16(v, r, sy), 0};  // Y exactly, as project() gives it
+            e_max = max(e_max, ej);
+        }
+        // One shift for X (r <= 2^16 kept), then offsets and steps from the next knot.
+        int32_t next_r = 0, next_y = 0;
+        for (int32_t j = kLevelKnots - 1; j >= 0; --j) {
+            LevelKnot& kn = knots[j];
+            const int32_t rj = kn.ar >> (e_max - kn.dr), yj = kn.ay;
+            const int32_t dr = j < kLevelKnots - 1 ? next_r - rj : 0, dy = j < kLevelKnots - 1 ? next_y - yj : 0;
+            kn = {(rj - j * dr) * kStep, dr, (yj - j * dy) * kStep, dy};
+            next_r = rj;
+            next_y = yj;
+        }
+        LevelPass p;
+        p.values = values;
+        p.out = out;
+        p.out_end = out + surface_.samples;
+        p.knots = knots;
+        p.hu = axis_[0].dv;
+        p.du = axis_[0].di;
+        p.u = axis_[0].base + k * axis_[0].dk - vmin * p.hu;
+        p.s = 31 - e_max - du_;
+        run_level_pass(p);
+        return true;
+    }
+
     static constexpr bool in_world(int64_t c) { return c > -kWorldLimitRaw && c < kWorldLimitRaw; }
     /// (value - value_min) >> value_shift, below 2^15, for value in [value_min, value_max].
     int32_t reduce(int32_t value) const {
         return static_cast<int32_t>((static_cast<uint32_t>(value) - static_cast<uint32_t>(surface_.value_min)) >> value_shift_);
     }
 
-    /// floor(u r / 2^s) clamped to +-kPointLimit, for any s (points very close to the near plane).
+    /// scale16(u, r, s) for any s (points very close to the near plane, or a far-off surface), clamped
+    /// to +-kPointLimit.
     static int32_t scale_slow(int32_t u, uint32_t r, int s, RowCounts& counts) {
-        const int64_t p = int64_t{u} * r;
+        const int64_t p = int64_t{u >> 14} * r;
+        if (s > 62) return p < 0 ? -1 : 0;
         int64_t q;
         if (s >= 0) {
             q = p >> s;
@@ -300,6 +431,11 @@ private:
     Sweep sweep_ = Sweep::curves;
     int32_t near_w_ = 1;
     int value_shift_ = 0, n0_ = 0, du_ = 0, dv_ = 0, fast_n_ = 0;
+    bool checked_ = true;  ///< project_row() must check near plane and slow path per sample
+    bool level_ = false;   ///< W and V do not change along a curve (level_pass.hpp)
+    bool compact_ = false;
+    /// Corners within this bound: every point within 2^15 (a margin for the steps' rounding).
+    static constexpr int32_t kCompactLimit = (int32_t{1} << 15) - (int32_t{1} << 11);
 };
 
 }  // namespace hider::horizon

@@ -71,21 +71,29 @@ public:
     int32_t band_end() const { return min(f_.page1 * 8, f_.height); }
     static Pixel pack(Rgb c) { return (c.r | c.g | c.b) != 0 ? 1 : 0; }
 
-    /// Rows [y_first, y_last] of column x, a page (one byte, one mask) at a time.
-    void vline(int32_t x, int32_t y_first, int32_t y_last, Pixel p) const {
-        uint8_t* q = f_.pages + (y_first / 8 - f_.page0) * f_.width + x;  // rows are >= 0: / 8 is a shift
-        int32_t y = y_first;
-        for (;;) {
-            const int32_t page_last = (y | 7) < y_last ? (y | 7) : y_last;
-            const uint32_t mask = (0xFFu >> (7 - (page_last & 7))) & (0xFFu << (y & 7));
+    /// Rows [y_first, y_last] of column x: one byte and one mask per page (most runs are one page).
+    __attribute__((always_inline)) void vline(int32_t x, int32_t y_first, int32_t y_last, Pixel p) const {
+        uint8_t* q = f_.pages + ((y_first >> 3) - f_.page0) * f_.width + x;  // rows are >= 0
+        if ((y_first >> 3) == (y_last >> 3)) {
+            const uint32_t mask = ((2u << (y_last - y_first)) - 1u) << (y_first & 7);
             *q = static_cast<uint8_t>(p != 0 ? *q | mask : *q & ~mask);
-            if (page_last == y_last) return;
+            return;
+        }
+        vline_pages(q, static_cast<uint32_t>(y_first), static_cast<uint32_t>(y_last), p);
+    }
+
+private:
+    void vline_pages(uint8_t* q, uint32_t y, uint32_t last, Pixel p) const {
+        for (;;) {
+            const uint32_t page_last = (y | 7u) < last ? (y | 7u) : last;
+            const uint32_t mask = ((2u << (page_last - y)) - 1u) << (y & 7u);
+            *q = static_cast<uint8_t>(p != 0 ? *q | mask : *q & ~mask);
+            if (page_last == last) return;
             y = page_last + 1;
             q += f_.width;
         }
     }
 
-private:
     MonoFrame f_;
 };
 
