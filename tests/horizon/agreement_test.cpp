@@ -3,7 +3,9 @@
 // sample ray-cast from the eye): hider's curve pixels and the reference's visible curve pixels agree,
 // within one pixel, on >= 97% of them in both directions, for the built-in functions seen from above the
 // front, from below, from behind, from above the middle and from the side, plain and with the mesh.
+#include <cmath>
 #include <cstdio>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -137,3 +139,20 @@ TEST_CASE("Curve pixels agree with the reference from behind, from above the mid
             }
 }
 
+
+TEST_CASE("Curve pixels agree with the reference from random views (8 seeds, all functions)") {
+    std::mt19937 rng(2024);
+    std::uniform_real_distribution<double> angle(0, 2 * M_PI), elevation(-0.9, 1.2), dist(2.2, 4.0);
+    const char* const functions[] = {"sinc", "saddle", "hills", "waves"};
+    for (int seed = 0; seed < 8; ++seed) {
+        const double a = angle(rng), e = elevation(rng), r = dist(rng);
+        const plot::Vec3d eye{r * std::cos(e) * std::sin(a), r * std::sin(e), r * std::cos(e) * std::cos(a)};
+        const std::string function = functions[seed % 4];
+        const std::string what = function + " from (" + std::to_string(eye[0]) + ", " + std::to_string(eye[1]) + ", " +
+                                 std::to_string(eye[2]) + ")";
+        const Measured m = measure(function, view_args(eye), seed % 2 == 1, 30 + seed * 3, 80 + seed * 10);
+        report(what + ", curves", m.curves);
+        CHECK_MESSAGE(m.curves.image_rate() >= 0.97, what);
+        CHECK_MESSAGE(m.curves.ref_rate() >= 0.97, what);
+    }
+}

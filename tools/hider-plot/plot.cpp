@@ -160,6 +160,7 @@ Camera to_camera(const CameraD& cam) {
 }
 
 int mesh_step(const Options& opt, int curves, int samples) {
+    if (!opt.mesh) return samples - 1;  // the side edges alone: constant-x lines 0 and 1
     if (opt.mesh_step > 0) return opt.mesh_step;
     return std::max(1, static_cast<int>(std::lround(static_cast<double>(samples - 1) / (curves - 1))));
 }

@@ -69,7 +69,8 @@ Camera to_camera(const CameraD& cam);
 /// in the frame ("the view does not see the surface").
 bool render(const HeightGrid& g, const CameraD& cam, const Options& opt, Result& out, std::string& error);
 
-/// Mesh step render() uses for `opt` and a grid of curves x samples.
+/// Mesh step render() uses for `opt` and a grid of curves x samples (samples - 1 without the mesh: the
+/// side edges are then constant-x lines 0 and 1).
 int mesh_step(const Options& opt, int curves, int samples);
 
 }  // namespace hider::plot
