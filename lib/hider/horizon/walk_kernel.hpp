@@ -13,7 +13,8 @@
 namespace hider::horizon {
 
 /// State of the walk. The field order is the ARMv6-M loop's contract (static_assert below). Points
-/// have |y| < 2^15; p[-1] is the point before p.
+/// have |y| < 2^15; p[-1] is the point before p and lies in column col (so a step into the next
+/// column is shorter than 32).
 struct WalkKernel {
     const PlotPoint* p;      ///< next point
     const PlotPoint* end;
@@ -46,8 +47,7 @@ inline int walk_kernel_portable(WalkKernel& k) {
         }
         if (c != k.col + 1) return kWalkCross;
         const int32_t lx = k.p[-1].x, ly = k.p[-1].y;
-        const uint32_t dx = static_cast<uint32_t>(x - lx);
-        if (dx > 255) return kWalkCross;
+        const uint32_t dx = static_cast<uint32_t>(x - lx);  // in [1, 31]: p[-1] lies in column col
         const int32_t t = static_cast<int32_t>((static_cast<uint32_t>(c * 16 - lx) * k.slope[dx]) >> 9);
         const int32_t yb = ly + (((y - ly) * t) >> 15);
         const int32_t closed = k.col, ymin = min(k.ymin, yb), ymax = max(k.ymax, yb);
@@ -121,9 +121,7 @@ __attribute__((naked, noinline)) inline int walk_kernel_v6m(WalkKernel*) {
         "mov    r7, r0\n\t"
         "subs   r7, #16\n\t"
         "ldm    r7, {r2, r7}\n\t"         // lx ly
-        "subs   r1, r1, r2\n\t"           // dx
-        "cmp    r1, #255\n\t"
-        "bhi    8f\n\t"
+        "subs   r1, r1, r2\n\t"           // dx, in [1, 31]
         "lsls   r3, r3, #4\n\t"
         "subs   r3, r3, r2\n\t"           // 16 c - lx
         "lsls   r1, r1, #2\n\t"
