@@ -15,8 +15,8 @@ namespace waterfall {
 constexpr int32_t kSamples = 128;  ///< bins per spectrum (points per curve)
 constexpr int32_t kCurves = 64;    ///< spectra on screen
 constexpr int32_t kFrames = 4;     ///< frames each program writes
-constexpr int32_t kPeaks = 4;
-constexpr int32_t kShapeWidth = 12;  ///< a peak reaches kShapeWidth - 1 bins either side
+constexpr int32_t kPeaks = 5;
+constexpr int32_t kShapeWidth = 6;  ///< a peak reaches kShapeWidth - 1 bins either side
 
 /// A synthetic spectrum source: kPeaks peaks whose bins and heights drift with time, on a noise floor.
 class Spectrum {
@@ -35,11 +35,11 @@ public:
         for (int32_t j = 0; j < kPeaks; ++j) {
             const uint32_t phase = static_cast<uint32_t>(j) * 0x3C000000u;
             centre[j] = kCentre[j] + ((kSwing[j] * (wave(phase + t_ * kSpeed[j]) >> 14)) >> 16);
-            height[j] = 150 + ((90 * (wave(phase * 3 + t_ * (kSpeed[j] * 5 / 2)) >> 14)) >> 16);
+            height[j] = 120 + ((110 * (wave(phase * 3 + t_ * (kSpeed[j] * 5 / 2)) >> 14)) >> 16);
         }
         for (int32_t i = 0; i < kSamples; ++i) {
-            seed_ = seed_ * 1664525u + 1013904223u;  // noise floor 6..21
-            int32_t v = 6 + static_cast<int32_t>(seed_ >> 28);
+            seed_ = seed_ * 1664525u + 1013904223u;  // noise floor 4..19
+            int32_t v = 4 + static_cast<int32_t>(seed_ >> 28);
             for (int32_t j = 0; j < kPeaks; ++j) {
                 const int32_t d = i > centre[j] ? i - centre[j] : centre[j] - i;
                 if (d < kShapeWidth) v += (height[j] * shape_[d]) >> 8;
@@ -51,9 +51,9 @@ public:
 
 private:
     static int32_t wave(uint32_t bam) { return hider::sin(hider::Angle::from_bam(bam)).raw(); }
-    static constexpr int32_t kCentre[kPeaks] = {22, 50, 80, 106};
-    static constexpr int32_t kSwing[kPeaks] = {10, 16, 12, 8};
-    static constexpr uint32_t kSpeed[kPeaks] = {0x02400000u, 0x01800000u, 0x03000000u, 0x01C00000u};
+    static constexpr int32_t kCentre[kPeaks] = {18, 42, 64, 88, 110};
+    static constexpr int32_t kSwing[kPeaks] = {6, 12, 3, 10, 5};
+    static constexpr uint32_t kSpeed[kPeaks] = {0x01200000u, 0x00C00000u, 0x02800000u, 0x00E00000u, 0x01800000u};
     uint8_t shape_[kShapeWidth] = {};
     uint32_t t_ = 0;
     uint32_t seed_ = 0x2545F491u;
@@ -72,7 +72,7 @@ struct History {
     hider::horizon::GridSource<uint8_t> source() const { return {&rows[0][0], kSamples, kCurves, first}; }
 };
 
-/// Where the spectra lie: bins along x in [-1, 1], time along z in [-1, 1] (front = z 1), heights up to 0.5.
+/// Where the spectra lie: bins along x in [-1, 1], time along z in [-1, 1] (front = z 1), heights up to 0.4.
 inline hider::horizon::Surface surface() {
     hider::horizon::Surface s;
     s.samples = kSamples;
@@ -83,18 +83,19 @@ inline hider::horizon::Surface surface() {
     s.z0 = hider::Q16::from_raw(-(s.dz.raw() * (kCurves - 1)) / 2);
     s.value_min = 0;
     s.value_max = 255;
-    s.y_unit_raw = (65536 / 2 + 127) / 255;  // 255 -> 0.5
+    s.y_unit_raw = (65536 * 2 / 5 + 127) / 255;  // 255 -> 0.4
     return s;
 }
 
-/// The camera: in front of the newest spectrum and above it, looking at the middle of the history.
-inline hider::Camera camera() {
+/// The camera: in front of the newest spectrum and above it, looking along the time axis (no yaw). The
+/// 1-bit display looks from lower, so peaks hide the spectra behind them (64 curves on 64 rows).
+inline hider::Camera camera(bool low) {
     using hider::Q16;
     hider::Camera c;
-    c.eye = {Q16::from_int(0), Q16::from_ratio(11, 10), Q16::from_ratio(23, 10)};
-    c.target = {Q16::from_int(0), Q16::from_ratio(1, 10), Q16::from_ratio(-1, 5)};
+    c.eye = {Q16::from_int(0), low ? Q16::from_ratio(9, 10) : Q16::from_ratio(17, 10), Q16::from_ratio(27, 10)};
+    c.target = {Q16::from_int(0), low ? Q16::from_ratio(1, 10) : Q16::from_ratio(-1, 5), Q16::from_ratio(-1, 5)};
     c.up = {Q16::from_int(0), Q16::from_int(1), Q16::from_int(0)};
-    c.fovy = hider::Angle::from_degrees(Q16::from_int(44));
+    c.fovy = hider::Angle::from_degrees(Q16::from_int(42));
     c.near = Q16::from_ratio(1, 4);
     c.far = Q16::from_int(10);
     return c;
@@ -114,7 +115,7 @@ inline constexpr hider::Rgb kRamp[] = {{30, 40, 160}, {20, 110, 230}, {0, 190, 2
 class Plotter {
 public:
     hider::Status prepare(int32_t width, int32_t height, const Buffers& b, bool colour) {
-        const hider::Status s = proj_.prepare(camera(), width, height, surface());
+        const hider::Status s = proj_.prepare(camera(!colour), width, height, surface());
         if (s != hider::Status::ok) return s;
         buffers_.current = b.points;
         style_.shading = colour ? hider::horizon::Shading::height : hider::horizon::Shading::palette;

@@ -43,6 +43,7 @@ int sort_command(const Args& args);       ///< hider-bench sort ...
 int sort_run_command(const Args& args);   ///< internal: one painter_order call that sort runs under callgrind
 int newell_command(const Args& args);     ///< hider-bench newell ...
 int newell_run_command(const Args& args); ///< internal: painter_order then newell_order, run under callgrind
+int waterfall_command(const Args& args);  ///< hider-bench waterfall ... (waterfall.cpp)
 
 /// Directory of the benchmark models: HIDER_BENCH_MODELS_DIR (the source tree's tests/data/models).
 std::string default_models_dir();

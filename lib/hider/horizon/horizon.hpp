@@ -59,17 +59,32 @@ struct SlopeTable {
 inline constexpr SlopeTable kSlope{};
 }  // namespace detail
 
-/// Maps a height value to a colour: ramp[(v - v_min) * size / (v_max - v_min + 1)], clamped.
+/// Maps a height value to a colour of a ramp of at most 256: ramp[(v - v_min) size / (v_max - v_min + 1)]
+/// (clamped), the quotient from a scale made once (make_ramp), so a drawn run costs one 32-bit product.
 struct ValueRamp {
     Span<const Rgb> ramp;
-    int32_t v_min = 0, v_max = 0;
+    int32_t v_min = 0;
+    int shift = 0;      ///< (v - v_min) >> shift is below 2^12
+    uint32_t mul = 0;   ///< ceil(size 2^20 / reduced span)
 
     Rgb operator()(int32_t v) const {
-        const int64_t span = int64_t{v_max} - v_min + 1;
-        const int64_t t = clamp<int64_t>(int64_t{v} - v_min, 0, span - 1);
-        return ramp[static_cast<size_t>(t * static_cast<int64_t>(ramp.size()) / span)];
+        const uint32_t t = static_cast<uint32_t>(max(v, v_min)) - static_cast<uint32_t>(v_min);
+        const uint32_t i = ((t >> shift) * mul) >> 20;
+        return ramp[min<size_t>(i, ramp.size() - 1)];
     }
 };
+
+/// The ramp for values in [v_min, v_max]. Precondition: 1 <= ramp.size() <= 256.
+inline ValueRamp make_ramp(Span<const Rgb> ramp, int32_t v_min, int32_t v_max) {
+    ValueRamp r;
+    r.ramp = ramp;
+    r.v_min = v_min;
+    uint32_t span = static_cast<uint32_t>(v_max) - static_cast<uint32_t>(v_min);  // + 1 below, after the shift
+    while ((span >> r.shift) >= (uint32_t{1} << 12)) ++r.shift;
+    span = (span >> r.shift) + 1;
+    r.mul = static_cast<uint32_t>(((uint64_t{ramp.size()} << 20) + span - 1) / span);  // t / span < 1: t mul < 2^28
+    return r;
+}
 
 /// Draws curves against a Horizon into a Target (target.hpp). Use: set_pixel() (or set_ramp() when
 /// kByValue), then per curve move_to(), line_to() for each further point, finish(). Points within one

@@ -64,8 +64,8 @@ struct FunctionSource {
 
 enum class Shading : uint8_t {
     palette,  ///< curve k (0-based, by z) in colours[k % size]; constant-x lines in mesh_colour
-    height,   ///< each column of a line by the height of its topmost point; colours[] is a ramp from
-              ///< value_min to value_max
+    height,   ///< each column of a line by the height of its topmost point; colours[] is a ramp (at most
+              ///< 256) from value_min to value_max
     id,       ///< curve k as id k + 1, constant-x line j (at sample min(j mesh_step, samples - 1)) as
               ///< curves + 1 + j, packed (id >> 16 & 255, id >> 8 & 255, id & 255)
 };
@@ -119,7 +119,7 @@ public:
     PlotRun(const SurfaceProjection& p, const Source& src, const Horizon& h, const PlotBuffers& b, const Target& t,
             const PlotStyle& st)
         : proj_(p), s_(p.surface()), src_(src), buf_(b), style_(st), drawer_(h, t) {
-        if constexpr (kByValue) drawer_.set_ramp({st.colours, s_.value_min, s_.value_max});
+        if constexpr (kByValue) drawer_.set_ramp(make_ramp(st.colours, s_.value_min, s_.value_max));
         drawer_.set_compact(p.compact());
         last_x_line_ = (s_.samples - 1 + st.mesh_step - 1) / st.mesh_step;
         points_ = kCurves ? s_.samples : s_.curves;
@@ -425,6 +425,7 @@ PlotStats plot(const SurfaceProjection& p, const Source& src, const Horizon& h, 
               p.width() == t.width() && p.height() == t.height() && src.valid(s) && st.mesh_step >= 1 &&
               buffers_fit(p, src, b, st);
     if (st.shading != Shading::id) ok = ok && !st.colours.empty();
+    if (st.shading == Shading::height) ok = ok && st.colours.size() <= 256;
     if (!ok) {
         PlotStats bad;
         bad.status = Status::invalid_argument;
