@@ -5,6 +5,7 @@
 // queued columns, final state, results) into one 32-bit digest, so the Thumb-1 loops (ARMv6-M) can be
 // compared with their portable twins on the device and every target with the host.
 #pragma once
+#include <hider/horizon/horizon.hpp>
 #include <hider/horizon/level_pass.hpp>
 #include <hider/horizon/row_pass.hpp>
 #include <hider/horizon/walk_kernel.hpp>

@@ -3,7 +3,7 @@
 // the fast walk (walk kernel + queued columns) equal to the general line_to() path on random curves,
 // curves far outside the frame touching nothing outside the horizon arrays or the frame, bands equal
 // to the whole frame, batches, undrawn lines, and the 1-bit page target.
-#include <hider/horizon/horizon.hpp>
+#include <hider/horizon/drawer.hpp>
 #include <hider/horizon/target.hpp>
 
 #include <random>

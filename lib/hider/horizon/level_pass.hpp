@@ -6,7 +6,7 @@
 // below 2^-15, the reciprocal table's own), leaving per point one product for X: no table, no
 // normalisation. Portable C++, and a Thumb-1 loop on ARMv6-M with identical results (firmware/horizoncheck).
 #pragma once
-#include <hider/horizon/point.hpp>
+#include <hider/horizon/row_pass.hpp>
 
 namespace hider::horizon {
 
@@ -102,6 +102,38 @@ __attribute__((naked, noinline)) inline void level_pass_v6m(const LevelPass*) {
         "pop    {r4-r7, pc}\n");
 }
 #endif
+
+/// The knots of a curve: W (shifted left by n0 fits 30 bits) and V at heights 0, 32, .., 256 start at
+/// w0, v0 and step by dw, dv; X and Y shift by 31 - e - du and 31 - e - dv_shift for W normalised by e.
+/// Writes knots[0..kLevelKnots) and the common e (the largest); false when a shift leaves [7, 31].
+inline bool make_level_knots(int32_t w0, int32_t v0, int32_t dw, int32_t dv, int n0, int du, int dv_shift,
+                             LevelKnot* knots, int& e_max) {
+    constexpr int32_t kStep = 1 << kLevelKnotBits;
+    for (int32_t j = 0, w = w0, v = v0; j < kLevelKnots; ++j, w += dw, v += dv) {
+        uint32_t wn = static_cast<uint32_t>(w) << n0;
+        int ej = n0;
+        while ((wn >> 29) == 0) {
+            wn <<= 1;
+            ++ej;
+        }
+        const int sy = 31 - ej - dv_shift;
+        if (31 - ej - du < 7 || sy < 7 || sy > 31) return false;
+        const uint32_t r = detail::recip45(wn);
+        knots[j] = {static_cast<int32_t>(r), ej, detail::scale16(v, r, sy), 0};  // Y exactly, as project() gives it
+        e_max = max(e_max, ej);
+    }
+    // One shift for X (r <= 2^16 kept), then offsets and steps from the next knot.
+    int32_t next_r = 0, next_y = 0;
+    for (int32_t j = kLevelKnots - 1; j >= 0; --j) {
+        LevelKnot& kn = knots[j];
+        const int32_t rj = kn.ar >> (e_max - kn.dr), yj = kn.ay;
+        const int32_t dr = j < kLevelKnots - 1 ? next_r - rj : 0, dy = j < kLevelKnots - 1 ? next_y - yj : 0;
+        kn = {(rj - j * dr) * kStep, dr, (yj - j * dy) * kStep, dy};
+        next_r = rj;
+        next_y = yj;
+    }
+    return true;
+}
 
 /// Runs the level pass (Thumb-1 on ARMv6-M, else the portable loop).
 inline void run_level_pass(const LevelPass& p) {

@@ -6,64 +6,12 @@
 // surface's bounding box) and a sample costs three multiplies, a table reciprocal of W and two
 // 32x16-bit products: no division, the same integer operations on every target.
 #pragma once
-#include <hider/horizon/horizon.hpp>
 #include <hider/horizon/level_pass.hpp>
 #include <hider/horizon/row_pass.hpp>
-#include <hider/int128.hpp>
+#include <hider/horizon/surface.hpp>
 #include <hider/view.hpp>
 
 namespace hider::horizon {
-
-/// Where the samples lie. Heights are integers of any type; world y (Q16 raw) = value * y_unit_raw.
-struct Surface {
-    int32_t samples = 0;  ///< points per curve, >= 2
-    int32_t curves = 0;   ///< curves, >= 2
-    Q16 x0{}, dx{};       ///< sample i at x = x0 + i dx, dx > 0
-    Q16 z0{}, dz{};       ///< curve k at z = z0 + k dz, dz > 0 (curve index grows with z)
-    int32_t value_min = 0, value_max = 0;  ///< every height value lies here; others are clamped (and counted)
-    int32_t y_unit_raw = 1;                ///< world y per value unit, Q16 raw (1: values are Q16 heights)
-};
-
-/// Homogeneous screen coordinates of a surface point, each in its own per-frame scale.
-struct HomPoint {
-    int32_t u, v, w;
-};
-
-/// Which planes a plot sweeps in order of distance from the eye: the curves z = const (their lines run
-/// along x), or, when x runs into the picture (seen from the side), the planes x = const.
-enum class Sweep : uint8_t { curves, x_lines };
-
-/// What projecting one curve found besides its points.
-struct RowCounts {
-    uint32_t behind = 0;          ///< samples in front of the near plane's far side (no point)
-    uint32_t values_clamped = 0;  ///< heights outside [value_min, value_max]
-    uint32_t points_clamped = 0;  ///< projections beyond kPointLimit
-};
-
-namespace detail {
-template <class A, class B> struct is_same_type { static constexpr bool value = false; };
-template <class A> struct is_same_type<A, A> { static constexpr bool value = true; };
-
-/// Number of significant bits of |x|.
-inline int bit_length(const Int128& x) {
-    const Int128 a = x.sign() < 0 ? -x : x;
-    const uint64_t hi = static_cast<uint64_t>(a.hi);
-    if (hi != 0) return 128 - clz64(hi);
-    return 64 - clz64(a.lo);
-}
-
-/// round(x / 2^s) (ties toward +inf) for 0 <= s <= 120; the result must fit int64.
-inline int64_t round_shift(const Int128& x, int s) {
-    if (s == 0) return static_cast<int64_t>(x.lo);
-    Int128 half;
-    if (s <= 64) half.lo = uint64_t{1} << (s - 1);
-    else half.hi = int64_t{1} << (s - 65);
-    const Int128 y = x + half;
-    if (s < 64) return static_cast<int64_t>(y.shr(s).lo);
-    return y.hi >> (s - 64);  // s == 64: the high word itself
-}
-
-}  // namespace detail
 
 /// A surface and camera prepared for projection. prepare() once per camera/surface (about a hundred
 /// 64-bit products); the projection functions are const and may run for any number of frames.
@@ -102,7 +50,7 @@ public:
         // in subpixels from the top-left, W = w (distance along the view axis, Q16 raw).
         const Transform& t = view.to_view;
         const int64_t k = view.k_q8, cx = int64_t{2048} * width, cy = int64_t{2048} * height;
-        Form f[3];
+        detail::Form f[3];
         for (int a = 0; a < 3; ++a) {
             const int64_t r0 = t.rot.m[0][a].raw(), r1 = t.rot.m[1][a].raw(), r2 = t.rot.m[2][a].raw();
             f[0].c[a] = k * r0 - cx * r2;
@@ -180,18 +128,10 @@ public:
         return {axis_[0].at(i, k, h), axis_[1].at(i, k, h), axis_[2].at(i, k, h)};
     }
 
-    /// a + (b - a) t for t in [0, 2^16] (Q16).
-    static HomPoint lerp(const HomPoint& a, const HomPoint& b, int32_t t_q16) {
-        auto mix = [t_q16](int32_t p, int32_t q) {
-            return p + static_cast<int32_t>((int64_t{q - p} * t_q16) >> 16);
-        };
-        return {mix(a.u, b.u), mix(a.v, b.v), mix(a.w, b.w)};
-    }
-
     /// The point where the segment from a (in front of the near plane) to b (behind it) crosses it.
     PlotPoint near_crossing(const HomPoint& a, const HomPoint& b, RowCounts& counts) const {
         const int64_t num = int64_t{a.w} - near_w_, den = int64_t{a.w} - b.w;  // den > num >= 0
-        HomPoint p = lerp(a, b, static_cast<int32_t>(den == 0 ? 0 : (num << 16) / den));
+        HomPoint p = detail::lerp(a, b, static_cast<int32_t>(den == 0 ? 0 : (num << 16) / den));
         p.w = max(p.w, near_w_);
         return project(p, counts);
     }
@@ -212,7 +152,7 @@ public:
         const uint32_t r = detail::recip45(wn);  // 2^45 / wn
         if (n <= fast_n_ && n + min(du_, dv_) >= 0)  // shifts in [7, 31]: |X|, |Y| < 2^24
             return {detail::scale16(h.u, r, 31 - n - du_), detail::scale16(h.v, r, 31 - n - dv_)};
-        return {scale_slow(h.u, r, 31 - n - du_, counts), scale_slow(h.v, r, 31 - n - dv_, counts)};
+        return {detail::scale_slow(h.u, r, 31 - n - du_, counts), detail::scale_slow(h.v, r, 31 - n - dv_, counts)};
     }
 
     /// Projects the constant-x line at sample i from the heights values[0..curves) of each curve there
@@ -229,7 +169,7 @@ public:
     /// Projects curve k from its heights values[0..samples) into out[0..samples).
     template <class T>
     RowCounts project_row(const T* values, int32_t k, PlotPoint* out) const {
-        if (!checked_ && value_shift_ == 0 && in_type_range<T>()) {
+        if (!checked_ && value_shift_ == 0 && detail::in_type_range<T>(surface_.value_min, surface_.value_max)) {
             if constexpr (detail::is_same_type<T, uint8_t>::value) {
                 if (level_ && project_row_level(values, k, out)) return {};
             }
@@ -265,15 +205,6 @@ private:
         int shift = 0;
         int32_t at(int32_t i, int32_t k, int32_t h) const { return base + k * dk + i * di + h * dv; }
     };
-    /// c . p + c0 2^30 for a world point p (raw Q16).
-    struct Form {
-        int64_t c[3] = {0, 0, 0};
-        int64_t c0 = 0;
-        Int128 at(int64_t x, int64_t y, int64_t z) const {
-            return mul128(c0, int64_t{1} << 30) + mul128(c[0], x) + mul128(c[1], y) + mul128(c[2], z);
-        }
-    };
-
     /// The curves when a step along x moves across the screen at least as much (relative to its
     /// length there) as a step along z; measured on chords through the middle of the surface at mid height.
     Sweep choose_sweep() const {
@@ -287,18 +218,6 @@ private:
         const int64_t bx = abs_value(int64_t{z1.x} - z0.x), by = abs_value(int64_t{z1.y} - z0.y);
         // ax / (ax + ay) >= bx / (bx + by), products below 2^52.
         return ax * (bx + by) >= bx * (ax + ay) ? Sweep::curves : Sweep::x_lines;
-    }
-
-    /// Whether every value of T lies in [value_min, value_max] (no clamping needed).
-    template <class T>
-    bool in_type_range() const {
-        if constexpr (sizeof(T) > 2) {
-            return false;
-        } else {
-            constexpr int32_t lo = static_cast<T>(-1) < 0 ? -(int32_t{1} << (8 * sizeof(T) - 1)) : 0;
-            constexpr int32_t hi = static_cast<T>(-1) < 0 ? (int32_t{1} << (8 * sizeof(T) - 1)) - 1 : (int32_t{1} << (8 * sizeof(T))) - 1;
-            return surface_.value_min <= lo && surface_.value_max >= hi;
-        }
     }
 
     /// project_row() when every sample is in front of the near plane, needs the fast product and no
@@ -327,26 +246,8 @@ private:
         if constexpr (detail::is_same_type<T, uint8_t>::value) {
             p.values = values;
             run_row_passes(p);
-        } else {  // the same two loops over other integer types
-            uint32_t w = static_cast<uint32_t>(p.w);
-            for (int32_t i = 0; i < n; ++i, w += static_cast<uint32_t>(p.dw)) {
-                uint32_t wn = w + static_cast<uint32_t>(static_cast<int32_t>(values[i]) * p.hw);
-                int32_t s = p.s0;
-                while ((wn >> 29) == 0) {
-                    wn <<= 1;
-                    --s;
-                }
-                out[i].x = s;
-                out[i].y = static_cast<int32_t>(detail::recip45(wn));
-            }
-            int32_t u = p.u, v = p.v;
-            for (int32_t i = 0; i < n; ++i, u += p.du, v += p.dv) {
-                const int32_t value = static_cast<int32_t>(values[i]);
-                const int s = out[i].x;
-                const uint32_t r = static_cast<uint32_t>(out[i].y);
-                out[i].x = detail::scale16(u + value * p.hu, r, s);
-                out[i].y = detail::scale16(v + value * p.hv, r, s + p.dvu);
-            }
+        } else {
+            row_passes_any(values, p);
         }
     }
 
@@ -364,29 +265,7 @@ private:
             return false;
         LevelKnot knots[kLevelKnots];
         int e_max = 0;
-        for (int32_t j = 0, w = w0, v = v0; j < kLevelKnots; ++j, w += dw, v += dv) {
-            uint32_t wn = static_cast<uint32_t>(w) << n0_;
-            int ej = n0_;
-            while ((wn >> 29) == 0) {
-                wn <<= 1;
-                ++ej;
-            }
-            const int sy = 31 - ej - dv_;
-            if (31 - ej - du_ < 7 || sy < 7 || sy > 31) return false;
-            const uint32_t r = detail::recip45(wn);
-            knots[j] = {static_cast<int32_t>(r), ej, detail::scale16(v, r, sy), 0};  // Y exactly, as project() gives it
-            e_max = max(e_max, ej);
-        }
-        // One shift for X (r <= 2^16 kept), then offsets and steps from the next knot.
-        int32_t next_r = 0, next_y = 0;
-        for (int32_t j = kLevelKnots - 1; j >= 0; --j) {
-            LevelKnot& kn = knots[j];
-            const int32_t rj = kn.ar >> (e_max - kn.dr), yj = kn.ay;
-            const int32_t dr = j < kLevelKnots - 1 ? next_r - rj : 0, dy = j < kLevelKnots - 1 ? next_y - yj : 0;
-            kn = {(rj - j * dr) * kStep, dr, (yj - j * dy) * kStep, dy};
-            next_r = rj;
-            next_y = yj;
-        }
+        if (!make_level_knots(w0, v0, dw, dv, n0_, du_, dv_, knots, e_max)) return false;
         LevelPass p;
         p.values = values;
         p.out = out;
@@ -404,25 +283,6 @@ private:
     /// (value - value_min) >> value_shift, below 2^15, for value in [value_min, value_max].
     int32_t reduce(int32_t value) const {
         return static_cast<int32_t>((static_cast<uint32_t>(value) - static_cast<uint32_t>(surface_.value_min)) >> value_shift_);
-    }
-
-    /// scale16(u, r, s) for any s (points very close to the near plane, or a far-off surface), clamped
-    /// to +-kPointLimit.
-    static int32_t scale_slow(int32_t u, uint32_t r, int s, RowCounts& counts) {
-        const int64_t p = int64_t{u >> 14} * r;
-        if (s > 62) return p < 0 ? -1 : 0;
-        int64_t q;
-        if (s >= 0) {
-            q = p >> s;
-        } else {
-            const int64_t room = int64_t{kPointLimit} >> min(-s, 40);
-            q = (p >= room || p <= -room) ? (p < 0 ? -int64_t{kPointLimit} - 1 : int64_t{kPointLimit} + 1) : p * (int64_t{1} << -s);
-        }
-        if (q > kPointLimit || q < -kPointLimit) {
-            ++counts.points_clamped;
-            return q < 0 ? -kPointLimit : kPointLimit;
-        }
-        return static_cast<int32_t>(q);
     }
 
     Surface surface_{};

@@ -6,7 +6,7 @@
 // they are Thumb-1 loops that keep it in registers. The results are identical (firmware/horizoncheck
 // compares them on random rows); project.hpp decides when the passes apply.
 #pragma once
-#include <hider/horizon/horizon.hpp>
+#include <hider/horizon/point.hpp>
 
 namespace hider::horizon {
 
@@ -205,6 +205,32 @@ __attribute__((naked, noinline)) inline void coordinate_pass_v6m(const RowPass*)
         "pop    {r4-r7, pc}\n");
 }
 #endif
+
+/// The portable passes over heights of any integer type T (p.values unused).
+template <class T>
+void row_passes_any(const T* values, const RowPass& p) {
+    uint32_t w = static_cast<uint32_t>(p.w);
+    PlotPoint* const out = p.out;
+    const int32_t n = static_cast<int32_t>(p.out_end - p.out);
+    for (int32_t i = 0; i < n; ++i, w += static_cast<uint32_t>(p.dw)) {
+        uint32_t wn = w + static_cast<uint32_t>(static_cast<int32_t>(values[i]) * p.hw);
+        int32_t s = p.s0;
+        while ((wn >> 29) == 0) {
+            wn <<= 1;
+            --s;
+        }
+        out[i].x = s;
+        out[i].y = static_cast<int32_t>(detail::recip45(wn));
+    }
+    int32_t u = p.u, v = p.v;
+    for (int32_t i = 0; i < n; ++i, u += p.du, v += p.dv) {
+        const int32_t value = static_cast<int32_t>(values[i]);
+        const int s = out[i].x;
+        const uint32_t r = static_cast<uint32_t>(out[i].y);
+        out[i].x = detail::scale16(u + value * p.hu, r, s);
+        out[i].y = detail::scale16(v + value * p.hv, r, s + p.dvu);
+    }
+}
 
 /// Both passes (Thumb-1 on ARMv6-M, else the portable loops).
 inline void run_row_passes(const RowPass& p) {
