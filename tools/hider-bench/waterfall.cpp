@@ -74,6 +74,7 @@ int waterfall_command(const Args& args) {
         if (args[i] == "--build-root") root = option_value(args, i);
         else fail("waterfall: unknown argument '" + args[i] + "'");
     }
+    root = fs::absolute(root);  // run.sh runs in another directory
     const char* const firmware[] = {"waterfall_mono", "waterfall_projection", "waterfall_colour"};
     std::vector<std::string> presets;
     for (const char* preset : kPresets) {
