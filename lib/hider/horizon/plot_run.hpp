@@ -243,7 +243,7 @@ private:
             const Surface& s = s_;
             const int64_t origin = kCurves ? s.z0.raw() : s.x0.raw(), delta = kCurves ? s.dz.raw() : s.dx.raw();
             const int64_t eye = kCurves ? proj_.eye_z_raw() : proj_.eye_x_raw();
-            const int64_t t = ((eye - origin - prev_a_ * delta) << 16) / (int64_t{a - prev_a_} * delta);
+            const int64_t t = (eye - origin - prev_a_ * delta) * 65536 / (int64_t{a - prev_a_} * delta);
             ha = detail::lerp(ha, proj_.at(sample_i(a, b), curve_k(a, b), vb),
                               static_cast<int32_t>(clamp<int64_t>(t, 0, 65536)));
             pa = proj_.project(ha, c);
