@@ -1,23 +1,83 @@
-# Fails the build if lib/ includes anything but <stdint.h>, <stddef.h>, <limits.h> or its own headers,
-# or mentions float/double outside comments.
+# Fails the build if lib/ is not freestanding or breaks its layering:
+#  * only <stdint.h>, <stddef.h>, <limits.h> and hider's own headers, no float/double outside comments;
+#  * the include direction core (lib/hider/*.hpp) <- raster/ <- the parts (sort/, bsp/, ray/, horizon/):
+#    core includes only core, raster/ only core and raster/, a part only core, raster/ and itself;
+#  * no part uses another part's detail:: names: a detail::NAME used in a folder must be declared in a
+#    namespace detail block of that same folder (core counts as one folder).
+cmake_policy(VERSION 3.25)
 file(GLOB_RECURSE files ${ROOT}/hider/*.hpp)
 set(bad "")
+
+# The folder ("core", "raster", "sort", ...) of a header path.
+function(_hider_part path out)
+  file(RELATIVE_PATH rel ${ROOT}/hider ${path})
+  if(rel MATCHES "^([^/]+)/")
+    set(${out} ${CMAKE_MATCH_1} PARENT_SCOPE)
+  else()
+    set(${out} core PARENT_SCOPE)
+  endif()
+endfunction()
+
+# Pass 1: the text of every `namespace detail {` block per folder, with detail:: uses removed (so a
+# block that calls another folder's detail function does not count as declaring it).
+set(_parts "")
 foreach(f IN LISTS files)
+  _hider_part(${f} part)
+  list(APPEND _parts ${part})
+  file(READ ${f} text)
+  set(decl "")
+  while(TRUE)
+    string(FIND "${text}" "namespace detail {" start)
+    if(start EQUAL -1)
+      break()
+    endif()
+    string(SUBSTRING "${text}" ${start} -1 rest)
+    string(FIND "${rest}" "}  // namespace detail" stop)
+    if(stop EQUAL -1)
+      string(APPEND bad "${f}: namespace detail without its closing '}  // namespace detail'\n")
+      break()
+    endif()
+    string(SUBSTRING "${rest}" 0 ${stop} block)
+    string(REGEX REPLACE "detail::[A-Za-z_][A-Za-z0-9_]*" "" block "${block}")
+    string(APPEND decl "${block}\n")
+    math(EXPR next "${stop} + 1")
+    string(SUBSTRING "${rest}" ${next} -1 text)
+  endwhile()
+  string(APPEND _detail_${part} "${decl}")
+endforeach()
+
+# Pass 2: includes, float/double, detail:: uses.
+foreach(f IN LISTS files)
+  _hider_part(${f} part)
   file(STRINGS ${f} lines)
   set(n 0)
   foreach(line IN LISTS lines)
     math(EXPR n "${n}+1")
     if(line MATCHES "^[ \t]*#[ \t]*include[ \t]*<([^>]*)>")
-      if(NOT CMAKE_MATCH_1 MATCHES "^(stdint\\.h|stddef\\.h|limits\\.h|hider/.*)$")
-        string(APPEND bad "${f}:${n}: forbidden include <${CMAKE_MATCH_1}>\n")
+      set(inc ${CMAKE_MATCH_1})
+      if(NOT inc MATCHES "^(stdint\\.h|stddef\\.h|limits\\.h|hider/.*)$")
+        string(APPEND bad "${f}:${n}: forbidden include <${inc}>\n")
+      elseif(inc MATCHES "^hider/")
+        _hider_part(${ROOT}/${inc} target)
+        if(NOT target STREQUAL "core" AND NOT target STREQUAL part AND NOT (target STREQUAL "raster" AND NOT part STREQUAL "core"))
+          string(APPEND bad "${f}:${n}: <${inc}>: ${part} may include only core, raster/ and its own folder (core <- raster <- parts)\n")
+        endif()
       endif()
     endif()
     string(REGEX REPLACE "//.*$" "" code "${line}")
     if(code MATCHES "(^|[^A-Za-z0-9_])(float|double)([^A-Za-z0-9_]|$)")
       string(APPEND bad "${f}:${n}: float/double in lib/\n")
     endif()
+    string(REGEX MATCHALL "detail::[A-Za-z_][A-Za-z0-9_]*" uses "${code}")
+    foreach(use IN LISTS uses)
+      string(REPLACE "detail::" "" name "${use}")
+      if(NOT "${_detail_${part}}" MATCHES "(^|[^A-Za-z0-9_:])${name}([^A-Za-z0-9_]|$)")
+        string(APPEND bad "${f}:${n}: ${use} is not declared in a detail namespace of ${part}/ (use the other part's public API)\n")
+      endif()
+    endforeach()
   endforeach()
 endforeach()
 if(bad)
-  message(FATAL_ERROR "lib/ is not freestanding:\n${bad}")
+  message(NOTICE "${bad}")  # unwrapped, one violation a line
+  message(FATAL_ERROR "lib/ is not freestanding or breaks its layering (violations above)")
 endif()

@@ -90,7 +90,7 @@ function(hider_add_firmware)
 
   add_executable(${FW_NAME} ${FW_SOURCES})
   target_link_libraries(${FW_NAME} PRIVATE hider_fw_runtime hider::hider hider_port_display ${FW_LIBRARIES})
-  target_compile_options(${FW_NAME} PRIVATE ${HIDER_WARNINGS})
+  hider_target_flags(${FW_NAME})
 
   _hider_memory_map(${FW_MACHINE} defsyms)
   list(APPEND defsyms __stack_size=${FW_STACK_SIZE})
@@ -103,6 +103,7 @@ function(hider_add_firmware)
 
   set(scripts ${CMAKE_CURRENT_FUNCTION_LIST_DIR})
   get_target_property(runtime_dir hider_fw_runtime BINARY_DIR)
+  get_target_property(semihost_dir hider_port_semihost BINARY_DIR)
   set(post_build)
   if(NOT FW_NO_SYMBOL_CHECK)
     list(APPEND post_build COMMAND sh ${scripts}/check_firmware_symbols.sh ${CMAKE_NM} $<TARGET_FILE:${FW_NAME}> --delete-on-failure)
@@ -110,7 +111,8 @@ function(hider_add_firmware)
   list(APPEND post_build
     COMMAND ${HIDER_SIZE} $<TARGET_FILE:${FW_NAME}>
     COMMAND sh ${scripts}/check_firmware_stack.sh ${FW_NAME} ${PROJECT_SOURCE_DIR}/lib ${FW_STACK_LIMIT}
-            ${CMAKE_CURRENT_BINARY_DIR}/CMakeFiles/${FW_NAME}.dir ${runtime_dir}/CMakeFiles/hider_fw_runtime.dir)
+            ${CMAKE_CURRENT_BINARY_DIR}/CMakeFiles/${FW_NAME}.dir ${runtime_dir}/CMakeFiles/hider_fw_runtime.dir
+            ${semihost_dir}/CMakeFiles/hider_port_semihost.dir)
   add_custom_command(TARGET ${FW_NAME} POST_BUILD ${post_build} VERBATIM)
 
   string(TOUPPER ${FW_MACHINE} machine_upper)

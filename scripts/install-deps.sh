@@ -1,12 +1,19 @@
 #!/usr/bin/env bash
-# Installs the Debian packages hider needs that are missing. Usage: install-deps.sh host|all
+# Installs the Debian packages hider needs that are missing. Usage: install-deps.sh host|web|all
 #   host: compiler, CMake, Ninja (enough to render the demo)
-#   all:  also doctest, valgrind, the ARM and RISC-V cross compilers and QEMU (every test)
+#   web:  host + clang 14 for wasm32-wasi (wasi-libc, libc++ and compiler-rt for wasm32, lld) and python3:
+#         builds and serves the web playground (scripts/demo.sh --web)
+#   all:  host + web + doctest, valgrind, the ARM and RISC-V cross compilers, QEMU and Chromium (every test)
 set -euo pipefail
 want=(g++ cmake ninja-build)
-if [ "${1:-all}" = all ]; then
-  want+=(doctest-dev valgrind gcc-arm-none-eabi gcc-riscv64-unknown-elf qemu-system-arm qemu-system-misc)
-fi
+web=(clang-14 lld-14 wasi-libc libc++-14-dev-wasm32 libc++abi-14-dev-wasm32 libclang-rt-14-dev-wasm32 python3)
+case "${1:-all}" in
+  host) ;;
+  web) want+=("${web[@]}") ;;
+  all) want+=("${web[@]}" doctest-dev valgrind gcc-arm-none-eabi gcc-riscv64-unknown-elf qemu-system-arm
+              qemu-system-misc chromium) ;;
+  *) echo "usage: install-deps.sh host|web|all" >&2; exit 2 ;;
+esac
 missing=()
 for p in "${want[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

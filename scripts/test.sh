@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what is missing and runs every test: host build + tests, the same under ASan/UBSan,
+# Installs what is missing and runs every test: host build + tests (with the consumer examples and the
+# web playground in headless Chromium), the same under ASan/UBSan,
 # the three cross builds (Cortex-M0+, Cortex-M3, RV32IMAC) with their firmware under QEMU.
 set -euo pipefail
 cd "$(dirname "$0")/.."

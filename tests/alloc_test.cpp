@@ -2,6 +2,7 @@
 // (view, vertex projection, clear, z-buffer draw, band by band) must not call it.
 #include <hider/horizon/plot.hpp>
 #include <hider/raster/zbuffer.hpp>
+#include <hider/ray/cast.hpp>
 
 #include <cstdlib>
 #include <new>
@@ -9,6 +10,8 @@
 
 #include <doctest/doctest.h>
 
+#include "common/bvh_build.hpp"
+#include "common/ray_scene.hpp"
 #include "support/scene_util.hpp"
 
 namespace {
@@ -98,4 +101,32 @@ TEST_CASE("a floating-horizon plot makes no heap allocation") {
     CHECK(g_allocations == before);
     CHECK(r.ok());
     CHECK(r.pixels > 100);
+}
+
+TEST_CASE("ray tracing and ray casting a frame make no heap allocation") {
+    tool::RayScene scene;
+    std::string why;
+    REQUIRE_MESSAGE(tool::load_ray_scene(std::string(HIDER_TEST_DATA) + "/scenes/spheres.txt", scene, why), why);
+    const tool::Scene torus = test::load_model("torus.obj");
+    tool::BakedBvh bvh;
+    REQUIRE(tool::build_bvh(torus.mesh(), bvh, why));
+    std::vector<ray::BvhStackEntry> stack(64);
+    std::vector<ray::SphereRect> rects(scene.spheres.size());
+    std::vector<uint16_t> row(320);
+    const ray::Scene s = scene.view();
+    const long before = g_allocations;
+    ray::PrimaryRays rays;
+    REQUIRE(ray::make_primary_rays(scene.camera, 160, 128, rays) == Status::ok);
+    REQUIRE(ray::validate_scene(s, {stack.data(), stack.size()}) == Status::ok);
+    REQUIRE(ray::sphere_rects(s, rays, {rects.data(), rects.size()}) == Status::ok);
+    uint32_t hits = 0;
+    for (int y = 0; y < 128; ++y)
+        hits += ray::trace_row<Rgb565Format>(s, rays, y, row.data(), {stack.data(), stack.size()}, {rects.data(), rects.size()}).hits;
+    ray::PrimaryRays cast_rays;
+    REQUIRE(ray::make_primary_rays(torus.camera, 320, 240, cast_rays) == Status::ok);
+    REQUIRE(ray::validate_bvh(bvh.view(), torus.mesh(), {stack.data(), stack.size()}) == Status::ok);
+    for (int y = 0; y < 240; ++y)
+        hits += ray::cast_row<Rgb565Format>(cast_rays, torus.mesh(), bvh.view(), DrawOptions{}, {0, 0, 0}, y, row.data(), {stack.data(), stack.size()}).hits;
+    CHECK(g_allocations == before);
+    CHECK(hits > 20000);
 }

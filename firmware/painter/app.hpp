@@ -4,6 +4,7 @@
 // depth buffer, each band streamed through spin::PpmSink. Same driver sequence as tools/common/render.cpp.
 #pragma once
 #include <hider/sort/newell.hpp>
+#include <hider/sort/painter.hpp>
 #include <hider/sort/reverse.hpp>
 
 #include "common/bench.hpp"
@@ -40,6 +41,8 @@ inline hider::DrawOptions draw_options() {
 struct Buffers {
     hider::Span<hider::ScreenVertex> verts;  ///< one per mesh vertex
     hider::Span<hider::ScreenPoly> polys;    ///< pool: the built triangles plus room for Newell's cuts
+    hider::Span<hider::PieceCut> cuts;       ///< two per cut Newell may make
+    hider::NewellScratch newell;             ///< heap, positions, grid links and cells, chain
     hider::Span<uint32_t> order;             ///< >= polys.size()
     hider::Span<hider::SortKey> keys;        ///< >= polys.size()
     hider::Span<hider::SortKey> scratch;     ///< >= polys.size()
@@ -48,11 +51,18 @@ struct Buffers {
     int32_t rows;                            ///< rows per band
 };
 
-/// Storage for a scene of kVertices vertices at kWidth pixels wide, with a pool of kPolys polygons.
-template <size_t kVertices, size_t kPolys, int32_t kWidth, int32_t kRows = kBandRows>
+/// Storage for a scene of kVertices vertices in a kWidth x kHeight frame, with a pool of kPolys polygons
+/// of which kCutRoom are room for Newell's cuts.
+template <size_t kVertices, size_t kPolys, size_t kCutRoom, int32_t kWidth, int32_t kHeight, int32_t kRows = kBandRows>
 struct Storage {
     hider::ScreenVertex verts[kVertices];
     hider::ScreenPoly polys[kPolys];
+    hider::PieceCut cuts[2 * kCutRoom];
+    uint32_t heap[kPolys];
+    uint32_t heap_pos[kPolys];
+    uint32_t links[2 * kPolys];
+    uint32_t cells[hider::grid_cells(kWidth, kHeight)];
+    uint32_t chain[kPolys];
     uint32_t order[kPolys];
     hider::SortKey keys[kPolys];
     hider::SortKey scratch[kPolys];
@@ -60,7 +70,7 @@ struct Storage {
     uint32_t coverage[hider::coverage_words(kWidth) * kRows];
     uint8_t ppm_row[kWidth * 3];
 
-    Buffers buffers() { return {verts, polys, order, keys, scratch, color, coverage, kRows}; }
+    Buffers buffers() { return {verts, polys, cuts, {heap, heap_pos, links, cells, chain}, order, keys, scratch, color, coverage, kRows}; }
 };
 
 /// What one render did. `stats` sums the bands (triangle counts are per band setup).
@@ -84,10 +94,10 @@ inline uint32_t bits_set(const uint32_t* words, size_t n) {
     return count;
 }
 
-/// View, projection, screen triangles and the painting order of `algo` into polys/order.
+/// View, projection, screen triangles and the painting order of `algo` into polys/cuts/order.
 inline hider::Status build_order(const spin::Scene& s, Algo algo, const Buffers& buf, hider::View& view,
-                                 hider::BoundedList<hider::ScreenPoly>& polys, hider::BoundedList<uint32_t>& order,
-                                 Result& r) {
+                                 hider::BoundedList<hider::ScreenPoly>& polys, hider::BoundedList<hider::PieceCut>& cuts,
+                                 hider::BoundedList<uint32_t>& order, Result& r) {
     hider::Status st = hider::make_view(s.camera, s.width, s.height, view);
     if (st == hider::Status::ok) st = hider::project_vertices(view, s.mesh.positions, buf.verts);
     if (st != hider::Status::ok) return st;
@@ -95,10 +105,13 @@ inline hider::Status build_order(const spin::Scene& s, Algo algo, const Buffers&
     hider::build_polys(view, s.mesh, buf.verts, draw_options().cull, polys, fs);
     const size_t built = polys.size();
     r.polygons_built = static_cast<uint32_t>(built);
-    for (size_t i = 0; i < built; ++i) (void)order.push_back(0);  // room; painter_order fills it
-    st = hider::painter_order({polys.data(), built}, hider::DepthKey::farthest, {buf.keys.data(), built},
-                              {buf.scratch.data(), built}, {order.data(), built});
-    if (st == hider::Status::ok && algo != Algo::painter) st = hider::newell_order(polys, order, r.newell);
+    if (algo != Algo::painter) {
+        st = hider::newell_order(view, polys, cuts, buf.newell, order, r.newell);
+    } else {
+        for (size_t i = 0; i < built; ++i) (void)order.push_back(0);  // room; painter_order fills it
+        st = hider::painter_order({polys.data(), built}, hider::DepthKey::farthest, {buf.keys.data(), built},
+                                  {buf.scratch.data(), built}, {order.data(), built});
+    }
     r.polygons = static_cast<uint32_t>(order.size());
     return fs.status != hider::Status::ok ? fs.status : st;
 }
@@ -107,15 +120,17 @@ inline hider::Status build_order(const spin::Scene& s, Algo algo, const Buffers&
 /// the pixels it wrote are exactly the coverage bits it set (outside the measured region).
 inline hider::FrameStats paint_band(const spin::Scene& s, Algo algo, const Buffers& buf, const hider::View& view,
                                     const hider::BoundedList<hider::ScreenPoly>& polys,
+                                    const hider::BoundedList<hider::PieceCut>& cuts,
                                     const hider::BoundedList<uint32_t>& order, int32_t y0, int32_t y1, Result& r) {
     const auto band = hider::band_view<hider::Rgb565Format, uint16_t>(buf.color.data(), nullptr, s.width, s.height, y0, y1);
     const hider::Span<const hider::ScreenPoly> p{polys.data(), polys.size()};
+    const hider::Span<const hider::PieceCut> c{cuts.data(), cuts.size()};
     const hider::Span<const uint32_t> o{order.data(), order.size()};
     bench_begin();
     hider::clear(band, spin::kBackground);
     const hider::FrameStats st = algo == Algo::reverse
-                                     ? hider::paint_front_to_back(view, s.mesh, p, o, band, draw_options(), buf.coverage)
-                                     : hider::paint_in_order<true>(view, s.mesh, p, o, band, draw_options());
+                                     ? hider::paint_front_to_back(view, s.mesh, p, c, o, band, draw_options(), buf.coverage)
+                                     : hider::paint_in_order<true>(view, s.mesh, p, c, o, band, draw_options());
     bench_end();
     if (algo == Algo::reverse) {
         const uint32_t set = bits_set(buf.coverage.data(), static_cast<size_t>(hider::coverage_words(s.width)) * band.rows());
@@ -141,16 +156,17 @@ inline Result render_in_bands(const spin::Scene& s, Algo algo, const Buffers& bu
         return r;
     }
     hider::BoundedList<hider::ScreenPoly> polys(buf.polys.data(), pool);
+    hider::BoundedList<hider::PieceCut> cuts(buf.cuts.data(), buf.cuts.size());
     hider::BoundedList<uint32_t> order(buf.order.data(), pool);
     hider::View view;
     bench_begin();
-    r.stats.status = detail::build_order(s, algo, buf, view, polys, order, r);
+    r.stats.status = detail::build_order(s, algo, buf, view, polys, cuts, order, r);
     bench_end();
     if (!r.stats.ok() && r.stats.status != hider::Status::capacity_exceeded) return r;  // a full pool still draws
     r.sink_ok = sink.begin_frame(sink.user, static_cast<uint16_t>(s.width), static_cast<uint16_t>(s.height));
     for (int32_t y0 = 0; y0 < s.height && r.sink_ok; y0 += buf.rows) {
         const int32_t y1 = hider::min(s.height, y0 + buf.rows);
-        r.stats.merge(detail::paint_band(s, algo, buf, view, polys, order, y0, y1, r));
+        r.stats.merge(detail::paint_band(s, algo, buf, view, polys, cuts, order, y0, y1, r));
         r.sink_ok = sink.write_rows(sink.user, static_cast<uint16_t>(y0), static_cast<uint16_t>(y1 - y0), buf.color.data(),
                                     static_cast<uint32_t>(s.width));
     }
@@ -176,7 +192,7 @@ void print_result(Io& io, Algo algo, const Result& r) {
     io.print("\n");
     if (algo != Algo::painter) {
         io.print("newell: pair tests ");
-        io.print_u32(r.newell.pair_tests);
+        io.print_u32(static_cast<uint32_t>(r.newell.pair_tests));
         io.print(", moves ");
         io.print_u32(r.newell.moves);
         io.print(", splits ");

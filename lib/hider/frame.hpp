@@ -9,7 +9,7 @@ namespace hider {
 /// A colour with 8 bits per channel; what shading produces before packing.
 struct Rgb {
     uint8_t r, g, b;
-    friend constexpr bool operator==(Rgb a, Rgb b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+    friend constexpr bool operator==(Rgb x, Rgb y) { return x.r == y.r && x.g == y.g && x.b == y.b; }
 };
 
 /// RGB888 storage: 3 bytes, r first (the byte order of a PPM).
@@ -26,7 +26,8 @@ struct Rgb565Format {
     }
     /// Expands by bit replication, so 0 -> 0 and 31 -> 255.
     static constexpr Rgb unpack(Pixel p) {
-        const uint8_t r = (p >> 11) & 31, g = (p >> 5) & 63, b = p & 31;
+        const auto r = static_cast<uint8_t>((p >> 11) & 31), g = static_cast<uint8_t>((p >> 5) & 63),
+                   b = static_cast<uint8_t>(p & 31);
         return {static_cast<uint8_t>((r << 3) | (r >> 2)), static_cast<uint8_t>((g << 2) | (g >> 4)),
                 static_cast<uint8_t>((b << 3) | (b >> 2))};
     }

@@ -1,6 +1,6 @@
 // A triangle mesh as lib/ draws it: world-space Q16 positions, triangles of uint16 indices, and per
 // triangle an optional unit normal (Q14, for headlight shading) and face id. Baked data is checked
-// once by validate(); the drawing code then trusts indices. Vertex projection fills a caller array.
+// once by validate(); the drawing code then trusts indices (raster/vertices.hpp projects the positions).
 #pragma once
 #include <hider/view.hpp>
 
@@ -36,47 +36,6 @@ inline Status validate(const Mesh& m) {
         const int32_t c[3] = {p.x.raw(), p.y.raw(), p.z.raw()};
         for (int32_t e : c)
             if (e <= -kWorldLimitRaw || e >= kWorldLimitRaw) return Status::out_of_range;
-    }
-    return Status::ok;
-}
-
-/// Smallest and largest depth among drawable projected vertices (for depth shading).
-struct DepthRange {
-    uint32_t min = kDepthFar, max = kDepthNear;
-};
-
-/// Transforms and projects every position into `out` (same index); vertices outside a clip plane are
-/// marked (ScreenVertex::outside()) and clipped per triangle later. Returns invalid_argument if out is
-/// too small. Precondition: validate(mesh) == ok. Cost per vertex: the transform (nine 32x32->64
-/// products, or 36 32-bit multiplies on ARMv6-M), clip codes, and three quotients by w (one reciprocal
-/// on ARMv6-M, one 32-bit division for each screen coordinate where the CPU divides).
-inline Status project_vertices(const View& view, Span<const Vec3q16> positions, Span<ScreenVertex> out,
-                               DepthRange* range = nullptr) {
-    if (out.size() < positions.size()) return Status::invalid_argument;
-    const PreparedTransform to_view(view.to_view);
-    for (size_t i = 0; i < positions.size(); ++i) {
-        const ViewPoint p = to_view_point(to_view, positions[i]);
-        const ScaledXY xy = scaled_xy(view, p);
-        const uint8_t code = outcode(view, p, xy);
-        if (code != 0) {
-            out[i].mark_outside(code);
-            continue;
-        }
-        const ScreenVertex s = project(view, p, xy);
-        ScreenVertex& o = out[i];  // field by field: a whole-struct copy became a 9-byte memcpy call on ARMv6-M
-        o.x = s.x;
-        o.y = s.y;
-        o.z = s.z;
-    }
-    if (range != nullptr) {  // a second pass, so frames without depth shading do not pay for it
-        DepthRange r;
-        for (size_t i = 0; i < positions.size(); ++i) {
-            const uint32_t z = out[i].z;
-            if (z == 0) continue;  // outside a clip plane
-            r.min = min(r.min, z);
-            r.max = max(r.max, z);
-        }
-        *range = r;
     }
     return Status::ok;
 }

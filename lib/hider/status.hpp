@@ -32,7 +32,8 @@ struct [[nodiscard]] FrameStats {
                                      ///< counts those whose first row it holds, so bands add up
     uint32_t triangles_culled = 0;   ///< back faces removed (counted like triangles_drawn)
     uint32_t triangles_clipped = 0;  ///< triangles that needed near/far/guard clipping
-    uint32_t triangles_outside = 0;  ///< wholly outside one clip plane
+    uint32_t triangles_outside = 0;  ///< wholly outside one clip plane (sorted algorithms: or no pixel centre)
+    uint32_t triangles_degenerate = 0;  ///< zero area on the screen (sorted algorithms)
     uint32_t fragments = 0;          ///< pixel centres covered (z-buffer: counted by draw_zbuffer<true> only)
     uint32_t pixels_written = 0;     ///< colour writes (only counted when the variant counts them)
 
@@ -45,6 +46,7 @@ struct [[nodiscard]] FrameStats {
         triangles_culled += o.triangles_culled;
         triangles_clipped += o.triangles_clipped;
         triangles_outside += o.triangles_outside;
+        triangles_degenerate += o.triangles_degenerate;
         fragments += o.fragments;
         pixels_written += o.pixels_written;
     }

@@ -1,11 +1,11 @@
-// Camera and projection: world -> view (gluLookAt), the clip tests against near, far and the x/y guard
-// band in homogeneous view space, and projection of a view-space point to a ScreenVertex.
+// Camera and projection: world -> view (gluLookAt) and projection of a view-space point to a ScreenVertex.
+// The clip tests against near, far and the guard band live with the clipper (raster/clip.hpp).
 // Units: positions Q16; w = -z_view (distance along the view axis); screen in 1/16 pixel from the centre.
 // Depth z = kDepthNear + (kDepthFar - kDepthNear) (1 - n/w) / (1 - n/f): affine in screen space (1/w).
 #pragma once
 #include <hider/frame.hpp>
 #include <hider/mat.hpp>
-#include <hider/raster/triangle.hpp>
+#include <hider/screen.hpp>
 
 namespace hider {
 
@@ -35,12 +35,6 @@ struct View {
 struct ViewPoint {
     int32_t x, y, w;
 };
-
-/// Clip planes (bits of ScreenVertex::outside).
-enum ClipPlane : uint8_t {
-    kClipNear = 1, kClipFar = 2, kClipLeft = 4, kClipRight = 8, kClipTop = 16, kClipBottom = 32,
-};
-constexpr int kClipPlaneCount = 6;
 
 /// Checks the camera and frame size and builds the view. Errors: invalid_argument (size, fov,
 /// near/far order, eye == target, up parallel to the view), out_of_range (eye/target outside the world range).
@@ -86,26 +80,10 @@ __attribute__((always_inline)) inline ViewPoint to_view_point(const View& v, Vec
     return {q.x.raw(), q.y.raw(), -q.z.raw()};
 }
 
-/// w kGuardBand 256 (|X| <= G  <=>  |x k| <= G w 256), one 32x32->64 product.
-inline int64_t guard_of(int32_t w) { return mul_wide(w, kGuardBand * 256); }
-
 /// to_view_point() through a PreparedTransform of v.to_view (many points, one view).
 __attribute__((always_inline)) inline ViewPoint to_view_point(const PreparedTransform& t, const Vec3q16& p) {
     const Vec3q16 q = t.apply(p);
     return {q.x.raw(), q.y.raw(), -q.z.raw()};
-}
-
-/// Signed distance of p to clip plane `plane` (one bit), >= 0 inside; exact in int64.
-inline int64_t clip_distance(const View& v, const ViewPoint& p, uint8_t plane) {
-    const int64_t guard = guard_of(p.w);
-    switch (plane) {
-        case kClipNear: return int64_t{p.w} - v.near_raw;
-        case kClipFar: return int64_t{v.far_raw} - p.w;
-        case kClipLeft: return guard + mul_wide(p.x, v.k_q8);
-        case kClipRight: return guard - mul_wide(p.x, v.k_q8);
-        case kClipTop: return guard - mul_wide(p.y, v.k_q8);
-        default: return guard + mul_wide(p.y, v.k_q8);
-    }
 }
 
 /// The products x k and y k of a view point, which the clip tests and the projection both need.
@@ -113,20 +91,6 @@ struct ScaledXY {
     int64_t xk, yk;
 };
 inline ScaledXY scaled_xy(const View& v, const ViewPoint& p) { return {mul_wide(p.x, v.k_q8), mul_wide(p.y, v.k_q8)}; }
-
-/// The set of clip planes p lies outside of (0 = inside the view volume and the guard band).
-inline uint8_t outcode(const View& v, const ViewPoint& p, const ScaledXY& s) {
-    uint8_t code = 0;
-    if (p.w < v.near_raw) code |= kClipNear;
-    if (p.w > v.far_raw) code |= kClipFar;
-    const int64_t guard = guard_of(p.w);
-    if (s.xk < -guard) code |= kClipLeft;
-    if (s.xk > guard) code |= kClipRight;
-    if (s.yk > guard) code |= kClipTop;
-    if (s.yk < -guard) code |= kClipBottom;
-    return code;
-}
-inline uint8_t outcode(const View& v, const ViewPoint& p) { return outcode(v, p, scaled_xy(v, p)); }
 
 namespace detail {
 /// div_round(n, 256 w) for w > 0: |n| / (256 w) rounded half away from zero is

@@ -1,9 +1,11 @@
 // Host port: PPM (P6) file writing and reading.
 #include "host/ppm.hpp"
 
+#include <sys/stat.h>
+
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -25,8 +27,10 @@ bool write_file(const std::string& path, const std::vector<uint8_t>& bytes, std:
     f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
     f.close();
     if (!f) {
-        std::error_code ignored;  // a truncated file holds a partial image: do not leave it behind
-        if (std::filesystem::is_regular_file(path, ignored)) std::filesystem::remove(path, ignored);
+        // A truncated file holds a partial image: do not leave it behind (but never unlink a device).
+        // POSIX stat rather than <filesystem>, which the WebAssembly build's libc++ lacks.
+        struct stat st {};
+        if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) std::remove(path.c_str());
         error = path + ": write failed";
         return false;
     }

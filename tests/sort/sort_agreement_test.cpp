@@ -33,6 +33,7 @@ const char* name_of(tool::Algo a) {
         case tool::Algo::painter: return "painter";
         case tool::Algo::newell: return "newell";
         case tool::Algo::reverse: return "reverse";
+        case tool::Algo::raycast: return "raycast";
     }
     return "?";
 }

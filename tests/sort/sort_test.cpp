@@ -44,27 +44,63 @@ TEST_CASE("radix_sort sorts 32-bit keys ascending and stably in O(n)") {
     }
 }
 
-TEST_CASE("a plane classifies its own vertices as on it and splits a straddling triangle into pieces") {
+TEST_CASE("a plane classifies its own vertices as on it and cuts a straddling triangle into two exact pieces") {
     auto sv = [](int x, int y, uint32_t z) { ScreenVertex v; v.x = static_cast<int16_t>(x); v.y = static_cast<int16_t>(y); v.z = z; return v; };
-    ScreenPoly wall{{sv(-800, -800, 1u << 30), sv(800, -800, 1u << 30), sv(0, 800, 1u << 30)}, 0, 0, 0, 0, 0, 0, 0, kNotMoved, 0};
+    ScreenPoly wall{{sv(-800, -800, 1u << 30), sv(800, -800, 1u << 30), sv(0, 800, 1u << 30)}, 0, 0, 0, 0, 0, 0, 3, kNotMoved, kNoCut, 0};
     update_extents(wall);
     const ScreenPlane pl = plane_of(wall);
     for (const ScreenVertex& v : wall.v) CHECK(side(pl, v).sign() == 0);
     CHECK(side(pl, sv(5, 5, (1u << 30) + 1)).sign() > 0);  // farther
     CHECK(side(pl, sv(5, 5, (1u << 30) - 1)).sign() < 0);
-    ScreenPoly stick{{sv(-400, 0, 1u << 29), sv(400, 0, 3u << 29), sv(0, 300, 3u << 29)}, 0, 0, 0, 0, 0, 0, 7, kNotMoved, kPolyFront};
+    const Int128 slack = rounding_slack(pl);
+    CHECK(classify(pl, slack, sv(5, 5, (1u << 30) + 4)) > 0);
+    CHECK(classify(pl, slack, sv(5, 5, (1u << 30) - 4)) < 0);
+    CHECK(classify(pl, slack, sv(5, 5, (1u << 30) + 3)) == 0);  // within the rounding slack of a cut point
+    ScreenPoly stick{{sv(-400, 0, 1u << 29), sv(400, 0, 3u << 29), sv(0, 300, 3u << 29)}, 0, 0, 0, 0, 0, 0, 7, kNotMoved, kNoCut, kPolyFront};
     update_extents(stick);
-    CHECK(side_of(pl, stick) == 0);
-    ScreenPoly pieces[3];
-    const int n = split_by_plane(stick, pl, pieces);
-    CHECK(n == 3);
-    for (int k = 0; k < n; ++k) {
+    Outline whole;
+    outline_of(stick, {}, whole);
+    CHECK(side_of(pl, whole) == 0);
+    std::vector<PieceCut> cuts;
+    ScreenPoly far{}, near{};
+    PieceCut far_cut{}, near_cut{};
+    REQUIRE(cut_polygon(stick, {}, pl, wall.tri, far, near, far_cut, near_cut) == CutResult::cut);
+    far.cut = 0;
+    near.cut = 1;
+    cuts = {far_cut, near_cut};
+    CHECK(far.cut == 0);
+    CHECK(near.cut == 1);
+    CHECK(known_side(far, {cuts.data(), cuts.size()}, wall.tri) == 1);
+    CHECK(known_side(near, {cuts.data(), cuts.size()}, wall.tri) == -1);
+    CHECK(known_side(far, {cuts.data(), cuts.size()}, 99) == 0);
+    const ScreenPoly pieces[2] = {far, near};
+    for (int k = 0; k < 2; ++k) {
         CHECK(pieces[k].tri == 7);
         CHECK(pieces[k].flags == kPolyFront);
-        CHECK(side_of(pl, pieces[k]) != 0);  // every piece lies on one side (within the rounding slack)
-        CHECK((TriangleRaster::signed_area(pieces[k].v[0], pieces[k].v[1], pieces[k].v[2]) > 0) ==
-              (TriangleRaster::signed_area(stick.v[0], stick.v[1], stick.v[2]) > 0));  // winding kept
+        Outline o;
+        outline_of(pieces[k], {cuts.data(), cuts.size()}, o);
+        CHECK(o.count >= 3);
+        CHECK(side_of(pl, o) == (k == 0 ? 1 : -1));  // each piece lies on one side of the plane
     }
+    // The two pieces cover exactly the stick's pixels, each once (a 100x50 frame around it).
+    const int w = 100, h = 50;
+    std::vector<int> count(w * h, 0), want(w * h, 0);
+    FrameView<Grey8Format> frame;
+    frame.width = w;
+    frame.height = h;
+    frame.y0 = 0;
+    frame.y1 = h;
+    const BandBounds bb = band_bounds(frame);
+    auto cover = [&](const ScreenPoly& p, std::vector<int>& c) {
+        with_poly_raster(p, {cuts.data(), cuts.size()}, bb, frame, [&](const auto& r, int32_t y0, int32_t y1) {
+            return r.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t) { for (int32_t x = x0; x < x1; ++x) ++c[y * w + x]; });
+        });
+    };
+    cover(stick, want);
+    cover(far, count);
+    cover(near, count);
+    CHECK(count == want);
+    CHECK(std::count(want.begin(), want.end(), 1) > 100);
 }
 
 TEST_CASE("Newell's cut pool at capacity N finishes the frame exactly; at N - 1 it reports the drop") {
@@ -128,11 +164,31 @@ TEST_CASE("build_polys fills its list to capacity and counts what it drops") {
     CHECK(short_list.high_water() == n - 1);
 }
 
-TEST_CASE("newell_order refuses an order list smaller than the polygon pool") {
+TEST_CASE("newell_order refuses an order list or scratch smaller than the polygon pool") {
+    View view;
+    view.width = 32;
+    view.height = 32;
     std::vector<ScreenPoly> store(10);
-    std::vector<uint32_t> ord(5);
+    std::vector<PieceCut> cut_store(10);
+    std::vector<uint32_t> ord(10), heap(10), pos(10), links(20), cells(grid_cells(32, 32)), chain(10);
     BoundedList<ScreenPoly> polys(store.data(), store.size());
-    BoundedList<uint32_t> order(ord.data(), ord.size());
+    BoundedList<PieceCut> cuts(cut_store.data(), cut_store.size());
+    NewellScratch scratch{{heap.data(), 10}, {pos.data(), 10}, {links.data(), 20}, {cells.data(), cells.size()}, {chain.data(), 10}};
     NewellStats ns;
-    CHECK(newell_order(polys, order, ns) == Status::invalid_argument);
+    BoundedList<uint32_t> order(ord.data(), ord.size());
+    CHECK(newell_order(view, polys, cuts, scratch, order, ns) == Status::ok);
+    BoundedList<uint32_t> short_order(ord.data(), 5);
+    CHECK(newell_order(view, polys, cuts, scratch, short_order, ns) == Status::invalid_argument);
+    NewellScratch short_heap = scratch;
+    short_heap.heap = {heap.data(), 9};
+    CHECK(newell_order(view, polys, cuts, short_heap, order, ns) == Status::invalid_argument);
+    NewellScratch short_links = scratch;
+    short_links.links = {links.data(), 19};
+    CHECK(newell_order(view, polys, cuts, short_links, order, ns) == Status::invalid_argument);
+    NewellScratch short_cells = scratch;
+    short_cells.cells = {cells.data(), cells.size() - 1};
+    CHECK(newell_order(view, polys, cuts, short_cells, order, ns) == Status::invalid_argument);
+    NewellScratch short_chain = scratch;
+    short_chain.chain = {chain.data(), 9};
+    CHECK(newell_order(view, polys, cuts, short_chain, order, ns) == Status::invalid_argument);
 }

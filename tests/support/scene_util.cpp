@@ -88,7 +88,7 @@ std::vector<int> coverage_counts(const tool::Scene& s, bool cull) {
     std::vector<int> counts(static_cast<size_t>(s.width) * s.height, 0);
     FrameStats st;
     for (size_t t = 0; t < mesh.tris.size(); ++t) {
-        detail::for_each_piece(view, mesh, {verts.data(), verts.size()}, t, st,
+        for_each_clipped(view, mesh, {verts.data(), verts.size()}, t, st,
                                [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
                                    const int32_t area = TriangleRaster::signed_area(a, b, c);
                                    if (area == 0 || (cull && area > 0)) return;

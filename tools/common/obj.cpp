@@ -2,12 +2,13 @@
 // chunks so a line is bounded before it is stored, and parses numbers with std::from_chars ("C" syntax).
 #include "common/obj.hpp"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <charconv>
 #include <climits>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <string_view>
@@ -343,8 +344,8 @@ bool parse_obj(std::istream& in, const std::string& name, ObjModel& out, ObjErro
 }
 
 bool load_obj(const std::string& path, ObjModel& out, ObjError& err) {
-    std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored)) {  // a directory opens on Linux, then fails to read
+    struct stat st {};  // POSIX stat: the WebAssembly build's libc++ has no <filesystem>
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {  // a directory opens on Linux, then fails to read
         out = ObjModel{};
         err = ObjError{path, 0, "cannot open file: " + std::string(std::strerror(EISDIR))};
         return false;

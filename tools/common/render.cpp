@@ -1,67 +1,127 @@
 // Host driver: vertex projection once per frame, then the chosen algorithm per band.
 #include "common/render.hpp"
 
+#include "common/render_ray.hpp"
 #include "host/ppm.hpp"
 
 namespace hider::tool {
 namespace {
 
 /// Pixels covered by at least one of the polygons (an independent count for the overdraw figure).
-uint32_t count_covered(const std::vector<ScreenPoly>& polys, int width, int height) {
+uint32_t count_covered(Span<const ScreenPoly> polys, Span<const PieceCut> cuts, int width, int height) {
     std::vector<uint8_t> hit(static_cast<size_t>(width) * height, 0);
+    FrameView<Grey8Format> whole;
+    whole.width = width;
+    whole.height = height;
+    whole.y0 = 0;
+    whole.y1 = height;
+    const BandBounds bb = band_bounds(whole);
     uint32_t n = 0;
-    for (const ScreenPoly& p : polys) {
-        TriangleRaster tr;
-        if (!tr.setup(p.v[0], p.v[1], p.v[2], width, height)) continue;
-        tr.spans(std::max(0, tr.first_row()), std::min(height, tr.end_row()), [&](int32_t y, int32_t x0, int32_t x1, uint32_t) {
-            for (int32_t x = x0; x < x1; ++x) {
-                uint8_t& h = hit[static_cast<size_t>(y) * width + x];
-                n += h == 0;
-                h = 1;
-            }
+    for (const ScreenPoly& p : polys)
+        with_poly_raster(p, cuts, bb, whole, [&](const auto& r, int32_t y0, int32_t y1) {
+            return r.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t) {
+                for (int32_t x = x0; x < x1; ++x) {
+                    uint8_t& h = hit[static_cast<size_t>(y) * width + x];
+                    n += h == 0;
+                    h = 1;
+                }
+            });
         });
-    }
     return n;
+}
+
+/// Storage of one sorted render, what an application would declare statically on a device.
+struct SortedStore {
+    std::vector<ScreenPoly> polys;
+    std::vector<PieceCut> cuts;
+    std::vector<uint32_t> order, heap, heap_pos, links, cells, chain;
+    std::vector<SortKey> keys, scratch;
+};
+
+/// The polygons of `mesh` and their order for opt.algo, with `extra` polygons of room for Newell's
+/// cuts (two cut records each). Fills the lists over `store`; returns the first non-ok status.
+Status order_polygons(const RenderOptions& opt, const View& view, const Mesh& mesh, const std::vector<ScreenVertex>& verts,
+                      size_t extra, SortedStore& store, BoundedList<ScreenPoly>& polys, BoundedList<PieceCut>& cuts,
+                      BoundedList<uint32_t>& order, FrameStats& st, NewellStats& ns) {
+    store.polys.resize(mesh.tris.size() * 7);  // a clipped triangle gives up to 7 pieces
+    polys = BoundedList<ScreenPoly>(store.polys.data(), store.polys.size());
+    build_polys(view, mesh, {verts.data(), verts.size()}, opt.cull, polys, st);
+    const size_t built = polys.size();
+    if (opt.algo == Algo::painter) {
+        store.keys.resize(built);
+        store.scratch.resize(built);
+        store.order.resize(built);
+        order = BoundedList<uint32_t>(store.order.data(), built);
+        for (size_t i = 0; i < built; ++i) order.push_back(0);
+        const Status so = painter_order({polys.data(), built}, opt.painter_key, {store.keys.data(), built},
+                                        {store.scratch.data(), built}, {order.data(), built});
+        cuts = BoundedList<PieceCut>();
+        return so != Status::ok ? so : st.status;
+    }
+    const size_t cap = built + extra;
+    store.polys.resize(std::max(store.polys.size(), cap));
+    BoundedList<ScreenPoly> pool(store.polys.data(), cap);
+    for (size_t i = 0; i < built; ++i) pool.push_back(store.polys[i]);
+    polys = pool;
+    store.cuts.resize(2 * extra);
+    cuts = BoundedList<PieceCut>(store.cuts.data(), store.cuts.size());
+    store.order.resize(cap);
+    store.heap.resize(cap);
+    store.heap_pos.resize(cap);
+    store.chain.resize(cap);
+    store.links.resize(2 * cap);
+    store.cells.resize(grid_cells(view.width, view.height));
+    order = BoundedList<uint32_t>(store.order.data(), cap);
+    const NewellScratch scratch{{store.heap.data(), cap}, {store.heap_pos.data(), cap}, {store.links.data(), 2 * cap},
+                                {store.cells.data(), store.cells.size()}, {store.chain.data(), cap}};
+    NewellOptions nopt;
+    nopt.face_ids = mesh.ids;  // a fanned OBJ face is flat: its triangles need no order among themselves
+    const Status s = newell_order(view, polys, cuts, scratch, order, ns, nopt);
+    return s != Status::ok ? s : st.status;
 }
 
 template <class Format, class Depth>
 bool render_sorted(const Scene& scene, const RenderOptions& opt, const View& view, const Mesh& mesh,
                    const std::vector<ScreenVertex>& verts, const DrawOptions& draw, RenderResult& out) {
-    // Storage the application would declare statically on a device.
-    const size_t extra = opt.algo == Algo::painter ? 0 : (opt.split_pool != 0 ? opt.split_pool : mesh.tris.size() * 16 + 1024);
-    std::vector<ScreenPoly> poly_store(mesh.tris.size() * 7 + extra);  // a clipped triangle gives up to 7 pieces
-    std::vector<uint32_t> order_store(poly_store.size());
-    BoundedList<ScreenPoly> polys(poly_store.data(), poly_store.size());
+    const size_t extra = opt.split_pool != 0 ? opt.split_pool : default_split_pool(mesh.tris.size());
+    SortedStore store;
+    BoundedList<ScreenPoly> polys;
+    BoundedList<PieceCut> cuts;
+    BoundedList<uint32_t> order;
     FrameStats st;
-    build_polys(view, mesh, {verts.data(), verts.size()}, opt.cull, polys, st);
-    const size_t built = polys.size();
-    if (opt.split_pool != 0) {  // exactly the requested room for cuts
-        polys = BoundedList<ScreenPoly>(poly_store.data(), built + opt.split_pool);
-        for (size_t i = 0; i < built; ++i) polys.push_back(poly_store[i]);
-    }
-    std::vector<SortKey> keys(built), scratch(built);
-    BoundedList<uint32_t> order(order_store.data(), order_store.size());
-    for (size_t i = 0; i < built; ++i) order.push_back(0);
-    const Status so = painter_order({polys.data(), built}, opt.algo == Algo::painter ? opt.painter_key : DepthKey::farthest,
-                  {keys.data(), keys.size()}, {scratch.data(), scratch.size()}, {order.data(), built});
-    if (so != Status::ok) st.status = so;
-    if (opt.algo != Algo::painter) {
-        const Status ns = newell_order(polys, order, out.newell);
-        if (ns != Status::ok) st.status = ns;
+    st.status = order_polygons(opt, view, mesh, verts, extra, store, polys, cuts, order, st, out.newell);
+    out.pool = extra;
+    out.pool_needed = 0;
+    if (opt.algo != Algo::painter && out.newell.dropped != 0) {
+        // How large the pool would have had to be: the same order with room to spare.
+        for (size_t more = std::max<size_t>(2 * extra, 1024); more <= kMaxSplitPool; more *= 2) {
+            SortedStore s2;
+            BoundedList<ScreenPoly> p2;
+            BoundedList<PieceCut> c2;
+            BoundedList<uint32_t> o2;
+            FrameStats st2;
+            NewellStats n2;
+            order_polygons(opt, view, mesh, verts, more, s2, p2, c2, o2, st2, n2);
+            if (n2.dropped == 0) {
+                out.pool_needed = n2.splits;  // one polygon per cut
+                break;
+            }
+        }
     }
     out.polygons = order.size();
     const int rows = opt.band_rows > 0 ? opt.band_rows : scene.height;
     std::vector<typename Format::Pixel> color(static_cast<size_t>(scene.width) * rows);
     std::vector<uint32_t> coverage(static_cast<size_t>(coverage_words(scene.width)) * rows);
+    const Span<const ScreenPoly> ps{polys.data(), polys.size()};
+    const Span<const PieceCut> cs{cuts.data(), cuts.size()};
+    const Span<const uint32_t> os{order.data(), order.size()};
     for (int y0 = 0; y0 < scene.height; y0 += rows) {
         const int y1 = std::min(scene.height, y0 + rows);
         const auto band = band_view<Format, Depth>(color.data(), nullptr, scene.width, scene.height, y0, y1);
         clear(band, opt.background);
         const FrameStats bs = opt.algo == Algo::reverse
-                                  ? paint_front_to_back(view, mesh, {polys.data(), polys.size()}, {order.data(), order.size()},
-                                                        band, draw, {coverage.data(), coverage.size()})
-                                  : paint_in_order<true>(view, mesh, {polys.data(), polys.size()},
-                                                         {order.data(), order.size()}, band, draw);
+                                  ? paint_front_to_back(view, mesh, ps, cs, os, band, draw, {coverage.data(), coverage.size()})
+                                  : paint_in_order<true>(view, mesh, ps, cs, os, band, draw);
         FrameStats px{};
         px.fragments = bs.fragments;
         px.pixels_written = bs.pixels_written;
@@ -69,9 +129,8 @@ bool render_sorted(const Scene& scene, const RenderOptions& opt, const View& vie
         st.merge(px);
         port::append_rgb888(band, out.rgb);
     }
-    st.triangles_drawn = static_cast<uint32_t>(order.size());
     out.stats = st;
-    out.pixels_covered = count_covered(std::vector<ScreenPoly>(polys.data(), polys.data() + polys.size()), scene.width, scene.height);
+    out.pixels_covered = count_covered(ps, cs, scene.width, scene.height);
     return true;
 }
 
@@ -137,13 +196,16 @@ bool render_format(const Scene& scene, const RenderOptions& opt, RenderResult& o
 
 }  // namespace
 
-std::string algo_names() { return "zbuffer, painter, newell, reverse"; }
+size_t default_split_pool(size_t triangles) { return triangles * 16 + 1024; }
+
+std::string algo_names() { return "zbuffer, painter, newell, reverse, raycast"; }
 
 bool parse_algo(const std::string& name, Algo& out) {
     if (name == "zbuffer") { out = Algo::zbuffer; return true; }
     if (name == "painter") { out = Algo::painter; return true; }
     if (name == "newell") { out = Algo::newell; return true; }
     if (name == "reverse") { out = Algo::reverse; return true; }
+    if (name == "raycast") { out = Algo::raycast; return true; }
     return false;
 }
 
@@ -156,6 +218,7 @@ bool render(const Scene& scene, const RenderOptions& opt, RenderResult& out, std
         error = "band rows must be >= 1";
         return false;
     }
+    if (opt.algo == Algo::raycast) return render_raycast(scene, opt, out, error);
     switch (opt.format) {
         case PixelFormat::rgb565: return render_format<Rgb565Format>(scene, opt, out, error);
         case PixelFormat::rgb888: return render_format<Rgb888Format>(scene, opt, out, error);

@@ -3,6 +3,7 @@
 #pragma once
 #include <hider/raster/zbuffer.hpp>
 #include <hider/sort/newell.hpp>
+#include <hider/sort/painter.hpp>
 #include <hider/sort/reverse.hpp>
 
 #include <string>
@@ -12,8 +13,14 @@
 
 namespace hider::tool {
 
-enum class Algo { zbuffer, painter, newell, reverse };
+enum class Algo { zbuffer, painter, newell, reverse, raycast };
 enum class PixelFormat { rgb565, rgb888, grey8 };
+
+/// Largest room for Newell's cuts the tools give or try (polygons).
+constexpr size_t kMaxSplitPool = size_t{1} << 24;
+
+/// The room for cuts hider-render gives Newell by default for a mesh of `triangles` triangles.
+size_t default_split_pool(size_t triangles);
 
 /// Names accepted by --algo, in order, comma-separated (for messages).
 std::string algo_names();
@@ -29,7 +36,13 @@ struct RenderOptions {
     Rgb background{0, 0, 0};
     Rgb base{255, 255, 255};
     DepthKey painter_key = DepthKey::farthest;  ///< painter only
-    size_t split_pool = 0;  ///< newell/reverse: extra polygons for cuts; 0 = 16 per triangle + 1024
+    size_t split_pool = 0;  ///< newell/reverse: extra polygons for cuts; 0 = default_split_pool()
+};
+
+/// What the ray caster or ray tracer did (render_ray.hpp).
+struct RayCounts {
+    uint64_t rays = 0, hits = 0, shadow_rays = 0;
+    uint64_t boxes = 0, triangles = 0;  ///< BVH box and triangle tests
 };
 
 struct RenderResult {
@@ -39,6 +52,9 @@ struct RenderResult {
     uint32_t pixels_covered = 0;  ///< distinct pixels written at least once
     NewellStats newell;           ///< newell and reverse only
     size_t polygons = 0;          ///< object-space algorithms: polygons drawn after cuts
+    size_t pool = 0;              ///< newell and reverse: the room for cuts it had (polygons)
+    size_t pool_needed = 0;       ///< when cuts were dropped: the room that would have held them (0: more than kMaxSplitPool)
+    RayCounts ray;                ///< raycast and ray-traced scenes only
 };
 
 /// Renders `scene` with lib/ only. Returns false with a reason for unusable options.

@@ -44,6 +44,10 @@ int sort_run_command(const Args& args);   ///< internal: one painter_order call 
 int newell_command(const Args& args);     ///< hider-bench newell ...
 int newell_run_command(const Args& args); ///< internal: painter_order then newell_order, run under callgrind
 int waterfall_command(const Args& args);  ///< hider-bench waterfall ... (waterfall.cpp)
+int raytrace_command(const Args& args);      ///< hider-bench raytrace ... (ray.cpp)
+int raytrace_run_command(const Args& args);  ///< internal: the demo's rows, one measured call each
+int raycast_command(const Args& args);       ///< hider-bench raycast ... (ray.cpp)
+int raycast_run_command(const Args& args);   ///< internal: a ray-cast frame, or sampled rays (BVH / brute force)
 
 /// Directory of the benchmark models: HIDER_BENCH_MODELS_DIR (the source tree's tests/data/models).
 std::string default_models_dir();
@@ -72,14 +76,16 @@ FrameSummary run_frames(const std::string& model_path, const CameraArgs& cam, in
 /// Drawable screen polygons of a model (build_polys), in storage with room for cuts.
 struct ScreenPolys {
     Scene scene;
+    View view{};
     std::vector<ScreenPoly> store;  ///< capacity of the pool; the first `built` entries are the polygons
     size_t built = 0;
     FrameStats stats{};  ///< build_polys statistics (triangles in, culled, clipped)
 };
 
-/// Loads the model, projects it for `cam` and builds its screen polygons (back faces removed when
+/// Loads the model (an .obj path, or a generated scene's name: common/gen_scenes.hpp, with its own
+/// camera unless `cam` sets one), projects it and builds its screen polygons (back faces removed when
 /// cull) into a pool of triangles * 7 entries (7 = most pieces of one clipped triangle), plus, with
-/// cut_room, hider-render's default room for Newell's cuts (16 per triangle + 1024). Exits on errors.
+/// cut_room, hider-render's default room for Newell's cuts (default_split_pool). Exits on errors.
 ScreenPolys build_screen_polys(const std::string& model_path, const CameraArgs& cam, bool cull, bool cut_room);
 
 /// n zero-filled elements of T at a 64-byte boundary, so counts inside memset and friends do not

@@ -34,6 +34,11 @@ const char* kUsage =
     "       hider-bench waterfall [--build-root DIR]\n"
     "         Markdown table of instructions per frame and per curve sample of the floating-horizon\n"
     "         waterfall (firmware/waterfall) on cm0plus, cm3 and rv32imac, projection and drawing apart\n"
+    "       hider-bench raytrace [--valgrind PATH] [--build-root DIR] [--scene FILE.txt]\n"
+    "         instructions per pixel (mean, worst row) of the ray-traced demo scene: host (callgrind) and\n"
+    "         firmware/raytrace of each cross build tree under QEMU\n"
+    "       hider-bench raycast [--models DIR] [--valgrind PATH]\n"
+    "         callgrind Ir per ray of mesh ray casting (torus, bunny), BVH against brute force\n"
     "exit status: 0 ok, 2 error, 77 valgrind (targets: every cross build tree) not found\n";
 
 }  // namespace
@@ -120,6 +125,10 @@ int main(int argc, char** argv) {
     if (command == "newell") return newell_command(args);
     if (command == "newell-run") return newell_run_command(args);
     if (command == "waterfall") return waterfall_command(args);
+    if (command == "raytrace") return raytrace_command(args);
+    if (command == "raytrace-run") return raytrace_run_command(args);
+    if (command == "raycast") return raycast_command(args);
+    if (command == "raycast-run") return raycast_run_command(args);
     if (command == "-h" || command == "--help") {
         std::cout << kUsage;
         return 0;

@@ -42,5 +42,5 @@ extern "C" __attribute__((noinline)) void hider_bench_sort(const hider::tool::be
 }
 
 extern "C" __attribute__((noinline)) void hider_bench_newell(hider::tool::bench::NewellJob* job) {
-    job->status = newell_order(*job->polys, *job->order, job->stats);
+    job->status = newell_order(job->view, *job->polys, *job->cuts, job->scratch, *job->order, job->stats);
 }

@@ -4,6 +4,7 @@
 #pragma once
 #include <hider/raster/zbuffer.hpp>
 #include <hider/sort/newell.hpp>
+#include <hider/sort/painter.hpp>
 
 namespace hider::tool::bench {
 
@@ -42,9 +43,12 @@ struct SortJob {
     Span<uint32_t> order;   ///< >= polys.size(); out
 };
 
-/// One newell_order call on a painter order: polys and order are updated in place (cuts append).
+/// One newell_order call: polys (cuts append), cuts and order are filled in place.
 struct NewellJob {
+    View view{};
     BoundedList<ScreenPoly>* polys = nullptr;
+    BoundedList<PieceCut>* cuts = nullptr;
+    NewellScratch scratch{};
     BoundedList<uint32_t>* order = nullptr;
     NewellStats stats{};         ///< out
     Status status = Status::ok;  ///< out
@@ -61,5 +65,5 @@ extern "C" __attribute__((noinline)) void hider_bench_span(const hider::tool::be
 /// painter_order(job->polys, DepthKey::farthest, ...) into job->order.
 extern "C" __attribute__((noinline)) void hider_bench_sort(const hider::tool::bench::SortJob* job);
 
-/// newell_order(*job->polys, *job->order, job->stats); the status goes to job->status.
+/// newell_order(job->view, *job->polys, *job->cuts, job->scratch, *job->order, job->stats) -> job->status.
 extern "C" __attribute__((noinline)) void hider_bench_newell(hider::tool::bench::NewellJob* job);

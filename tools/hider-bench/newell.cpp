@@ -1,8 +1,9 @@
-// hider-bench newell: for every model in the models directory, with back faces culled and kept, the
-// statistics of Newell's ordering (lib/hider/sort/newell.hpp) and its instructions: callgrind Ir of
-// newell_order alone (hider_bench_newell) next to the painter's sort it starts from (hider_bench_sort).
-// Each (model, culling) is two `newell-run`s under callgrind, one per measured function. The pool and
-// camera are hider-render's defaults, and the statistics are checked against render() (common/render.hpp).
+// hider-bench newell: for every model in the models directory and for generated interpenetrating soups
+// (150, 300 and 1000 triangles), with back faces culled and kept, the statistics of Newell's ordering
+// (lib/hider/sort/newell.hpp) and its instructions: callgrind Ir of newell_order alone
+// (hider_bench_newell) next to the painter's sort of the same polygons (hider_bench_sort). Each (scene,
+// culling) is two `newell-run`s under callgrind, one per measured function. The pool and camera are
+// hider-render's defaults, and the statistics are checked against render() (common/render.hpp).
 #include <algorithm>
 #include <cinttypes>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <sstream>
 
 #include "bench.hpp"
+#include "common/gen_scenes.hpp"
 #include "common/obj.hpp"
 #include "common/render.hpp"
 #include "measured.hpp"
@@ -17,7 +19,11 @@
 namespace hider::tool::bench {
 namespace {
 
-/// The benchmark torus uses its standard view; every other model the framing defaults.
+/// The generated scenes of the table: random interpenetrating soups (gen_scenes.hpp dense_soup).
+const std::vector<std::string> kSoups = {"dense-1-150", "dense-1-300", "dense-1-1000"};
+
+/// The benchmark torus uses its standard view; every other model the framing defaults, a generated
+/// scene its own camera.
 Args camera_for(const std::string& file) { return file == "torus.obj" ? torus_view("320x240") : Args{}; }
 
 std::vector<std::string> model_files(const std::string& dir) {
@@ -46,7 +52,7 @@ std::map<std::string, uint64_t> parse_newell_line(const std::string& out) {
             v[key] = static_cast<uint64_t>(parsed);
         }
     }
-    for (const char* key : {"polygons", "after", "pair-tests", "moves", "cuts", "cycles", "unresolved", "dropped"})
+    for (const char* key : {"polygons", "after", "pair-tests", "moves", "cuts", "cycles", "unresolved", "dropped", "too-deep"})
         if (v.count(key) == 0) fail(std::string("newell-run printed no '") + key + "':\n" + out);
     return v;
 }
@@ -61,12 +67,8 @@ std::string ratio(double num, double den, int decimals) {
 /// Newell's statistics from hider-render's own driver, for the same model, camera and culling.
 void check_against_render(const std::string& path, const Args& camera, bool cull,
                           const std::map<std::string, uint64_t>& v) {
-    ObjModel model;
-    ObjError err;
-    if (!load_obj(path, model, err)) fail(format(err));
-    Scene scene;
+    const Scene scene = build_screen_polys(path, camera_from(camera), cull, false).scene;
     std::string why;
-    if (!build_scene(model, camera_from(camera), scene, why)) fail(path + ": " + why);
     RenderOptions opt;
     opt.algo = Algo::newell;
     opt.cull = cull;
@@ -75,7 +77,7 @@ void check_against_render(const std::string& path, const Args& camera, bool cull
     const NewellStats& n = r.newell;
     if (v.at("after") != r.polygons || v.at("pair-tests") != n.pair_tests || v.at("moves") != n.moves ||
         v.at("cuts") != n.splits || v.at("cycles") != n.cycles || v.at("unresolved") != n.unresolved ||
-        v.at("dropped") != n.dropped)
+        v.at("dropped") != n.dropped || v.at("too-deep") != n.too_deep)
         fail(path + ": the measured newell_order disagrees with render() (common/render.cpp)");
 }
 
@@ -97,34 +99,40 @@ int newell_run_command(const Args& args) {
     }
     if (model_path.empty()) fail("newell-run: no model given");
     ScreenPolys p = build_screen_polys(model_path, camera_from(camera), cull, true);
-    const size_t built = p.built;
-    BoundedList<ScreenPoly> polys(p.store.data(), p.store.size());
+    const size_t built = p.built, cap = built + default_split_pool(p.scene.tris.size());
+    BoundedList<ScreenPoly> polys(p.store.data(), cap);
     for (size_t i = 0; i < built; ++i) polys.push_back(p.store[i]);
-    AlignedBuffer<SortKey> keys(built), scratch(built);
-    std::vector<uint32_t> order_store(polys.capacity());
-    BoundedList<uint32_t> order(order_store.data(), order_store.size());
-    for (size_t i = 0; i < built; ++i) order.push_back(0);
-
-    SortJob sort;
-    sort.polys = {polys.data(), built};
-    sort.keys = {keys.data(), built};
-    sort.scratch = {scratch.data(), built};
-    sort.order = {order.data(), built};
-    hider_bench_sort(&sort);
     if (sort_only) {
+        AlignedBuffer<SortKey> keys(built), scratch(built);
+        AlignedBuffer<uint32_t> order(built);
+        SortJob sort;
+        sort.polys = {polys.data(), built};
+        sort.keys = {keys.data(), built};
+        sort.scratch = {scratch.data(), built};
+        sort.order = {order.data(), built};
+        hider_bench_sort(&sort);
         std::printf("sorted %zu polygons\n", built);
         return 0;
     }
+    AlignedBuffer<PieceCut> cut_store(2 * (cap - built));
+    AlignedBuffer<uint32_t> order_store(cap), heap(cap), heap_pos(cap), links(2 * cap), chain(cap);
+    AlignedBuffer<uint32_t> cells(grid_cells(p.view.width, p.view.height));
+    BoundedList<PieceCut> cuts(cut_store.data(), cut_store.size());
+    BoundedList<uint32_t> order(order_store.data(), cap);
     NewellJob job;
+    job.view = p.view;
     job.polys = &polys;
+    job.cuts = &cuts;
+    job.scratch = {{heap.data(), cap}, {heap_pos.data(), cap}, {links.data(), 2 * cap}, {cells.data(), cells.size()},
+                   {chain.data(), cap}};
     job.order = &order;
     hider_bench_newell(&job);
     if (job.status != Status::ok && job.status != Status::capacity_exceeded)
         fail(model_path + ": newell_order: " + status_name(job.status));
     const NewellStats& s = job.stats;
-    std::printf("newell polygons %zu after %zu pair-tests %" PRIu32 " moves %" PRIu32 " cuts %" PRIu32
-                " cycles %" PRIu32 " unresolved %" PRIu32 " dropped %" PRIu32 "\n",
-                built, order.size(), s.pair_tests, s.moves, s.splits, s.cycles, s.unresolved, s.dropped);
+    std::printf("newell polygons %zu after %zu pair-tests %" PRIu64 " moves %" PRIu32 " cuts %" PRIu32 " cycles %" PRIu32
+                " unresolved %" PRIu32 " dropped %" PRIu32 " too-deep %" PRIu32 "\n",
+                built, order.size(), s.pair_tests, s.moves, s.splits, s.cycles, s.unresolved, s.dropped, s.too_deep);
     return 0;
 }
 
@@ -138,17 +146,20 @@ int newell_command(const Args& args) {
     valgrind = find_valgrind(valgrind);
     const std::vector<std::string> files = model_files(models);
 
-    std::printf("Newell's ordering after the painter's sort, per model at 320x240 (torus: its standard view,\n"
-                "others: default framing), back faces culled or kept; pool: 16 cuts per triangle + 1024.\n"
-                "polygons = screen polygons sorted, after = after cuts. callgrind Ir inside hider_bench_sort\n"
-                "(painter_order) and hider_bench_newell (newell_order alone: Newell's extra instructions).\n"
+    std::printf("Newell's ordering per model at 320x240 (torus: its standard view, others: default framing) and\n"
+                "for random interpenetrating soups (gen_scenes dense-SEED-N, their own camera), back faces culled or\n"
+                "kept; pool: 16 cuts per triangle + 1024. polygons = screen polygons, after = after cuts. callgrind\n"
+                "Ir inside hider_bench_sort (painter_order of the same polygons) and hider_bench_newell (newell_order).\n"
                 "Statistics checked against render() of common/render.cpp.\n\n");
-    std::printf("| model | back faces | polygons | after | pair tests | moves | cuts | cycles | unresolved | dropped "
-                "| painter Ir | Newell Ir | Newell / painter | Newell Ir/polygon |\n");
-    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("| scene | back faces | polygons | after | pair tests | moves | cuts | cycles | unresolved | dropped "
+                "| too deep | painter Ir | Newell Ir | Newell / painter | Newell Ir/polygon |\n");
+    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     std::fflush(stdout);
-    for (const std::string& file : files) {
-        const std::string path = models + "/" + file;
+    std::vector<std::string> scenes;
+    for (const std::string& file : files) scenes.push_back(models + "/" + file);
+    scenes.insert(scenes.end(), kSoups.begin(), kSoups.end());
+    for (const std::string& path : scenes) {
+        const std::string file = std::filesystem::path(path).filename().string();
         const Args camera = camera_for(file);
         for (bool cull : {true, false}) {
             Args run_args = {"newell-run", path};
@@ -164,9 +175,9 @@ int newell_command(const Args& args) {
             check_against_render(path, camera, cull, v);
             const double newell_ir = static_cast<double>(newell.ir), painter_ir = static_cast<double>(painter.ir);
             std::printf("| %s | %s | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64
-                        " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %s | %s |\n",
+                        " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %s | %s |\n",
                         file.c_str(), cull ? "culled" : "kept", v.at("polygons"), v.at("after"), v.at("pair-tests"),
-                        v.at("moves"), v.at("cuts"), v.at("cycles"), v.at("unresolved"), v.at("dropped"), painter.ir,
+                        v.at("moves"), v.at("cuts"), v.at("cycles"), v.at("unresolved"), v.at("dropped"), v.at("too-deep"), painter.ir,
                         newell.ir, ratio(newell_ir, painter_ir, 1).c_str(),
                         ratio(newell_ir, static_cast<double>(v.at("polygons")), 1).c_str());
             std::fflush(stdout);

@@ -8,7 +8,9 @@
 #include <cstdio>
 
 #include "bench.hpp"
+#include "common/gen_scenes.hpp"
 #include "common/obj.hpp"
+#include "common/render.hpp"
 #include "measured.hpp"
 
 namespace hider::tool::bench {
@@ -44,13 +46,21 @@ ScreenPolys build_screen_polys(const std::string& model_path, const CameraArgs& 
     ScreenPolys out;
     ObjModel model;
     ObjError err;
-    if (!load_obj(model_path, model, err)) fail(format(err));
     std::string why;
-    if (!build_scene(model, cam, out.scene, why)) fail(model_path + ": " + why);
+    gen::GenScene generated;
+    CameraArgs camera = cam;
+    if (model_path.size() < 4 || model_path.compare(model_path.size() - 4, 4, ".obj") != 0) {
+        if (!gen::by_name(model_path, generated, why)) fail(why);
+        model = gen::obj_model(generated);
+        if (!cam.eye) camera = gen::camera_args(generated);
+    } else if (!load_obj(model_path, model, err)) {
+        fail(format(err));
+    }
+    if (!build_scene(model, camera, out.scene, why)) fail(model_path + ": " + why);
     const Mesh mesh = out.scene.mesh();
     const Status ms = validate(mesh);
     if (ms != Status::ok) fail(model_path + ": mesh rejected: " + status_name(ms));
-    View view;
+    View& view = out.view;
     const Status vs = make_view(out.scene.camera, out.scene.width, out.scene.height, view);
     if (vs != Status::ok) fail(model_path + ": camera rejected: " + status_name(vs));
     std::vector<ScreenVertex> verts(mesh.positions.size());
@@ -58,7 +68,7 @@ ScreenPolys build_screen_polys(const std::string& model_path, const CameraArgs& 
     if (ps != Status::ok) fail(model_path + ": project_vertices: " + status_name(ps));
     // A clipped triangle gives up to 7 pieces; cuts get hider-render's default room (common/render.cpp).
     const size_t triangles = mesh.tris.size();
-    out.store.resize(triangles * 7 + (cut_room ? triangles * 16 + 1024 : 0));
+    out.store.resize(triangles * 7 + (cut_room ? default_split_pool(triangles) : 0));
     BoundedList<ScreenPoly> polys(out.store.data(), out.store.size());
     build_polys(view, mesh, {verts.data(), verts.size()}, cull, polys, out.stats);
     if (!out.stats.ok()) fail(model_path + ": build_polys: " + status_name(out.stats.status));

@@ -10,7 +10,9 @@
 
 #include "common/cli.hpp"
 #include "common/obj.hpp"
+#include "common/ray_scene.hpp"
 #include "common/render.hpp"
+#include "common/render_ray.hpp"
 #include "common/scene.hpp"
 #include "host/png.hpp"
 #include "host/ppm.hpp"
@@ -24,7 +26,8 @@ const char* kUsage =
     "usage: hider-render MODEL.obj -o OUT.ppm|OUT.png [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
     "                    [--fov DEG] [--near N] [--far F] [--shade headlight|id|depth] [--no-cull]\n"
     "                    [--algo NAME] [--depth-bits 16|32] [--band ROWS] [--format rgb565|rgb888|grey8]\n"
-    "                    [--painter-key farthest|barycenter] [--pool N] [--stats]\n";
+    "                    [--painter-key farthest|barycenter] [--pool N] [--stats]\n"
+    "       hider-render --scene FILE.txt -o OUT.ppm|OUT.png [--size WxH] [--band ROWS] [--format ...] [--stats]\n";
 
 [[noreturn]] void fail(const std::string& msg) {
     std::cerr << "hider-render: " << msg;
@@ -39,10 +42,45 @@ Vec3d parse_vec(const std::string& opt, const std::string& s) {
     return v;
 }
 
+/// Options that only make sense with an OBJ model (the scene file sets its own camera and shading).
+bool model_only_option(const std::string& a) {
+    return a == "--eye" || a == "--target" || a == "--up" || a == "--fov" || a == "--near" || a == "--far" ||
+           a == "--shade" || a == "--no-cull" || a == "--depth-bits" || a == "--painter-key" || a == "--pool";
+}
+
+/// --scene FILE.txt: ray traces a scene file (README.md, "Ray-traced scenes").
+int render_scene_file(const std::string& scene_path, const std::string& model_path, const std::string& out_path,
+                      bool size_given, const CameraArgs& cam, const RenderOptions& opt, bool stats, int argc, char** argv) {
+    if (!model_path.empty()) fail("give either a model or --scene, not both ('" + model_path + "', '" + scene_path + "')");
+    for (int i = 1; i < argc; ++i)
+        if (model_only_option(argv[i])) fail(std::string(argv[i]) + " does not apply to --scene (the scene file sets camera and shading)");
+    if (opt.algo != Algo::zbuffer && opt.algo != Algo::raycast) fail("--scene is ray traced: --algo must be raycast (or left out)");
+    if (out_path.empty()) fail(std::string("no output given (-o OUT.ppm)\n") + kUsage);
+    RayScene scene;
+    std::string why;
+    if (!load_ray_scene(scene_path, scene, why)) fail(why);
+    const int width = size_given ? cam.width : scene.width, height = size_given ? cam.height : scene.height;
+    RenderResult result;
+    if (!render_ray_scene(scene, width, height, opt, result, why)) fail(scene_path + ": " + why);
+    const bool png = out_path.size() > 4 && out_path.compare(out_path.size() - 4, 4, ".png") == 0;
+    if (!(png ? port::write_png(out_path, result.width, result.height, result.rgb, why)
+              : port::write_ppm(out_path, result.width, result.height, result.rgb, why)))
+        fail(why);
+    if (stats) {
+        const RayCounts& r = result.ray;
+        std::printf("rays %llu hits %llu shadow-rays %llu box-tests %llu triangle-tests %llu\n",
+                    static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
+                    static_cast<unsigned long long>(r.shadow_rays), static_cast<unsigned long long>(r.boxes),
+                    static_cast<unsigned long long>(r.triangles));
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string model_path, out_path;
+    std::string model_path, out_path, scene_path;
+    bool size_given = false;
     CameraArgs cam;
     RenderOptions opt;
     bool stats = false;
@@ -63,7 +101,9 @@ int main(int argc, char** argv) {
                 fail("--size " + v + " out of range (1.." + std::to_string(kMaxFrameSide) + " per side)");
             cam.width = static_cast<int>(w);
             cam.height = static_cast<int>(h);
-        } else if (a == "--eye") cam.eye = parse_vec(a, value());
+            size_given = true;
+        } else if (a == "--scene") scene_path = value();
+        else if (a == "--eye") cam.eye = parse_vec(a, value());
         else if (a == "--target") cam.target = parse_vec(a, value());
         else if (a == "--up") cam.up = parse_vec(a, value());
         else if (a == "--fov") {
@@ -116,6 +156,7 @@ int main(int argc, char** argv) {
         else if (model_path.empty()) model_path = a;
         else fail("more than one model given ('" + model_path + "', '" + a + "')");
     }
+    if (!scene_path.empty()) return render_scene_file(scene_path, model_path, out_path, size_given, cam, opt, stats, argc, argv);
     if (model_path.empty()) fail(std::string("no model given\n") + kUsage);
     if (out_path.empty()) fail(std::string("no output given (-o OUT.ppm)\n") + kUsage);
     if (opt.shade == Shade::id) opt.format = PixelFormat::rgb888;  // ids need all 24 bits
@@ -139,10 +180,15 @@ int main(int argc, char** argv) {
         std::printf("fragments %u written %u covered %u overdraw %.2f\n", s.fragments, s.pixels_written,
                     result.pixels_covered,
                     result.pixels_covered == 0 ? 0.0 : static_cast<double>(s.pixels_written) / result.pixels_covered);
+        if (opt.algo == Algo::raycast)
+            std::printf("rays %llu hits %llu box-tests %llu triangle-tests %llu\n", static_cast<unsigned long long>(result.ray.rays),
+                        static_cast<unsigned long long>(result.ray.hits), static_cast<unsigned long long>(result.ray.boxes),
+                        static_cast<unsigned long long>(result.ray.triangles));
         if (opt.algo == Algo::newell || opt.algo == Algo::reverse) {
             const NewellStats& n = result.newell;
-            std::printf("newell polygons %zu pair-tests %u moves %u splits %u unresolved %u dropped %u\n", result.polygons,
-                        n.pair_tests, n.moves, n.splits, n.unresolved, n.dropped);
+            std::printf("newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u\n",
+                        result.polygons, static_cast<unsigned long long>(n.pair_tests), n.moves, n.splits, n.cycles,
+                        n.unresolved, n.dropped, n.too_deep);
         }
         if (s.status != Status::ok) std::printf("status %s\n", status_name(s.status));
     }

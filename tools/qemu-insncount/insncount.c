@@ -1,7 +1,7 @@
 /* QEMU TCG plugin: exact guest instruction counts (docs/targets.md s.6). Counts the whole run and
  * the region from the first instruction at start= up to the first instruction at end=, summed over
  * all pairs. Options: start=0x.., end=0x.. (Thumb bit ignored), out=<file>. Prints one line once:
- *   insncount total=<n> region=<n> pairs=<n>
+ *   insncount total=<n> region=<n> pairs=<n> max=<n>   (max: the largest single pair)
  * Build with the host compiler: cc -O2 -shared -fPIC -o libinsncount.so insncount.c
  * The few plugin API v1 declarations used are written out below (as in QEMU 7.2 qemu-plugin.h). */
 #include <inttypes.h>
@@ -43,6 +43,7 @@ static uint64_t total;          /* every executed instruction: whole blocks, add
 static uint64_t region;         /* instructions between start and end, over all pairs */
 static uint64_t region_from;    /* value of the running count at the last start */
 static uint64_t pairs;
+static uint64_t pair_max;       /* largest single start..end count */
 static bool in_region;
 static bool have_start, have_end, printed;
 static uint64_t start_addr, end_addr;
@@ -61,7 +62,9 @@ static void on_end(unsigned int vcpu, void *left) {
     (void)vcpu;
     if (!in_region) return;
     in_region = false;
-    region += total - (uint64_t)(uintptr_t)left - region_from;
+    const uint64_t n = total - (uint64_t)(uintptr_t)left - region_from;
+    region += n;
+    if (n > pair_max) pair_max = n;
     ++pairs;
 }
 
@@ -84,8 +87,8 @@ static void report(void) {
     if (printed) return;
     printed = true;
     char line[160];
-    snprintf(line, sizeof line, "insncount total=%" PRIu64 " region=%" PRIu64 " pairs=%" PRIu64 "\n",
-             total, region, pairs);
+    snprintf(line, sizeof line, "insncount total=%" PRIu64 " region=%" PRIu64 " pairs=%" PRIu64 " max=%" PRIu64 "\n",
+             total, region, pairs, pair_max);
     fputs(line, stderr);
     if (out_path[0] != '\0') {
         FILE *f = fopen(out_path, "w");

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Runs a firmware ELF under QEMU with the insncount plugin and writes
-#   insncount total=<n> region=<n> pairs=<n>
-# to <out-file> (region = bench_begin .. bench_end, see firmware/common/bench.hpp).
+#   insncount total=<n> region=<n> pairs=<n> max=<n>
+# to <out-file> (region = bench_begin .. bench_end summed over pairs, max = the largest pair; see
+# firmware/common/bench.hpp).
 # Usage: run.sh <cm0plus|cm3|rv32imac> <firmware.elf> <out-file> [big|small]
 # Env:   INSNCOUNT_PLUGIN  path of libinsncount.so (default: built from insncount.c into a cache dir)
 #        NM                the target nm (default: from the preset)

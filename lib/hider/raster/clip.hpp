@@ -1,10 +1,48 @@
-// Sutherland-Hodgman clipping of a triangle in homogeneous view space (before the divide) against the
-// near and far planes and the x/y guard band (Blinn & Newell 1978). Intersections are always computed
-// from the outside vertex toward the inside one, so triangles sharing an edge get identical points.
+// Clip codes and Sutherland-Hodgman clipping of a triangle in homogeneous view space (before the
+// divide) against the near and far planes and the x/y guard band (Blinn & Newell 1978). Intersections
+// are always computed from the outside vertex toward the inside one, so triangles sharing an edge get
+// identical points. for_each_clipped() hands a mesh triangle's drawable screen triangles to a caller.
 #pragma once
-#include <hider/view.hpp>
+#include <hider/mesh.hpp>
 
 namespace hider {
+
+/// Clip planes (bits of ScreenVertex::outside).
+enum ClipPlane : uint8_t {
+    kClipNear = 1, kClipFar = 2, kClipLeft = 4, kClipRight = 8, kClipTop = 16, kClipBottom = 32,
+};
+constexpr int kClipPlaneCount = 6;
+
+/// w kGuardBand 256 (|X| <= G  <=>  |x k| <= G w 256), one 32x32->64 product.
+inline int64_t guard_of(int32_t w) { return mul_wide(w, kGuardBand * 256); }
+
+/// Signed distance of p to clip plane `plane` (one bit), >= 0 inside; exact in int64.
+inline int64_t clip_distance(const View& v, const ViewPoint& p, uint8_t plane) {
+    const int64_t guard = guard_of(p.w);
+    switch (plane) {
+        case kClipNear: return int64_t{p.w} - v.near_raw;
+        case kClipFar: return int64_t{v.far_raw} - p.w;
+        case kClipLeft: return guard + mul_wide(p.x, v.k_q8);
+        case kClipRight: return guard - mul_wide(p.x, v.k_q8);
+        case kClipTop: return guard - mul_wide(p.y, v.k_q8);
+        default: return guard + mul_wide(p.y, v.k_q8);
+    }
+}
+
+/// The set of clip planes p lies outside of (0 = inside the view volume and the guard band).
+inline uint8_t outcode(const View& v, const ViewPoint& p, const ScaledXY& s) {
+    uint8_t code = 0;
+    if (p.w < v.near_raw) code |= kClipNear;
+    if (p.w > v.far_raw) code |= kClipFar;
+    const int64_t guard = guard_of(p.w);
+    if (s.xk < -guard) code |= kClipLeft;
+    if (s.xk > guard) code |= kClipRight;
+    if (s.yk > guard) code |= kClipTop;
+    if (s.yk < -guard) code |= kClipBottom;
+    return code;
+}
+inline uint8_t outcode(const View& v, const ViewPoint& p) { return outcode(v, p, scaled_xy(v, p)); }
+
 
 /// A convex polygon produced by clipping one triangle: 3 + 6 vertices for exact arithmetic; the
 /// extra room absorbs rounding, and writes past it are dropped rather than overflowing.
@@ -53,6 +91,33 @@ inline void clip_triangle(const View& view, const ViewPoint& a, const ViewPoint&
         if (src->count < 3) break;
     }
     if (src != &out) out = *src;
+}
+
+/// Calls piece(a, b, c) for each drawable screen triangle of mesh triangle t: the triangle itself, or the
+/// fan of its clipped polygon (vertices from project_vertices() in `verts`). Counts outside and clipped
+/// triangles in `st`.
+template <class Piece>
+void for_each_clipped(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, size_t t, FrameStats& st,
+                    Piece&& piece) {
+    const Tri& tri = mesh.tris[t];
+    const ScreenVertex& a = verts[tri.v[0]];
+    const ScreenVertex& b = verts[tri.v[1]];
+    const ScreenVertex& c = verts[tri.v[2]];
+    if ((a.outside() & b.outside() & c.outside()) != 0) { ++st.triangles_outside; return; }
+    const uint8_t planes = a.outside() | b.outside() | c.outside();
+    if (planes == 0) { piece(a, b, c); return; }
+    ++st.triangles_clipped;
+    ClipPolygon poly;
+    clip_triangle(view, to_view_point(view, mesh.positions[tri.v[0]]), to_view_point(view, mesh.positions[tri.v[1]]),
+                  to_view_point(view, mesh.positions[tri.v[2]]), planes, poly);
+    if (poly.count < 3) return;
+    const ScreenVertex first = project(view, poly.v[0]);
+    ScreenVertex prev = project(view, poly.v[1]);
+    for (int i = 2; i < poly.count; ++i) {
+        const ScreenVertex next = project(view, poly.v[i]);
+        piece(first, prev, next);
+        prev = next;
+    }
 }
 
 }  // namespace hider

@@ -46,7 +46,10 @@ static_assert(sizeof(void*) != 4 || (offsetof(RowKernel, rows) == 20 && offsetof
 /// The kernel in C++: k.rows rows, then k's edges, depth and zrow are those of the next row.
 // TriangleRaster::scan_kernel() sets the left and the right edge in branches on which side the long
 // edge is; GCC cannot pair them and reports the fields as maybe uninitialised here (false positive).
+// Clang has no such warning: the first two lines keep either compiler quiet about the other's names.
 #pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpragmas"
+#pragma GCC diagnostic ignored "-Wunknown-warning-option"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 inline void run_row_kernel_portable(RowKernel& k) {
     int32_t lpx = k.lpx, lg = k.lg, rpx = k.rpx, rg = k.rg;

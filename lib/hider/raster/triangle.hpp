@@ -4,7 +4,7 @@
 // stepping the two active edges as exact DDAs (no division per row). Depth is the plane through the three vertices,
 // stepped by dz/dx per pixel and dz/dy per row (Giesen, "Triangle rasterization in practice").
 #pragma once
-#include <hider/fixed.hpp>
+#include <hider/raster/edge.hpp>
 #include <hider/raster/row_kernel.hpp>
 #include <hider/raster/screen.hpp>
 
@@ -31,10 +31,10 @@ public:
         return setup_impl<false>(a, b, c, area, width, height, nullptr);
     }
     /// setup() for one band: also false, before the depth plane (the divisions), when no pixel centre
-    /// of the band lies in the triangle's bounding box (detail::misses_band); nothing is drawn then.
+    /// of the band lies in the triangle's bounding box (misses_band); nothing is drawn then.
     __attribute__((always_inline)) bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                                               int32_t area, int32_t width, int32_t height,
-                                              const detail::BandBounds& band) {
+                                              const BandBounds& band) {
         return setup_impl<true>(a, b, c, area, width, height, &band);
     }
 
@@ -85,7 +85,7 @@ private:
     template <bool kBandTest>
     __attribute__((always_inline)) bool setup_impl(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                                                    int32_t area, int32_t width, int32_t height,
-                                                   const detail::BandBounds* band) {
+                                                   const BandBounds* band) {
         row_top_ = row_mid_ = row_bottom_ = 0;  // an empty row range if we return early
         front_ = false;
         if (area == 0) {
@@ -109,7 +109,7 @@ private:
         if (yb < ym) { swap_values(xb, xm); swap_values(yb, ym); even = !even; }
         if (ym < yt) { swap_values(xm, xt); swap_values(ym, yt); even = !even; }
         const int32_t x_min = min(xt, min(xm, xb)), x_max = max(xt, max(xm, xb));
-        if (kBandTest && detail::misses_band({x_min, x_max, yt, yb}, *band)) return false;
+        if (kBandTest && misses_band({x_min, x_max, yt, yb}, *band)) return false;
         long_left_ = even;
         clip_left_ = x_min < x_origin_;
         clip_right_ = x_max > x_origin_ + (width - 1) * kSubpixel;
@@ -240,38 +240,16 @@ private:
         return covered;
     }
 
-    /// One edge as a DDA with an exact error term, on either side of the triangle. g is the (top-left
-    /// biased) edge function turned so that g >= 0 exactly right of the boundary and g grows by `a` per
-    /// pixel to the right; px is the boundary: the smallest px with g >= 0 (first covered pixel of a
-    /// left edge, one past the last of a right edge), so g lies in [0, a). Per row: g += m, px += q,
-    /// then one correction step.
-    struct Walker {
-        int32_t px, g, a, m, q;
-    };
+    using Walker = EdgeWalker;
 
     /// Walker on row py for the edge from sorted vertex u down to sorted vertex l (u < l, ys_[u] <
     /// ys_[l]). Both sides share one form: a left edge (run upwards clockwise, top-left rule
     /// inclusive) and a right edge (run downwards, exclusive, its edge function negated and biased by
-    /// one) give the same g = dy (x - xu) - dx (y - yu) at pixel centres. Cost: one int32 division, two
-    /// for edges flatter than one pixel per row.
+    /// one) give the same g = dy (x - xu) - dx (y - yu) at pixel centres (edge.hpp).
     Walker walker(int u, int l, int32_t py) const { return walker_inline(u, l, py); }
     /// walker() inlined: scan_kernel() writes its fields straight into the kernel state.
     __attribute__((always_inline)) Walker walker_inline(int u, int l, int32_t py) const {
-        const int32_t xu = xs_[u], yu = ys_[u];
-        const int32_t dx = xs_[l] - xu, dy = ys_[l] - yu;  // dy > 0
-        const int32_t yc = py * kSubpixel + y_origin_;
-        // g at the centre of pixel 0 of row py; exact in int32 (CONVENTIONS.md).
-        const int32_t g0 = dy * (x_origin_ - xu) - dx * (yc - yu);
-        Walker w;
-        w.a = dy * kSubpixel;
-        const int32_t dg = -dx * kSubpixel;  // change of g per row at a fixed px
-        w.px = -div_floor32(g0, w.a);
-        w.g = g0 + w.px * w.a;
-        if (dg >= 0 && dg < w.a) w.q = 0;
-        else if (dg < 0 && dg >= -w.a) w.q = 1;
-        else w.q = -div_floor32(dg, w.a);
-        w.m = dg + w.q * w.a;  // dg mod a, in [0, a)
-        return w;
+        return edge_walker(xs_[u], ys_[u], xs_[l], ys_[l], py, x_origin_, y_origin_);
     }
 
     /// The kernel's left edge (with its depth on row py) and right edge from walkers.

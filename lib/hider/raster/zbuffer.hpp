@@ -2,40 +2,14 @@
 // snapped screen area, flat shading, then TriangleRaster rows into span_depth_test. Works on any band
 // of rows; drawing every band of a frame gives exactly the bytes of drawing the whole frame.
 #pragma once
-#include <hider/mesh.hpp>
-#include <hider/raster/clip.hpp>
 #include <hider/raster/span.hpp>
+#include <hider/raster/triangle.hpp>
+#include <hider/raster/vertices.hpp>
 #include <hider/shade.hpp>
 
 namespace hider {
 
 namespace detail {
-
-/// Calls piece(a, b, c) for each drawable triangle of mesh triangle t: the triangle itself, or the fan
-/// of its clipped polygon. Counts outside/clipped triangles in `st`.
-template <class Piece>
-void for_each_piece(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, size_t t, FrameStats& st,
-                    Piece&& piece) {
-    const Tri& tri = mesh.tris[t];
-    const ScreenVertex& a = verts[tri.v[0]];
-    const ScreenVertex& b = verts[tri.v[1]];
-    const ScreenVertex& c = verts[tri.v[2]];
-    if ((a.outside() & b.outside() & c.outside()) != 0) { ++st.triangles_outside; return; }
-    const uint8_t planes = a.outside() | b.outside() | c.outside();
-    if (planes == 0) { piece(a, b, c); return; }
-    ++st.triangles_clipped;
-    ClipPolygon poly;
-    clip_triangle(view, to_view_point(view, mesh.positions[tri.v[0]]), to_view_point(view, mesh.positions[tri.v[1]]),
-                  to_view_point(view, mesh.positions[tri.v[2]]), planes, poly);
-    if (poly.count < 3) return;
-    const ScreenVertex first = project(view, poly.v[0]);
-    ScreenVertex prev = project(view, poly.v[1]);
-    for (int i = 2; i < poly.count; ++i) {
-        const ScreenVertex next = project(view, poly.v[i]);
-        piece(first, prev, next);
-        prev = next;
-    }
-}
 
 /// Row functor for TriangleRaster::scan: depth-tested spans, row pointers stepped by the stride.
 /// kPaired (colour and depth elements of one size, so a pixel's colour sits a fixed number of bytes
@@ -164,7 +138,7 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
         return st;
     }
     using Pixel = typename Format::Pixel;
-    const detail::BandBounds bb = detail::band_bounds(frame);
+    const BandBounds bb = band_bounds(frame);
     const FaceShading shading(view, opt);
     const bool whole_frame = frame.y0 == 0 && frame.y1 == frame.height;
     // Triangles are counted only by the band holding their first row, so band counts add up.
@@ -214,7 +188,7 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
             if (keep(a, b, c, area)) draw(a, b, c, area, t);
             continue;
         }
-        detail::for_each_piece(view, mesh, verts, t, st, [&](const ScreenVertex& pa, const ScreenVertex& pb,
+        for_each_clipped(view, mesh, verts, t, st, [&](const ScreenVertex& pa, const ScreenVertex& pb,
                                                              const ScreenVertex& pc) {
             const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
             if (keep(pa, pb, pc, area)) draw(pa, pb, pc, area, t);

@@ -1,131 +1,372 @@
-// Newell, Newell & Sancha (1972): start from the painter's order by farthest depth, and for each
-// polygon P whose depth range overlaps the next ones run the tests cheapest first (x extents, y
-// extents, P behind Q's plane, Q in front of P's plane, projections disjoint). When all fail, move Q
-// before P if the swapped tests allow it. A polygon moved twice to the same output position means a
-// cycle of overlaps, broken by cutting P by Q's plane or Q by P's (when neither crosses the other's
-// plane the pair stays in painter order and is counted as unresolved). Piercing polygons are cut by
-// each other's planes. Pieces keep the face id.
-// Plane tests are exact 128-bit sums with a half-grid-step slack for rounded cut vertices (poly.hpp).
+// Newell, Newell & Sancha (1972). Polygons leave a heap farthest first (largest zmax). The candidate P is
+// compared with every waiting Q whose screen box can overlap its own (a grid, grid.hpp) and whose depth
+// range overlaps, cheapest test first: boxes, P behind Q's plane, Q in front of P's plane, projections
+// disjoint. When all fail and Q must come first, Q becomes the candidate and P waits again; a Q moved
+// twice in one chain of moves means a cycle, cut by the plane between them. Polygons that pierce each
+// other are cut along their intersection when first compared, both of them. A cut makes two pieces that
+// keep their parent's exact edges (plane.hpp, raster/piece.hpp: no cracks), and each piece remembers the
+// plane that cut it and its side of it, so no pair is cut twice. Work is bounded: the caller's pools
+// bound the pieces, a budget the pair tests. Plane tests are exact 128-bit sums with a slack for the
+// rounding of cut points; polygons of one face (NewellOptions) are never ordered against each other.
 #pragma once
-#include <hider/sort/painter.hpp>
+#include <hider/sort/grid.hpp>
+#include <hider/sort/plane.hpp>
 
 namespace hider {
 
 struct NewellStats {
-    uint32_t pair_tests = 0;  ///< (P, Q) pairs whose depth ranges overlapped
-    uint32_t moves = 0;       ///< Q moved before P
-    uint32_t splits = 0;      ///< polygons cut by another's plane
-    uint32_t cycles = 0;      ///< cycles of overlap found (each broken by a cut when possible)
-    uint32_t unresolved = 0;  ///< pairs left in painter order because no cut was possible
-    uint32_t dropped = 0;     ///< cuts not made because the pool was full
+    uint64_t pair_tests = 0;        ///< pairs whose boxes may overlap and whose depth ranges overlap
+    uint32_t moves = 0;             ///< Q moved before P
+    uint32_t splits = 0;            ///< polygons cut in two by another's plane
+    uint32_t cycles = 0;            ///< cycles of overlap found (each broken by a cut when possible)
+    uint32_t unresolved = 0;        ///< pairs left in the order found because no cut was possible
+    uint32_t dropped = 0;           ///< cuts not made because the polygon or cut pool was full
+    uint32_t too_deep = 0;          ///< cuts not made because a piece already had kMaxPieceCuts cuts
+    bool budget_exhausted = false;  ///< the pair-test budget ran out; the rest went in depth order
+};
+
+/// Default pair-test budget per polygon of the pool (see NewellOptions).
+constexpr uint64_t kNewellTestsPerPolygon = 1024;
+
+struct NewellOptions {
+    /// The face of each mesh triangle (Mesh::ids), or empty. Polygons of one face are taken as coplanar
+    /// and never ordered against each other (nor cut): a fan of a large flat face costs no cuts.
+    Span<const uint32_t> face_ids;
+    /// Most pair tests one call may run; 0 = kNewellTestsPerPolygon x polys.capacity() + 65536.
+    /// Past it the remaining polygons go out in depth order, and the result is capacity_exceeded.
+    uint64_t max_pair_tests = 0;
+};
+
+/// Caller memory of newell_order() besides the pools, for a polygon pool of capacity N.
+struct NewellScratch {
+    Span<uint32_t> heap;      ///< >= N
+    Span<uint32_t> heap_pos;  ///< >= N
+    Span<uint32_t> links;     ///< >= 2 N (the grid)
+    Span<uint32_t> cells;     ///< >= grid_cells(width, height)
+    Span<uint32_t> chain;     ///< >= N (the polygons of the current chain of moves)
 };
 
 namespace detail {
 
-/// State of one run of newell_order over caller storage.
+/// One run of newell_order over caller storage.
 class Newell {
 public:
-    Newell(BoundedList<ScreenPoly>& polys, BoundedList<uint32_t>& order, NewellStats& ns)
-        : polys_(polys), order_(order), ns_(ns) {}
+    static constexpr uint32_t kNone = 0xFFFFFFFFu;
 
-    Status run() {
-        size_t i = 0;
-        while (i < order_.size()) {
-            if (!step(i)) ++i;  // nothing changed: order[i] is final
+    Newell(BoundedList<ScreenPoly>& polys, BoundedList<PieceCut>& cuts, const NewellScratch& s, BoundedList<uint32_t>& order,
+           NewellStats& ns, uint64_t budget, Span<const uint32_t> faces)
+        : polys_(polys), cuts_(cuts), s_(s), order_(order), ns_(ns), budget_(budget), faces_(faces) {}
+
+    Status run(const ScreenGrid& grid_setup) {
+        grid_ = grid_setup;
+        for (uint32_t i = 0; i < polys_.size(); ++i) {
+            grid_.insert(i, polys_[i]);
+            push(i);
+        }
+        uint32_t cur = kNone;
+        while (cur != kNone || heap_size_ != 0) {
+            if (cur == kNone) cur = pop();
+            if (ns_.budget_exhausted) {
+                finish(cur);
+                cur = kNone;
+                continue;
+            }
+            cur = step(cur);
         }
         return status_;
     }
 
 private:
-    /// Tests the candidate order[i] against the polygons after it; true when the order changed.
-    bool step(size_t i) {
-        for (size_t j = i + 1; j < order_.size(); ++j) {
-            const uint32_t pi = order_[i], qi = order_[j];
-            const ScreenPoly& p = polys_[pi];
-            const ScreenPoly& q = polys_[qi];
-            if (q.zmax <= p.zmin) return false;  // order[i+1..) is sorted by zmax: no later depth overlap
-            ++ns_.pair_tests;
-            if (p.xmax <= q.xmin || q.xmax <= p.xmin) continue;  // (1) no shared pixel centre possible
-            if (p.ymax <= q.ymin || q.ymax <= p.ymin) continue;  // (2)
-            const ScreenPlane qp = plane_of(q), pp = plane_of(p);
-            const int p_vs_q = side_of(qp, p);
-            if (p_vs_q > 0) continue;                  // (3) P wholly behind Q's plane
-            const int q_vs_p = side_of(pp, q);
-            if (q_vs_p < 0) continue;                  // (4) Q wholly in front of P's plane
-            if (projections_disjoint(p, q)) continue;  // (5)
-            if (q_vs_p > 0 || p_vs_q < 0) {            // (3') or (4'): Q must be drawn before P
-                if (q.moved_at != i) {
-                    // Q becomes the candidate; P goes back to its depth position, so order[i+1..)
-                    // stays sorted by zmax and the early stop above stays valid.
-                    order_.erase(j);
-                    order_[i] = qi;
-                    insert_sorted(i + 1, pi);
-                    polys_[qi].moved_at = static_cast<uint32_t>(i);
-                    ++ns_.moves;
-                    return true;
+    /// One polygon to cut in two.
+    struct Cut {
+        uint32_t id = kNone;
+        ScreenPoly far, near;
+        PieceCut far_cut, near_cut;
+    };
+
+    /// What comparing the candidate with the waiting polygons decided.
+    struct Action {
+        enum Kind : uint8_t { none, move, cut } kind = none;
+        uint32_t q = kNone;  ///< move: the polygon that becomes the candidate
+        Cut cuts[2];
+        int count = 0;  ///< cut: how many of cuts[] to make
+    };
+
+    /// Examines candidate cur; returns the next candidate (kNone: take the next from the heap).
+    uint32_t step(uint32_t cur) {
+        if (chain_len_ == 0) s_.chain[chain_len_++] = cur;
+        const ScreenPoly p = polys_[cur];
+        Outline po;
+        outline_of(p, cuts(), po);
+        const ScreenPlane pp = plane_of(p);
+        Action act;
+        grid_.query(p, [&](uint32_t qi) { return qi != cur && compare(cur, p, po, pp, qi, act); });
+        switch (act.kind) {
+            case Action::none:
+                finish(cur);
+                return kNone;
+            case Action::move:  // Q becomes the candidate; P waits again at its depth
+                heap_remove(act.q);
+                push(cur);
+                polys_[act.q].moved_at = chain_;
+                s_.chain[chain_len_++] = act.q;
+                ++ns_.moves;
+                return act.q;
+            case Action::cut: {
+                bool cur_cut = false;
+                for (int i = 0; i < act.count; ++i) {
+                    const Cut& c = act.cuts[i];
+                    cur_cut = cur_cut || c.id == cur;
+                    replace(c.id, c.far, c.near, c.far_cut, c.near_cut, c.id != cur);
                 }
-                ++ns_.cycles;
-                if (cut(i, i, qp) || cut(j, i + 1, pp)) return true;
-            } else if (cut(i, i, qp) || cut(j, i + 1, pp)) {  // piercing: both straddle
-                return true;
+                return cur_cut ? kNone : cur;
             }
-            ++ns_.unresolved;
         }
-        return false;
+        return kNone;
     }
 
-    /// Cuts the polygon at order[pos] by plane; pieces go back into order[from..) by depth.
-    bool cut(size_t pos, size_t from, const ScreenPlane& plane) {
-        const uint32_t idx = order_[pos];
-        ScreenPoly pieces[3];
-        const int n = split_by_plane(polys_[idx], plane, pieces);
-        if (n == 0) return false;
-        if (polys_.size() + static_cast<size_t>(n - 1) > polys_.capacity()) {
-            ++ns_.dropped;
+    /// Tests the pair (P = polys[cur], Q = polys[qi]); true (with act filled) when the order must change.
+    bool compare(uint32_t cur, const ScreenPoly& p, const Outline& po, const ScreenPlane& pp, uint32_t qi, Action& act) {
+        const ScreenPoly& q = polys_[qi];
+        if (q.zmax <= p.zmin) return false;  // Q wholly nearer than P (or level with it)
+        if (ns_.budget_exhausted) return false;
+        if (++ns_.pair_tests > budget_) {
+            ns_.budget_exhausted = true;
             status_ = Status::capacity_exceeded;
             return false;
         }
-        ++ns_.splits;
-        order_.erase(pos);
-        polys_[idx] = pieces[0];
-        insert_sorted(from, idx);
-        for (int k = 1; k < n; ++k) {
-            polys_.push_back(pieces[k]);
-            insert_sorted(from, static_cast<uint32_t>(polys_.size() - 1));
+        if (p.xmax <= q.xmin || q.xmax <= p.xmin) return false;  // (1) no shared pixel centre possible
+        if (p.ymax <= q.ymin || q.ymax <= p.ymin) return false;  // (2)
+        if (!faces_.empty() && faces_[p.tri] == faces_[q.tri]) return false;  // one flat face
+        Outline qo;
+        outline_of(q, cuts(), qo);
+        const ScreenPlane qp = plane_of(q);
+        Cut& pc = act.cuts[0];
+        Cut& qc = act.cuts[1];
+        CutResult p_cut = CutResult::no_line, q_cut = CutResult::no_line;
+        const int p_vs_q = side_with_cut(p, po, qp, q.tri, p_cut, pc);
+        if (p_vs_q > 0) return false;  // (3) P wholly behind Q's plane
+        const int q_vs_p = side_with_cut(q, qo, pp, p.tri, q_cut, qc);
+        if (q_vs_p < 0) return false;                    // (4) Q wholly in front of P's plane
+        if (projections_disjoint(po, qo)) return false;  // (5)
+        bool too_deep = p_cut == CutResult::too_deep || q_cut == CutResult::too_deep;
+        act.count = 0;
+        if (q_vs_p > 0 || p_vs_q < 0) {  // (3') or (4'): Q must be drawn before P
+            if (q.moved_at != chain_) {
+                act.kind = Action::move;
+                act.q = qi;
+                return true;
+            }
+            ++ns_.cycles;  // a cycle: cut one of them by the other's plane, or another pair of the cycle
+            if (p_cut == CutResult::cut) take(act, cur, pc);
+            else if (q_cut == CutResult::cut) take(act, qi, qc);
+            else too_deep = !break_cycle(qi, act) && too_deep;
+        } else {  // piercing: each straddles the other's plane, so cut both along their intersection
+            if (p_cut == CutResult::cut) take(act, cur, pc);
+            if (q_cut == CutResult::cut) take(act, qi, qc);
         }
+        if (act.count != 0) {
+            if (polys_.size() + act.count <= polys_.capacity() && cuts_.size() + 2 * act.count <= cuts_.capacity()) {
+                act.kind = Action::cut;
+                return true;
+            }
+            ++ns_.dropped;
+            status_ = Status::capacity_exceeded;
+        }
+        ++ns_.unresolved;
+        if (too_deep) {
+            ++ns_.too_deep;
+            status_ = Status::capacity_exceeded;
+        }
+        act.count = 0;
+        return false;
+    }
+
+    /// Adds polygon id's cut c to the action (the first slot keeps P's cut until then).
+    static void take(Action& act, uint32_t id, const Cut& c) {
+        if (&act.cuts[act.count] != &c) act.cuts[act.count] = c;
+        act.cuts[act.count++].id = id;
+    }
+
+    /// A cycle closed at Q (in the chain) whose pair with the candidate cannot be cut as it stands:
+    /// cuts the first pair of the cycle (a polygon and the one moved before it, or Q and the candidate)
+    /// where one straddles the other's plane, first beyond the rounding slack, then exactly (the slack may
+    /// hide a small crossing, which keeps the cycle closed). False when none does.
+    bool break_cycle(uint32_t q, Action& act) {
+        size_t j = chain_len_;
+        while (j-- > 0 && s_.chain[j] != q) {}
+        for (int exact = 0; exact < 2; ++exact)
+            for (size_t i = j; i < chain_len_; ++i) {
+                const uint32_t x = s_.chain[i], y = i + 1 < chain_len_ ? s_.chain[i + 1] : q;  // the last pair closes the cycle
+                if (cut_straddling(x, y, exact != 0, act) || cut_straddling(y, x, exact != 0, act)) return true;
+            }
+        return false;
+    }
+
+    /// Cuts polygon x by the plane of polygon y when x straddles it (beyond the slack, or exactly)
+    /// and the cut leaves something on both sides; adds the cut to act.
+    bool cut_straddling(uint32_t x, uint32_t y, bool exact, Action& act) {
+        const ScreenPoly &px = polys_[x], &py = polys_[y];
+        if (known_side(px, cuts(), py.tri) != 0) return false;
+        Outline ox;
+        outline_of(px, cuts(), ox);
+        const ScreenPlane pl = plane_of(py);
+        const Int128 slack = exact ? Int128{} : rounding_slack(pl);
+        bool near = false, far = false;
+        for (int k = 0; k < ox.count; ++k) {
+            const int s = classify(pl, slack, ox.v[k]);
+            near = near || s < 0;
+            far = far || s > 0;
+        }
+        Cut c;
+        if (!near || !far || cut_polygon(px, cuts(), pl, py.tri, c.far, c.near, c.far_cut, c.near_cut) != CutResult::cut) return false;
+        take(act, x, c);
         return true;
     }
 
-    /// Inserts idx into order[from..) keeping that range sorted by zmax, farthest first (stable).
-    void insert_sorted(size_t from, uint32_t idx) {
-        size_t pos = from;
-        const uint32_t z = polys_[idx].zmax;
-        while (pos < order_.size() && polys_[order_[pos]].zmax >= z) ++pos;
-        const bool inserted = order_.insert(pos, idx);  // order.size() <= polys.size() <= capacity
-        HIDER_ASSERT(inserted);
-        (void)inserted;
+    /// x's side of plane pl (the plane of mesh triangle plane_tri), outline xo: known from x's cuts, else
+    /// classified; when it straddles, the cut is tried at once (pieces into far/near): a cut that leaves
+    /// nothing on one side on the grid decides the side instead. `cut` tells how the try went.
+    int side_with_cut(const ScreenPoly& x, const Outline& xo, const ScreenPlane& pl, uint32_t plane_tri, CutResult& cut,
+                      Cut& pieces) {
+        const int known = known_side(x, cuts(), plane_tri);
+        if (known != 0) return known;
+        const int s = side_of(pl, xo);
+        if (s != 0) return s;
+        cut = cut_polygon(x, cuts(), pl, plane_tri, pieces.far, pieces.near, pieces.far_cut, pieces.near_cut);
+        if (cut == CutResult::far_only) return 1;
+        if (cut == CutResult::near_only) return -1;
+        return 0;
+    }
+
+    /// Puts the two pieces of polygon `id` in its place: the far one in its slot, the near one in a
+    /// new slot, both back in the grid and the heap.
+    void replace(uint32_t id, const ScreenPoly& far, const ScreenPoly& near, const PieceCut& far_cut, const PieceCut& near_cut,
+                 bool in_heap) {
+        grid_.remove(id);
+        if (in_heap) heap_remove(id);
+        polys_[id] = far;
+        polys_[id].cut = static_cast<uint32_t>(cuts_.size());
+        cuts_.push_back(far_cut);
+        ScreenPoly n = near;
+        n.cut = static_cast<uint32_t>(cuts_.size());
+        cuts_.push_back(near_cut);
+        const bool added = polys_.push_back(n);  // room checked by compare
+        HIDER_ASSERT(added);
+        (void)added;
+        const uint32_t other = static_cast<uint32_t>(polys_.size() - 1);
+        ++ns_.splits;
+        ++chain_;  // the pieces start a new chain of moves
+        chain_len_ = 0;
+        grid_.insert(id, polys_[id]);
+        grid_.insert(other, polys_[other]);
+        push(id);
+        push(other);
+    }
+
+    void finish(uint32_t id) {
+        const bool added = order_.push_back(id);  // order.capacity() >= polys.capacity()
+        HIDER_ASSERT(added);
+        (void)added;
+        grid_.remove(id);
+        ++chain_;
+        chain_len_ = 0;
+    }
+
+    Span<const PieceCut> cuts() const { return {cuts_.data(), cuts_.size()}; }
+
+    // Indexed binary max-heap of polygon indices by (zmax, then lower index first).
+    bool before(uint32_t a, uint32_t b) const {
+        const uint32_t za = polys_[a].zmax, zb = polys_[b].zmax;
+        return za > zb || (za == zb && a < b);
+    }
+    void place(size_t pos, uint32_t id) {
+        s_.heap[pos] = id;
+        s_.heap_pos[id] = static_cast<uint32_t>(pos);
+    }
+    void sift_up(size_t pos) {
+        const uint32_t id = s_.heap[pos];
+        while (pos > 0 && before(id, s_.heap[(pos - 1) / 2])) {
+            place(pos, s_.heap[(pos - 1) / 2]);
+            pos = (pos - 1) / 2;
+        }
+        place(pos, id);
+    }
+    void sift_down(size_t pos) {
+        const uint32_t id = s_.heap[pos];
+        for (;;) {
+            size_t child = 2 * pos + 1;
+            if (child >= heap_size_) break;
+            if (child + 1 < heap_size_ && before(s_.heap[child + 1], s_.heap[child])) ++child;
+            if (!before(s_.heap[child], id)) break;
+            place(pos, s_.heap[child]);
+            pos = child;
+        }
+        place(pos, id);
+    }
+    void push(uint32_t id) {
+        place(heap_size_++, id);
+        sift_up(heap_size_ - 1);
+    }
+    uint32_t pop() {
+        const uint32_t top = s_.heap[0];
+        s_.heap_pos[top] = kNone;
+        if (--heap_size_ != 0) {
+            place(0, s_.heap[heap_size_]);
+            sift_down(0);
+        }
+        return top;
+    }
+    void heap_remove(uint32_t id) {
+        const size_t pos = s_.heap_pos[id];
+        s_.heap_pos[id] = kNone;
+        if (pos == --heap_size_) return;
+        const uint32_t last = s_.heap[heap_size_];
+        place(pos, last);
+        sift_up(pos);
+        sift_down(s_.heap_pos[last]);
     }
 
     BoundedList<ScreenPoly>& polys_;
+    BoundedList<PieceCut>& cuts_;
+    const NewellScratch& s_;
     BoundedList<uint32_t>& order_;
     NewellStats& ns_;
+    uint64_t budget_;
+    Span<const uint32_t> faces_;
+    ScreenGrid grid_;
+    size_t heap_size_ = 0;
+    /// Moves since the last output or cut form a chain (Q before P, R before Q, ...): a polygon moved
+    /// twice in one chain closes a cycle. A polygon's moved_at holds the chain it was last moved in.
+    uint32_t chain_ = 0;
+    size_t chain_len_ = 0;  ///< the chain's polygons are scratch.chain[0..chain_len_), the candidate last
     Status status_ = Status::ok;
 };
 
 }  // namespace detail
 
-/// Reorders `order` (a painter order by farthest depth over polys) so that no polygon is drawn after
-/// one it lies in front of, cutting polygons into the free capacity of `polys` as needed.
-/// Preconditions (else invalid_argument): order.capacity() >= polys.capacity(), and order holds at most
-/// polys.size() indices, each below polys.size(). When a cut does not
-/// fit, the pair keeps its painter order, NewellStats::dropped counts it and the result is
-/// capacity_exceeded; the frame still draws. Cost: O(n k) pair tests for k depth-overlapping
-/// neighbours, O(n^2) at worst.
-inline Status newell_order(BoundedList<ScreenPoly>& polys, BoundedList<uint32_t>& order, NewellStats& ns) {
-    if (order.capacity() < polys.capacity() || order.size() > polys.size()) return Status::invalid_argument;
-    for (size_t k = 0; k < order.size(); ++k)
-        if (order[k] >= polys.size()) return Status::invalid_argument;
-    return detail::Newell(polys, order, ns).run();
+/// Orders polys[0..n) back to front into `order` (cleared first) so that no polygon is drawn after one
+/// it lies in front of, cutting polygons into the free capacity of `polys` (and two `cuts` records per
+/// cut) as needed. Paint the result with paint_in_order() or paint_front_to_back(), passing `cuts`.
+/// Errors (nothing done): invalid_argument when order, the scratch arrays or the frame size of `view`
+/// do not fit polys.capacity() (NewellScratch), or opt.face_ids does not cover every polygon's tri. When a pool fills or a piece reaches kMaxPieceCuts, that
+/// pair keeps the order found, and when the pair-test budget runs out the rest go in depth order: the
+/// result is then capacity_exceeded and NewellStats says which; the frame still draws. Cost: one grid
+/// query per candidate, pair tests only for overlapping boxes; at most the budget of pair tests, and
+/// an input triangle cut by k planes makes at most (k^2 + k + 2) / 2 pieces.
+inline Status newell_order(const View& view, BoundedList<ScreenPoly>& polys, BoundedList<PieceCut>& cuts,
+                           const NewellScratch& scratch, BoundedList<uint32_t>& order, NewellStats& ns,
+                           const NewellOptions& opt = {}) {
+    const size_t cap = polys.capacity();
+    ScreenGrid grid;
+    if (order.capacity() < cap || scratch.heap.size() < cap || scratch.heap_pos.size() < cap ||
+        scratch.links.size() / 2 < cap || scratch.chain.size() < cap || !grid.reset(view.width, view.height, scratch.cells, scratch.links))
+        return Status::invalid_argument;
+    order.clear();
+    const uint64_t budget = opt.max_pair_tests != 0 ? opt.max_pair_tests : kNewellTestsPerPolygon * cap + 65536;
+    for (size_t i = 0; i < polys.size() && !opt.face_ids.empty(); ++i)
+        if (polys[i].tri >= opt.face_ids.size()) return Status::invalid_argument;
+    return detail::Newell(polys, cuts, scratch, order, ns, budget, opt.face_ids).run(grid);
 }
 
 }  // namespace hider

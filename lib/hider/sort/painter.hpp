@@ -51,27 +51,25 @@ inline void radix_sort(Span<SortKey> keys, Span<SortKey> scratch) {
     return Status::ok;
 }
 
-/// Draws polys in `order` (back to front) into the band, painting every covered pixel. With kCount
-/// the statistics count written pixels. Precondition: frame.valid(), order indexes polys.
+/// Draws polys in `order` (back to front) into the band, painting every covered pixel; pieces (from
+/// newell_order) are drawn with their cut chains in `cuts` (empty for whole triangles). With kCount
+/// the statistics count written pixels. Precondition: order indexes polys.
 template <bool kCount = false, class Format, class Depth>
-FrameStats paint_in_order(const View& view, const Mesh& mesh, Span<const ScreenPoly> polys, Span<const uint32_t> order,
-                          const FrameView<Format, Depth>& frame, const DrawOptions& opt) {
+FrameStats paint_in_order(const View& view, const Mesh& mesh, Span<const ScreenPoly> polys, Span<const PieceCut> cuts,
+                          Span<const uint32_t> order, const FrameView<Format, Depth>& frame, const DrawOptions& opt) {
     FrameStats st;
-    if (!detail::frame_matches(view, frame)) {
+    if (!frame_matches(view, frame)) {
         st.status = Status::invalid_argument;
         return st;
     }
     const FaceShading shading(view, opt);
-    const detail::BandBounds bb = detail::band_bounds(frame);
+    const BandBounds bb = band_bounds(frame);
     for (size_t k = 0; k < order.size(); ++k) {
         const ScreenPoly& p = polys[order[k]];
-        TriangleRaster tr;
-        int32_t y0 = 0, y1 = 0;
-        if (!detail::setup_in_band(p, bb, frame, tr, y0, y1)) continue;
-        ++st.triangles_drawn;
-        const uint32_t dz = tr.dzdx();
-        const uint32_t n = detail::with_poly_shader<Format>(opt, shading, mesh, p, [&](const auto& shader) {
-            return tr.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) { span_paint(frame.row(y), x0, x1, z, dz, shader); });
+        const uint32_t n = with_poly_raster(p, cuts, bb, frame, [&](const auto& r, int32_t y0, int32_t y1) {
+            ++st.triangles_drawn;
+            return with_face_shader<Format>(opt, shading, mesh, p.tri, (p.flags & kPolyFront) != 0,
+                                            [&](const auto& shader) { return paint_rows(r, y0, y1, frame, shader); });
         });
         st.fragments += n;
         if constexpr (kCount) st.pixels_written += n;

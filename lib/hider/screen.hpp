@@ -1,0 +1,43 @@
+// Screen space as every part of hider sees it: coordinates in 1/16 pixel from the frame centre (see
+// CONVENTIONS.md), the depth range, the projected vertex and a depth range for shading.
+#pragma once
+#include <hider/base.hpp>
+
+namespace hider {
+
+constexpr int kSubpixelBits = 4;                    ///< screen coordinates carry 4 fraction bits
+constexpr int32_t kSubpixel = 1 << kSubpixelBits;   ///< subpixels per pixel
+constexpr int32_t kCoordLimit = (1 << 14) - 1;      ///< |x|, |y| <= this keeps edge functions in int32
+constexpr int32_t kGuardBand = (1 << 14) - 64;      ///< clip planes sit here; rounding stays below the limit
+/// Depths are kept in [kDepthMargin, 2^32 - 1 - kDepthMargin] so plane-stepping error never wraps.
+constexpr uint32_t kDepthMargin = 4096;
+constexpr uint32_t kDepthNear = kDepthMargin;
+constexpr uint32_t kDepthFar = 0xFFFFFFFFu - kDepthMargin;
+
+/// A projected vertex: x, y in subpixels from the frame centre (y down), z in [kDepthNear, kDepthFar]
+/// (smaller = nearer, affine in screen space). A vertex outside a clip plane has z == 0 and its planes
+/// in x (8 bytes a vertex: indexing is a shift, and a mesh's vertex array is a third smaller).
+/// project_vertices() and project() never give a drawable vertex z == 0; a hand-made vertex with z == 0
+/// and x == 0 counts as drawable (outside() == 0) and takes draw_zbuffer's slower clipping path.
+struct ScreenVertex {
+    int16_t x = 0;
+    int16_t y = 0;
+    uint32_t z = 0;
+
+    /// The clip planes the vertex lies outside of (0 = drawable).
+    constexpr uint8_t outside() const { return z == 0 ? static_cast<uint8_t>(x) : 0; }
+    /// Marks the vertex as outside `planes` (nonzero); x, y and z lose their meaning.
+    constexpr void mark_outside(uint8_t planes) {
+        x = planes;
+        y = 0;
+        z = 0;
+    }
+};
+static_assert(sizeof(ScreenVertex) == 8, "ScreenVertex is two halfwords and a word");
+
+/// Smallest and largest depth among drawable projected vertices (for depth shading).
+struct DepthRange {
+    uint32_t min = kDepthFar, max = kDepthNear;
+};
+
+}  // namespace hider

@@ -1,0 +1,290 @@
+// Newell's geometry on screen polygons: exact plane-side tests (128-bit sums of products) with a
+// slack for the grid rounding of cut points, the outline of a piece, projections that share no
+// pixel, and the cut of a polygon by another's plane into two pieces whose pixels (raster/piece.hpp)
+// are exactly its own.
+#pragma once
+#include <hider/int128.hpp>
+#include <hider/sort/poly.hpp>
+
+namespace hider {
+
+/// Plane of a screen triangle, oriented so that side() > 0 means farther (larger z) than the plane.
+struct ScreenPlane {
+    int64_t a, b, c;  ///< coefficients of x, y, z (c > 0 for any triangle with nonzero area)
+    ScreenVertex origin;
+    bool narrow;      ///< |a|, |b| < 2^45 and c < 2^29: every side() fits int64 (most triangles of a small frame)
+};
+
+/// The plane of polygon p: its (parent) triangle's, which every piece of it shares. It is the plane the
+/// rasterizer steps depth through, so the tests below decide on exactly what is drawn.
+inline ScreenPlane plane_of(const ScreenPoly& p) {
+    const int64_t dx1 = p.v[1].x - p.v[0].x, dy1 = p.v[1].y - p.v[0].y, dz1 = int64_t{p.v[1].z} - p.v[0].z;
+    const int64_t dx2 = p.v[2].x - p.v[0].x, dy2 = p.v[2].y - p.v[0].y, dz2 = int64_t{p.v[2].z} - p.v[0].z;
+    ScreenPlane pl{dy1 * dz2 - dz1 * dy2, dz1 * dx2 - dx1 * dz2, dx1 * dy2 - dy1 * dx2, p.v[0], false};
+    if (pl.c < 0) { pl.a = -pl.a; pl.b = -pl.b; pl.c = -pl.c; }
+    // |x - x0|, |y - y0| < 2^16 and |z - z0| < 2^32: each product then stays below 2^61, the sum below 2^63.
+    pl.narrow = abs_value(pl.a) < (int64_t{1} << 45) && abs_value(pl.b) < (int64_t{1} << 45) && pl.c < (int64_t{1} << 29);
+    return pl;
+}
+
+/// Exact signed distance (scaled) of v (a ScreenVertex or an OutlinePoint) from the plane: > 0 farther,
+/// 0 on it, < 0 nearer.
+template <class V>
+inline Int128 side(const ScreenPlane& pl, const V& v) {
+    return mul128(pl.a, v.x - pl.origin.x) + mul128(pl.b, v.y - pl.origin.y) + mul128(pl.c, int64_t{v.z} - pl.origin.z);
+}
+
+/// How far side() can put a point cut onto the plane once rounded to the grid: half a subpixel in x and
+/// y, and three depth units in z (the rounding plus the interpolation along the cut edge).
+inline Int128 rounding_slack(const ScreenPlane& pl) {
+    return mul128(abs_value(pl.a) + abs_value(pl.b), 1).shr(1) + mul128(pl.c, 3);
+}
+
+/// Side of v: +1 farther, -1 nearer, 0 on the plane or within its rounding slack (a vertex shared
+/// with the plane's triangle is exactly on it). A narrow plane decides in 64 bits, with the same result.
+template <class V>
+inline int classify(const ScreenPlane& pl, const Int128& slack, const V& v) {
+    if (pl.narrow) {
+        const int64_t d = pl.a * (v.x - pl.origin.x) + pl.b * (v.y - pl.origin.y) + pl.c * (int64_t{v.z} - pl.origin.z);
+        const int64_t t = static_cast<int64_t>(slack.lo);  // slack < 2^47 for a narrow plane
+        return d > t ? 1 : (d < -t ? -1 : 0);
+    }
+    const Int128 d = side(pl, v);
+    if ((d - slack).sign() > 0) return 1;
+    if ((d + slack).sign() < 0) return -1;
+    return 0;
+}
+
+/// A point of an outline: a screen position and depth (no default values, so outlines cost no clearing).
+struct OutlinePoint {
+    int16_t x, y;
+    uint32_t z;
+};
+
+/// The convex outline of a polygon on the grid: its triangle clipped by its cut lines, vertices in the
+/// triangle's winding (cut points rounded to the grid; PieceRaster draws the exact region).
+struct Outline {
+    OutlinePoint v[3 + kMaxPieceCuts];
+    int count = 0;
+};
+
+namespace detail {
+/// Number of significant bits of |v| (0 for 0). Precondition: |v| < 2^127.
+inline int magnitude_bits(const Int128& v) {
+    const Int128 m = v.sign() < 0 ? -v : v;
+    if (m.hi != 0) return 128 - clz64(static_cast<uint64_t>(m.hi));
+    return 64 - clz64(m.lo);
+}
+
+/// floor(v / 2^s) for 0 <= s < 128 and a result that fits int64.
+inline int64_t shift_down(const Int128& v, int s) {
+    if (s == 0) return static_cast<int64_t>(v.lo);
+    if (s < 64) return static_cast<int64_t>(v.shr(s).lo);
+    return v.hi >> (s - 64);
+}
+
+/// The point where the segment a -> b meets e == 0, for e(a) = ea and e(b) = eb of opposite signs.
+inline OutlinePoint lerp_to_line(const OutlinePoint& a, const OutlinePoint& b, int64_t ea, int64_t eb) {
+    uint64_t num = static_cast<uint64_t>(abs_value(ea)), den = num + static_cast<uint64_t>(abs_value(eb));
+    while (den >= (uint64_t{1} << 31)) { num >>= 1; den >>= 1; }
+    const int64_t t_q30 = div_round(static_cast<int64_t>(num << 30), static_cast<int64_t>(den));
+    auto lerp = [t_q30](int64_t p, int64_t q) { return p + (((q - p) * t_q30 + (int64_t{1} << 29)) >> 30); };
+    return {static_cast<int16_t>(lerp(a.x, b.x)), static_cast<int16_t>(lerp(a.y, b.y)), static_cast<uint32_t>(lerp(a.z, b.z))};
+}
+
+/// Clips the outline o by the half-plane cut_side(line) >= 0 (Sutherland-Hodgman).
+inline void clip_outline(Outline& o, const CutLine& line) {
+    int64_t e[3 + kMaxPieceCuts];
+    bool out = false;
+    for (int i = 0; i < o.count; ++i) {
+        e[i] = cut_side(line, o.v[i].x, o.v[i].y);
+        out = out || e[i] < 0;
+    }
+    if (!out) return;  // wholly on the kept side
+    OutlinePoint r[3 + kMaxPieceCuts];
+    int n = 0;
+    for (int i = 0; i < o.count; ++i) {
+        const int j = i + 1 == o.count ? 0 : i + 1;
+        if (e[i] >= 0 && n < 3 + kMaxPieceCuts) r[n++] = o.v[i];
+        if (((e[i] > 0 && e[j] < 0) || (e[i] < 0 && e[j] > 0)) && n < 3 + kMaxPieceCuts)
+            r[n++] = lerp_to_line(o.v[i], o.v[j], e[i], e[j]);
+    }
+    for (int i = 0; i < n; ++i) o.v[i] = r[i];
+    o.count = n;
+}
+}  // namespace detail
+
+/// The outline of polygon p (cut chain in `cuts`).
+inline void outline_of(const ScreenPoly& p, Span<const PieceCut> cuts, Outline& o) {
+    o.count = 3;
+    for (int i = 0; i < 3; ++i) o.v[i] = {p.v[i].x, p.v[i].y, p.v[i].z};
+    for (uint32_t c = p.cut; c != kNoCut && o.count > 0; c = cuts[c].prev) detail::clip_outline(o, cuts[c].line);
+}
+
+/// Twice the signed area of an outline (its winding; 0 for a degenerate one).
+inline int64_t outline_area(const Outline& o) {
+    int64_t a = 0;
+    for (int i = 0; i < o.count; ++i) {
+        const OutlinePoint& p = o.v[i];
+        const OutlinePoint& q = o.v[i + 1 == o.count ? 0 : i + 1];
+        a += int64_t{p.x} * q.y - int64_t{q.x} * p.y;
+    }
+    return a;
+}
+
+/// Side of an outline: -1 if every vertex is nearer than the plane or on it, +1 if every one is farther
+/// or on it (a polygon in the plane gives +1), 0 if it straddles the plane.
+inline int side_of(const ScreenPlane& pl, const Outline& o) {
+    const Int128 slack = rounding_slack(pl);
+    bool near = false, far = false;
+    for (int i = 0; i < o.count; ++i) {
+        const int s = classify(pl, slack, o.v[i]);
+        near = near || s < 0;
+        far = far || s > 0;
+    }
+    if (near && far) return 0;
+    return near ? -1 : 1;
+}
+
+/// The side of the plane of mesh triangle `plane_tri` that a cut of p's chain put it on (+1 far, -1
+/// near), or 0 when no cut of p came from that plane.
+inline int known_side(const ScreenPoly& p, Span<const PieceCut> cuts, uint32_t plane_tri) {
+    for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev)
+        if ((cuts[c].plane & ~kCutFar) == plane_tri) return (cuts[c].plane & kCutFar) != 0 ? 1 : -1;
+    return 0;
+}
+
+/// True when the projections of two convex outlines share no pixel-centre interior: some edge of one
+/// has every vertex of the other on its outer side or on it (separating axis; exact in int64).
+inline bool projections_disjoint(const Outline& p, const Outline& q) {
+    auto separated_by = [](const Outline& s, const Outline& o) {
+        const int64_t area = outline_area(s);
+        if (area == 0) return false;
+        for (int i = 0; i < s.count; ++i) {
+            const OutlinePoint& a = s.v[i];
+            const OutlinePoint& b = s.v[i + 1 == s.count ? 0 : i + 1];
+            if (a.x == b.x && a.y == b.y) continue;
+            bool all_out = true;
+            for (int k = 0; k < o.count && all_out; ++k) {
+                const int64_t e = int64_t{b.x - a.x} * (o.v[k].y - a.y) - int64_t{b.y - a.y} * (o.v[k].x - a.x);
+                all_out = !((area > 0 && e > 0) || (area < 0 && e < 0));  // inside has the sign of the area
+            }
+            if (all_out) return true;
+        }
+        return false;
+    };
+    return separated_by(p, q) || separated_by(q, p);
+}
+
+/// The line where plane pl crosses the plane of polygon p on the screen, through two grid points on
+/// the border of p's triangle's bounding box, oriented to keep pl's far side (side() > 0). The line is
+/// the zero set of the plane's side function, which is affine over p's triangle. False when the planes
+/// are parallel or the line misses the box.
+inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, CutLine& far_side) {
+    Int128 h[3];
+    int bits = 0;
+    for (int i = 0; i < 3; ++i) {
+        h[i] = side(pl, p.v[i]);
+        bits = max(bits, detail::magnitude_bits(h[i]));
+    }
+    // A common shift brings |h| below 2^28: the products below then stay inside int64.
+    const int shift = max(0, bits - 28);
+    int64_t hs[3];
+    for (int i = 0; i < 3; ++i) hs[i] = detail::shift_down(h[i], shift);
+    const int64_t x0 = p.v[0].x, y0 = p.v[0].y;
+    const int64_t dx1 = p.v[1].x - x0, dy1 = p.v[1].y - y0, dx2 = p.v[2].x - x0, dy2 = p.v[2].y - y0;
+    const int64_t na = (hs[1] - hs[0]) * dy2 - (hs[2] - hs[0]) * dy1;  // gradient of h times the area
+    const int64_t nb = (hs[2] - hs[0]) * dx1 - (hs[1] - hs[0]) * dx2;
+    const int64_t h0 = hs[0] * (dx1 * dy2 - dx2 * dy1);
+    if (na == 0 && nb == 0) return false;
+    // Where na (x - x0) + nb (y - y0) + h0 = 0 meets the four sides of the box.
+    const int64_t bx0 = min(p.v[0].x, min(p.v[1].x, p.v[2].x)), bx1 = max(p.v[0].x, max(p.v[1].x, p.v[2].x));
+    const int64_t by0 = min(p.v[0].y, min(p.v[1].y, p.v[2].y)), by1 = max(p.v[0].y, max(p.v[1].y, p.v[2].y));
+    int64_t px[4], py[4];
+    int n = 0;
+    const int64_t xs[2] = {bx0, bx1}, ys[2] = {by0, by1};
+    for (int64_t xb : xs)
+        if (nb != 0) {
+            const int64_t y = y0 + div_round(-(na * (xb - x0) + h0), nb);
+            if (y >= by0 && y <= by1) { px[n] = xb; py[n] = y; ++n; }
+        }
+    for (int64_t yb : ys)
+        if (na != 0) {
+            const int64_t x = x0 + div_round(-(nb * (yb - y0) + h0), na);
+            if (x >= bx0 && x <= bx1) { px[n] = x; py[n] = yb; ++n; }
+        }
+    int64_t best = 0;
+    int ia = -1, ib = -1;
+    for (int i = 0; i < n; ++i)
+        for (int k = i + 1; k < n; ++k) {
+            const int64_t d = (px[i] - px[k]) * (px[i] - px[k]) + (py[i] - py[k]) * (py[i] - py[k]);
+            if (d > best) { best = d; ia = i; ib = k; }
+        }
+    if (ia < 0) return false;
+    CutLine line{static_cast<int16_t>(px[ia]), static_cast<int16_t>(py[ia]), static_cast<int16_t>(px[ib]), static_cast<int16_t>(py[ib])};
+    // Orient by the vertex farthest from the plane: it must land on the side of its own sign.
+    int far = 0;
+    for (int i = 1; i < 3; ++i)
+        if (abs_value(hs[i]) > abs_value(hs[far])) far = i;
+    if (hs[far] == 0) return false;
+    const bool keeps_far_vertex = cut_side(line, p.v[far].x, p.v[far].y) > 0;
+    far_side = keeps_far_vertex == (hs[far] > 0) ? line : reversed(line);
+    return true;
+}
+
+/// How one polygon's cut by a plane went.
+enum class CutResult : uint8_t {
+    cut,        ///< two pieces, each wholly on one side
+    far_only,   ///< on the grid nothing is left on the near side: the polygon counts as far
+    near_only,  ///< ... on the far side: it counts as near
+    no_line,    ///< the planes do not cross inside the polygon's box
+    too_deep,   ///< the polygon already carries kMaxPieceCuts cuts
+};
+
+/// Cuts polygon p by plane pl (the plane of mesh triangle plane_tri) into far and near pieces, each
+/// keeping p's triangle, tri and flags, with one new cut record in far_cut / near_cut. The caller
+/// stores the records in the pool `cuts` holds p's chain in and sets far.cut / near.cut to their indices.
+inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, const ScreenPlane& pl, uint32_t plane_tri,
+                             ScreenPoly& far, ScreenPoly& near, PieceCut& far_cut, PieceCut& near_cut) {
+    int depth = 0;
+    for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev) ++depth;
+    if (depth >= kMaxPieceCuts) return CutResult::too_deep;
+    CutLine line{};
+    if (!crossing_line(pl, p, line)) return CutResult::no_line;
+    Outline base, fo, no;
+    outline_of(p, cuts, base);
+    fo = base;
+    no = base;
+    detail::clip_outline(fo, line);
+    detail::clip_outline(no, reversed(line));
+    const bool far_ok = fo.count >= 3 && outline_area(fo) != 0, near_ok = no.count >= 3 && outline_area(no) != 0;
+    if (!far_ok || !near_ok) return far_ok ? CutResult::far_only : (near_ok ? CutResult::near_only : CutResult::no_line);
+    far_cut = {line, p.cut, plane_tri | kCutFar};
+    near_cut = {reversed(line), p.cut, plane_tri};
+    auto make = [&p](const Outline& o, ScreenPoly& out) {
+        out = p;
+        out.cut = kNoCut;
+        out.moved_at = kNotMoved;
+        out.zmin = o.v[0].z;
+        out.zmax = o.v[0].z;
+        int32_t x0 = o.v[0].x, x1 = o.v[0].x, y0 = o.v[0].y, y1 = o.v[0].y;
+        for (int i = 1; i < o.count; ++i) {
+            out.zmin = min(out.zmin, o.v[i].z);
+            out.zmax = max(out.zmax, o.v[i].z);
+            x0 = min<int32_t>(x0, o.v[i].x);
+            x1 = max<int32_t>(x1, o.v[i].x);
+            y0 = min<int32_t>(y0, o.v[i].y);
+            y1 = max<int32_t>(y1, o.v[i].y);
+        }
+        // One subpixel wider: the outline's points are rounded, the pixels PieceRaster draws are exact.
+        out.xmin = static_cast<int16_t>(max<int32_t>(x0 - 1, p.xmin));
+        out.xmax = static_cast<int16_t>(min<int32_t>(x1 + 1, p.xmax));
+        out.ymin = static_cast<int16_t>(max<int32_t>(y0 - 1, p.ymin));
+        out.ymax = static_cast<int16_t>(min<int32_t>(y1 + 1, p.ymax));
+    };
+    make(fo, far);
+    make(no, near);
+    return CutResult::cut;
+}
+
+}  // namespace hider

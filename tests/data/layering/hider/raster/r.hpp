@@ -1,0 +1,3 @@
+// Fixture: raster/ must not include a part (sort/).
+#pragma once
+#include <hider/sort/s.hpp>
