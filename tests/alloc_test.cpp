@@ -1,5 +1,6 @@
 // lib/ never allocates: the global operator new is replaced by a counting one, and a whole frame
 // (view, vertex projection, clear, z-buffer draw, band by band) must not call it.
+#include <hider/horizon/plot.hpp>
 #include <hider/raster/zbuffer.hpp>
 #include <hider/ray/cast.hpp>
 
@@ -61,6 +62,45 @@ TEST_CASE("a whole frame makes no heap allocation") {
         CHECK(g_allocations > before);
         delete v;
     }
+}
+
+TEST_CASE("a floating-horizon plot makes no heap allocation") {
+    using namespace hider::horizon;
+    Surface s;
+    s.samples = 64;
+    s.curves = 32;
+    s.dx = Q16::from_ratio(2, 63);
+    s.x0 = Q16::from_int(-1);
+    s.dz = Q16::from_ratio(2, 31);
+    s.z0 = Q16::from_int(-1);
+    s.value_max = 255;
+    s.y_unit_raw = 128;
+    Camera cam;
+    cam.eye = {Q16::from_raw(0), Q16::from_int(1), Q16::from_int(2)};
+    cam.up = {Q16::from_raw(0), Q16::from_int(1), Q16::from_raw(0)};
+    cam.fovy = Angle::from_degrees(Q16::from_int(50));
+    cam.near = Q16::from_ratio(1, 10);
+    cam.far = Q16::from_int(20);
+    std::vector<uint8_t> heights(64 * 32), pages(128 * 8);
+    for (size_t i = 0; i < heights.size(); ++i) heights[i] = static_cast<uint8_t>(i * 37 % 251);
+    std::vector<PlotPoint> points(64);
+    std::vector<int16_t> upper(128), lower(128);
+    const Rgb white[] = {{255, 255, 255}};
+    const long before = g_allocations;
+    SurfaceProjection p;
+    REQUIRE(p.prepare(cam, 128, 64, s) == Status::ok);
+    Horizon hz;
+    REQUIRE(make_horizon({upper.data(), upper.size()}, {lower.data(), lower.size()}, 128, 64, hz) == Status::ok);
+    PlotBuffers b;
+    b.current = {points.data(), points.size()};
+    PlotStyle st;
+    st.colours = white;
+    const MonoFrame f{pages.data(), 128, 64, 0, 8};
+    horizon::clear(f);
+    const PlotStats r = plot(p, GridSource<uint8_t>{heights.data(), 64, 32, 0}, hz, b, MonoTarget(f), st);
+    CHECK(g_allocations == before);
+    CHECK(r.ok());
+    CHECK(r.pixels > 100);
 }
 
 TEST_CASE("ray tracing and ray casting a frame make no heap allocation") {

@@ -43,6 +43,7 @@ int sort_command(const Args& args);       ///< hider-bench sort ...
 int sort_run_command(const Args& args);   ///< internal: one painter_order call that sort runs under callgrind
 int newell_command(const Args& args);     ///< hider-bench newell ...
 int newell_run_command(const Args& args); ///< internal: painter_order then newell_order, run under callgrind
+int waterfall_command(const Args& args);  ///< hider-bench waterfall ... (waterfall.cpp)
 int raytrace_command(const Args& args);      ///< hider-bench raytrace ... (ray.cpp)
 int raytrace_run_command(const Args& args);  ///< internal: the demo's rows, one measured call each
 int raycast_command(const Args& args);       ///< hider-bench raycast ... (ray.cpp)

@@ -31,6 +31,9 @@ const char* kUsage =
     "         callgrind Ir per polygon of painter_order on 1k..69k polygons of the bunny (no culling)\n"
     "       hider-bench newell [--models DIR] [--valgrind PATH]\n"
     "         Newell statistics and callgrind Ir of newell_order vs painter_order for every model\n"
+    "       hider-bench waterfall [--build-root DIR]\n"
+    "         Markdown table of instructions per frame and per curve sample of the floating-horizon\n"
+    "         waterfall (firmware/waterfall) on cm0plus, cm3 and rv32imac, projection and drawing apart\n"
     "       hider-bench raytrace [--valgrind PATH] [--build-root DIR] [--scene FILE.txt]\n"
     "         instructions per pixel (mean, worst row) of the ray-traced demo scene: host (callgrind) and\n"
     "         firmware/raytrace of each cross build tree under QEMU\n"
@@ -121,6 +124,7 @@ int main(int argc, char** argv) {
     if (command == "sort-run") return sort_run_command(args);
     if (command == "newell") return newell_command(args);
     if (command == "newell-run") return newell_run_command(args);
+    if (command == "waterfall") return waterfall_command(args);
     if (command == "raytrace") return raytrace_command(args);
     if (command == "raytrace-run") return raytrace_run_command(args);
     if (command == "raycast") return raycast_command(args);

@@ -1,0 +1,231 @@
+// hider-plot driver: camera defaults and checks in double, one conversion to lib/ types, the plot.
+#include "hider-plot/plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "host/ppm.hpp"
+
+namespace hider::plot {
+namespace {
+
+double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3d cross(const Vec3d& a, const Vec3d& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double length(const Vec3d& v) { return std::hypot(v[0], v[1], v[2]); }
+Vec3d scaled(const Vec3d& v, double s) { return {v[0] * s, v[1] * s, v[2] * s}; }
+
+std::string fmt(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+/// Largest |coordinate| of eye and target hider-plot accepts (lib/'s world range is 8192).
+constexpr double kWorldLimit = 4096.0;
+
+Q16 q16(double v) { return Q16::from_raw(static_cast<int32_t>(std::lround(v * 65536.0))); }
+
+/// Heights' range, at least a tiny span so the box has a height.
+void y_range(const HeightGrid& g, double& lo, double& hi) {
+    lo = *std::min_element(g.y.begin(), g.y.end());
+    hi = *std::max_element(g.y.begin(), g.y.end());
+}
+
+/// A colour ramp for --shade height: dark blue, cyan, green, yellow, red, white (64 steps).
+std::vector<Rgb> height_ramp() {
+    const double stops[][3] = {{20, 30, 140}, {0, 200, 230}, {40, 220, 60}, {250, 230, 40}, {240, 50, 30}, {255, 255, 255}};
+    std::vector<Rgb> ramp;
+    for (int i = 0; i < 64; ++i) {
+        const double t = i / 63.0 * 5.0;
+        const int s = std::min(static_cast<int>(t), 4);
+        const double f = t - s;
+        auto mix = [&](int c) { return static_cast<uint8_t>(std::lround(stops[s][c] + (stops[s + 1][c] - stops[s][c]) * f)); };
+        ramp.push_back({mix(0), mix(1), mix(2)});
+    }
+    return ramp;
+}
+
+}  // namespace
+
+bool resolve_camera(const HeightGrid& g, const ViewArgs& args, CameraD& out, std::string& error) {
+    if (args.width < 1 || args.height < 1 || args.width > kMaxFrameSide || args.height > kMaxFrameSide) {
+        error = "frame size " + std::to_string(args.width) + "x" + std::to_string(args.height) + " out of range (1.." +
+                std::to_string(kMaxFrameSide) + " per side)";
+        return false;
+    }
+    if (!(args.fov_deg >= 0.5 && args.fov_deg <= 179.5)) {
+        error = "--fov " + fmt(args.fov_deg) + " out of range (0.5..179.5 degrees)";
+        return false;
+    }
+    double ylo = 0, yhi = 0;
+    y_range(g, ylo, yhi);
+    const Vec3d lo{-1.0, ylo, -1.0}, hi{1.0, yhi, 1.0};
+    auto corner = [&](int c) { return Vec3d{(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]}; };
+    CameraD cam;
+    cam.width = args.width;
+    cam.height = args.height;
+    cam.fov_deg = args.fov_deg;
+    cam.target = args.target.value_or(Vec3d{0.0, (ylo + yhi) / 2, 0.0});
+    cam.up = args.up.value_or(Vec3d{0.0, 1.0, 0.0});
+    if (args.eye) {
+        cam.eye = *args.eye;
+    } else {  // from above the front edge (z = +1), just far enough to frame the box
+        const double n = std::hypot(0.75, 1.0);
+        const Vec3d back{0.0, 0.75 / n, 1.0 / n};
+        const Vec3d side = cross(scaled(back, -1.0), cam.up);
+        const double side_len = length(side);
+        if (side_len == 0) {
+            error = "up vector is parallel to the default view direction; give --eye";
+            return false;
+        }
+        const Vec3d s = scaled(side, 1.0 / side_len), u = cross(s, scaled(back, -1.0));
+        const double ty = 0.95 * std::tan(args.fov_deg * M_PI / 360.0);
+        const double tx = ty * args.width / args.height;
+        double d = 0;
+        for (int c = 0; c < 8; ++c) {
+            const Vec3d p = sub(corner(c), cam.target);
+            d = std::max({d, dot(p, back) + std::fabs(dot(p, s)) / tx, dot(p, back) + std::fabs(dot(p, u)) / ty});
+        }
+        cam.eye = {cam.target[0] + back[0] * d, cam.target[1] + back[1] * d, cam.target[2] + back[2] * d};
+    }
+    for (const Vec3d* v : {&cam.eye, &cam.target})
+        for (double c : *v)
+            if (!(std::fabs(c) < kWorldLimit)) {
+                error = std::string(v == &cam.eye ? "eye" : "target") + " (" + fmt((*v)[0]) + "," + fmt((*v)[1]) + "," +
+                        fmt((*v)[2]) + ") out of range (|coordinate| < " + fmt(kWorldLimit) + ")";
+                return false;
+            }
+    const Vec3d view = sub(cam.target, cam.eye);
+    const double dist = length(view);
+    if (dist < 1e-3) {
+        error = "eye and target coincide";
+        return false;
+    }
+    if (length(cam.up) == 0) {
+        error = "up vector is zero";
+        return false;
+    }
+    if (length(cross(view, cam.up)) < 2e-4 * dist * length(cam.up)) {
+        error = "up vector is parallel to the view direction";
+        return false;
+    }
+    // Near: half the distance to the nearest corner in front (a hundredth of the eye-target distance
+    // when the eye is inside the box); far: past the farthest corner. Only near clips the plot.
+    const Vec3d f = scaled(view, 1.0 / dist);
+    double nearest = 1e30, farthest = 0;
+    for (int c = 0; c < 8; ++c) {
+        const double depth = dot(sub(corner(c), cam.eye), f);
+        nearest = std::min(nearest, depth);
+        farthest = std::max(farthest, depth);
+    }
+    cam.near = std::max({nearest * 0.5, dist * 0.01, 1.0 / 128});
+    cam.far = std::min(std::max(farthest * 1.01, cam.near * 2), 30000.0);
+    out = cam;
+    return true;
+}
+
+FixedGrid to_fixed(const HeightGrid& g) {
+    FixedGrid f;
+    horizon::Surface& s = f.surface;
+    s.samples = g.cols;
+    s.curves = g.rows;
+    // Steps rounded to Q16, the grid centred on 0: x and z span [-1, 1] to within 1/65536 per step.
+    s.dx = Q16::from_raw(static_cast<int32_t>(std::lround(2.0 * 65536.0 / (g.cols - 1))));
+    s.dz = Q16::from_raw(static_cast<int32_t>(std::lround(2.0 * 65536.0 / (g.rows - 1))));
+    s.x0 = Q16::from_raw(-static_cast<int32_t>((static_cast<int64_t>(g.cols - 1) * s.dx.raw()) / 2));
+    s.z0 = Q16::from_raw(-static_cast<int32_t>((static_cast<int64_t>(g.rows - 1) * s.dz.raw()) / 2));
+    f.values.resize(g.y.size());
+    for (size_t i = 0; i < g.y.size(); ++i) f.values[i] = q16(g.y[i]).raw();
+    s.value_min = *std::min_element(f.values.begin(), f.values.end());
+    s.value_max = *std::max_element(f.values.begin(), f.values.end());
+    s.y_unit_raw = 1;
+    return f;
+}
+
+Camera to_camera(const CameraD& cam) {
+    Camera c;
+    c.eye = {q16(cam.eye[0]), q16(cam.eye[1]), q16(cam.eye[2])};
+    c.target = {q16(cam.target[0]), q16(cam.target[1]), q16(cam.target[2])};
+    const double ul = length(cam.up);
+    c.up = {q16(cam.up[0] / ul), q16(cam.up[1] / ul), q16(cam.up[2] / ul)};
+    c.fovy = Angle::from_degrees(q16(cam.fov_deg));
+    c.near = q16(cam.near);
+    c.far = q16(cam.far);
+    return c;
+}
+
+int mesh_step(const Options& opt, int curves, int samples) {
+    if (!opt.mesh) return samples - 1;  // the side edges alone: constant-x lines 0 and 1
+    if (opt.mesh_step > 0) return opt.mesh_step;
+    return std::max(1, static_cast<int>(std::lround(static_cast<double>(samples - 1) / (curves - 1))));
+}
+
+bool render(const HeightGrid& g, const CameraD& cam, const Options& opt, Result& out, std::string& error) {
+    const FixedGrid fixed = to_fixed(g);
+    horizon::SurfaceProjection proj;
+    const Status st = proj.prepare(to_camera(cam), cam.width, cam.height, fixed.surface);
+    if (st != Status::ok) {
+        error = std::string("lib/ rejected the camera or surface (") + status_name(st) + ")";
+        return false;
+    }
+    const int w = cam.width, h = cam.height, band = opt.band_rows > 0 ? std::min(opt.band_rows, h) : h;
+    std::vector<int16_t> upper(static_cast<size_t>(w)), lower(upper.size());
+    horizon::Horizon hz;
+    if (horizon::make_horizon({upper.data(), upper.size()}, {lower.data(), lower.size()}, w, h, hz) != Status::ok) {
+        error = "frame size rejected by lib/";
+        return false;
+    }
+    const size_t n = static_cast<size_t>(std::max(fixed.surface.samples, fixed.surface.curves));  // any sweep
+    std::vector<horizon::PlotPoint> cur(n), prev(n);
+    std::vector<int32_t> values_cur(n), values_prev(n);
+    std::vector<int16_t> pending_upper(static_cast<size_t>(w)), pending_lower(pending_upper.size());
+    const horizon::PlotBuffers buffers{{cur.data(), n},
+                                       {prev.data(), n},
+                                       {values_cur.data(), n},
+                                       {values_prev.data(), n},
+                                       {pending_upper.data(), pending_upper.size()},
+                                       {pending_lower.data(), pending_lower.size()}};
+    const horizon::GridSource<int32_t> src{fixed.values.data(), fixed.surface.samples, fixed.surface.curves, 0};
+    const std::vector<Rgb> white{{255, 255, 255}}, ramp = height_ramp();
+    horizon::PlotStyle style;
+    style.shading = opt.shade == Shade::id ? horizon::Shading::id
+                    : opt.shade == Shade::height ? horizon::Shading::height : horizon::Shading::palette;
+    style.colours = opt.shade == Shade::height ? Span<const Rgb>(ramp.data(), ramp.size()) : Span<const Rgb>(white.data(), 1);
+    style.mesh = opt.mesh;
+    style.mesh_step = mesh_step(opt, fixed.surface.curves, fixed.surface.samples);
+    std::vector<Rgb888> pixels(static_cast<size_t>(w) * band);
+    out = Result{};
+    out.width = w;
+    out.height = h;
+    uint32_t drawn = 0;
+    for (int y0 = 0; y0 < h; y0 += band) {
+        const int y1 = std::min(h, y0 + band);
+        const auto frame = band_view<Rgb888Format, uint16_t>(pixels.data(), nullptr, w, h, y0, y1);
+        clear(frame, Rgb{0, 0, 0});
+        const horizon::PlotStats s = horizon::plot(proj, src, hz, buffers, horizon::FrameTarget<Rgb888Format>(frame), style);
+        if (s.status == Status::invalid_argument) {
+            error = "lib/ rejected the plot arguments";
+            return false;
+        }
+        drawn += s.pixels;
+        out.stats = s;
+        port::append_rgb888(frame, out.rgb);
+    }
+    out.stats.pixels = drawn;
+    if (drawn == 0) {
+        error = "the view does not see the surface (nothing of it lands in the " + std::to_string(w) + "x" +
+                std::to_string(h) + " frame)";
+        return false;
+    }
+    if (out.stats.points_clamped != 0)
+        out.warning = std::to_string(out.stats.points_clamped) +
+                      " projected points lay too far outside the frame and were clamped (segments near them may shift)";
+    return true;
+}
+
+}  // namespace hider::plot
