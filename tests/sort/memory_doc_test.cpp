@@ -38,6 +38,7 @@ TEST_CASE("README.md states the sizes the code asserts for the sorted algorithms
     const long per_entry = static_cast<long>(sizeof(ScreenPoly) + 6 * sizeof(uint32_t));
     CHECK(number(text, "\\| `newell` \\| ([0-9]+) B per pool entry \\(polygon ([0-9]+)") == per_entry);
     CHECK(number(text, "B per pool entry \\(polygon ([0-9]+)") == static_cast<long>(sizeof(ScreenPoly)));
+    CHECK(number(text, "\\+ ([0-9]+) B per polygon built \\(sort keys\\)") == static_cast<long>(2 * sizeof(SortKey)));
     CHECK(number(text, "\\+ ([0-9]+) B per cut \\(two") == static_cast<long>(2 * sizeof(PieceCut)));
     CHECK(number(text, "4 B per grid cell \\(([0-9]+) at 320x240\\)") == static_cast<long>(grid_cells(320, 240)));
     CHECK(number(text, "no piece carries more than ([0-9]+) cuts") == kMaxPieceCuts);
