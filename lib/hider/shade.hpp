@@ -28,12 +28,22 @@ public:
 
     /// Colour of triangle t of `mesh`, seen from its front (true) or back side.
     Rgb color(const Mesh& mesh, size_t t, bool front) const {
-        if (opt_.shade == Shade::id) {
-            const uint32_t id = mesh.id(t);
-            return {static_cast<uint8_t>(id >> 16), static_cast<uint8_t>(id >> 8), static_cast<uint8_t>(id)};
-        }
+        if (opt_.shade == Shade::id) return id_color(mesh.id(t));
         if (mesh.normals.empty()) return opt_.base;
-        const Normal14& n = mesh.normals[t];
+        return lit(mesh.normals[t], front);
+    }
+
+    /// Colour of a face with this id and unit normal, seen from its front or back side.
+    Rgb color(uint32_t id, const Normal14& normal, bool front) const {
+        return opt_.shade == Shade::id ? id_color(id) : lit(normal, front);
+    }
+
+private:
+    __attribute__((always_inline)) static Rgb id_color(uint32_t id) {
+        return {static_cast<uint8_t>(id >> 16), static_cast<uint8_t>(id >> 8), static_cast<uint8_t>(id)};
+    }
+    /// Headlight: base * max(N.z, 0) in view space (back side: -N.z).
+    __attribute__((always_inline)) Rgb lit(const Normal14& n, bool front) const {
         // Q14 x Q14 products: the sum stays below 2^30, and 14 bits are far more than 8-bit colour needs.
         const int32_t nz_q28 = view_z_[0] * n.x + view_z_[1] * n.y + view_z_[2] * n.z;
         int32_t b_q16 = nz_q28 >> 12;
@@ -43,7 +53,6 @@ public:
         return {scale(opt_.base.r), scale(opt_.base.g), scale(opt_.base.b)};
     }
 
-private:
     DrawOptions opt_;
     int32_t view_z_[3];  // third row of the view rotation, Q14: N_view.z = row . N
 };

@@ -37,6 +37,8 @@ struct [[nodiscard]] FrameStats {
     uint64_t fragments = 0;       ///< pixel centres covered (z-buffer: counted by draw_zbuffer<true> only); 64 bits,
                                   ///< since a frame of many overlapping triangles can pass 2^32
     uint64_t pixels_written = 0;  ///< colour writes (only counted when the variant counts them)
+    uint32_t nodes_visited = 0;     ///< BSP walks: nodes entered
+    uint32_t subtrees_skipped = 0;  ///< BSP walks: subtrees not entered (outside the band, or covered)
 
     constexpr bool ok() const { return status == Status::ok; }
     /// Adds another call's counts (a band of the same frame); the first non-ok status wins.
@@ -50,6 +52,8 @@ struct [[nodiscard]] FrameStats {
         triangles_degenerate += o.triangles_degenerate;
         fragments += o.fragments;
         pixels_written += o.pixels_written;
+        nodes_visited += o.nodes_visited;
+        subtrees_skipped += o.subtrees_skipped;
     }
 };
 

@@ -34,6 +34,8 @@ const char* name_of(tool::Algo a) {
         case tool::Algo::newell: return "newell";
         case tool::Algo::reverse: return "reverse";
         case tool::Algo::raycast: return "raycast";
+        case tool::Algo::bsp: return "bsp";
+        case tool::Algo::bsp_front: return "bsp-front";
     }
     return "?";
 }

@@ -16,26 +16,6 @@ using namespace hider;
 
 namespace {
 
-struct Defects {
-    long holes = 0;   ///< covered by the z-buffer, empty here
-    long cracks = 0;  ///< inside a face's area in the z-buffer, another face here
-};
-
-Defects count_defects(const std::vector<uint32_t>& ids, const std::vector<uint32_t>& z, int w, int h) {
-    Defects d;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const uint32_t c = z[static_cast<size_t>(y) * w + x], got = ids[static_cast<size_t>(y) * w + x];
-            if (c == 0 || got == c) continue;
-            if (got == 0) { ++d.holes; continue; }
-            bool interior = x > 0 && y > 0 && x + 1 < w && y + 1 < h;
-            for (int dy = -1; dy <= 1 && interior; ++dy)
-                for (int dx = -1; dx <= 1 && interior; ++dx) interior = z[static_cast<size_t>(y + dy) * w + x + dx] == c;
-            d.cracks += interior;
-        }
-    return d;
-}
-
 tool::RenderResult render_ids(const tool::Scene& s, tool::Algo algo, bool cull, int depth_bits = 32, int band = 0) {
     tool::RenderOptions opt;
     opt.algo = algo;
@@ -51,17 +31,9 @@ tool::RenderResult render_ids(const tool::Scene& s, tool::Algo algo, bool cull, 
     return r;
 }
 
-tool::Scene scene_of(const std::string& name) {
-    tool::gen::GenScene g;
-    std::string why;
-    REQUIRE_MESSAGE(tool::gen::by_name(name, g, why), why);
-    tool::Scene s;
-    REQUIRE_MESSAGE(tool::build_scene(tool::gen::obj_model(g), tool::gen::camera_args(g), s, why), why);
-    return s;
-}
 
 void check_scene(const std::string& name) {
-    const tool::Scene s = scene_of(name);
+    const tool::Scene s = test::generated_scene(name);
     for (bool cull : {true, false}) {
         const tool::RenderResult z = render_ids(s, tool::Algo::zbuffer, cull);
         const std::vector<uint32_t> zi = tool::decode_ids(z);
@@ -69,7 +41,7 @@ void check_scene(const std::string& name) {
             const tool::RenderResult r = render_ids(s, algo, cull);
             const std::vector<uint32_t> ri = tool::decode_ids(r);
             const ref::Agreement a = ref::compare_ids(ri, zi, s.width, s.height);
-            const Defects d = count_defects(ri, zi, s.width, s.height);
+            const test::Defects d = test::count_defects(ri, zi, s.width, s.height);
             const std::string what = name + (algo == tool::Algo::newell ? " newell" : " reverse") + (cull ? " cull" : " no-cull");
             INFO(what);
             MESSAGE(what << ": " << a.off_edge_mismatch << " of " << a.off_edge << " off-edge pixels differ, holes " << d.holes

@@ -5,6 +5,7 @@
 
 #include <hider/raster/zbuffer.hpp>
 
+#include "common/gen_scenes.hpp"
 #include "host/ppm.hpp"
 
 namespace hider::test {
@@ -101,6 +102,37 @@ std::vector<int> coverage_counts(const tool::Scene& s, bool cull) {
                                });
     }
     return counts;
+}
+
+Defects count_defects(const std::vector<uint32_t>& ids, const std::vector<uint32_t>& z, int w, int h) {
+    Defects d;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const uint32_t c = z[static_cast<size_t>(y) * w + x], got = ids[static_cast<size_t>(y) * w + x];
+            if (c == 0 || got == c) continue;
+            // Inside the silhouette: every neighbour covered; inside the face: every neighbour that face.
+            bool covered = x > 0 && y > 0 && x + 1 < w && y + 1 < h, same = covered;
+            for (int dy = -1; dy <= 1 && covered; ++dy)
+                for (int dx = -1; dx <= 1 && covered; ++dx) {
+                    const uint32_t n = z[static_cast<size_t>(y + dy) * w + x + dx];
+                    covered = n != 0;
+                    same = same && n == c;
+                }
+            if (got == 0) d.holes += covered;
+            else d.cracks += same;
+        }
+    return d;
+}
+
+tool::Scene generated_scene(const std::string& name) {
+    tool::gen::GenScene g;
+    std::string why;
+    const bool known = tool::gen::by_name(name, g, why);
+    REQUIRE_MESSAGE(known, why);
+    tool::Scene s;
+    const bool built = tool::build_scene(tool::gen::obj_model(g), tool::gen::camera_args(g), s, why);
+    REQUIRE_MESSAGE(built, why);
+    return s;
 }
 
 void dump_ppm(const std::string& name, int width, int height, const std::vector<uint8_t>& rgb) {

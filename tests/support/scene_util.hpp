@@ -28,6 +28,16 @@ std::vector<uint32_t> hider_ids(const tool::Scene& s, bool cull, int depth_bits 
 /// no depth test). Both windings count unless cull is set.
 std::vector<int> coverage_counts(const tool::Scene& s, bool cull);
 
+/// What an algorithm's face-id image gets wrong where the z-buffer's shows a surface.
+struct Defects {
+    long holes = 0;   ///< inside the z-buffer's silhouette (the pixel and its 8 neighbours covered), empty here
+    long cracks = 0;  ///< inside a face's area (all 8 neighbours show it in the z-buffer), another face here
+};
+Defects count_defects(const std::vector<uint32_t>& ids, const std::vector<uint32_t>& zbuffer_ids, int width, int height);
+
+/// A generated scene (tools/common/gen_scenes.hpp) as hider sees it, faces kept whole.
+tool::Scene generated_scene(const std::string& name);
+
 /// Writes an RGB888 image as a PNG-free PPM for inspection of failures (into HIDER_TEST_OUT).
 void dump_ppm(const std::string& name, int width, int height, const std::vector<uint8_t>& rgb);
 

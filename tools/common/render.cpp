@@ -2,6 +2,7 @@
 #include "common/render.hpp"
 
 #include "common/render_ray.hpp"
+#include "common/render_bsp.hpp"
 #include "host/ppm.hpp"
 
 namespace hider::tool {
@@ -202,7 +203,7 @@ bool render_format(const Scene& scene, const RenderOptions& opt, RenderResult& o
 
 size_t default_split_pool(size_t triangles) { return triangles * 16 + 1024; }
 
-std::string algo_names() { return "zbuffer, painter, newell, reverse, raycast"; }
+std::string algo_names() { return "zbuffer, painter, newell, reverse, raycast, bsp, bsp-front"; }
 
 bool parse_algo(const std::string& name, Algo& out) {
     if (name == "zbuffer") { out = Algo::zbuffer; return true; }
@@ -210,6 +211,8 @@ bool parse_algo(const std::string& name, Algo& out) {
     if (name == "newell") { out = Algo::newell; return true; }
     if (name == "reverse") { out = Algo::reverse; return true; }
     if (name == "raycast") { out = Algo::raycast; return true; }
+    if (name == "bsp") { out = Algo::bsp; return true; }
+    if (name == "bsp-front") { out = Algo::bsp_front; return true; }
     return false;
 }
 
@@ -223,6 +226,7 @@ bool render(const Scene& scene, const RenderOptions& opt, RenderResult& out, std
         return false;
     }
     if (opt.algo == Algo::raycast) return render_raycast(scene, opt, out, error);
+    if (opt.algo == Algo::bsp || opt.algo == Algo::bsp_front) return render_bsp(scene, {}, opt, out, error);
     switch (opt.format) {
         case PixelFormat::rgb565: return render_format<Rgb565Format>(scene, opt, out, error);
         case PixelFormat::rgb888: return render_format<Rgb888Format>(scene, opt, out, error);

@@ -13,7 +13,7 @@
 
 namespace hider::tool {
 
-enum class Algo { zbuffer, painter, newell, reverse, raycast };
+enum class Algo { zbuffer, painter, newell, reverse, raycast, bsp, bsp_front };
 enum class PixelFormat { rgb565, rgb888, grey8 };
 
 /// Largest room for Newell's cuts the tools give or try (polygons).

@@ -103,14 +103,18 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
     Vec3d blo = lo, bhi = hi;
     for (const Vec3d& p : {eye, target})
         for (int i = 0; i < 3; ++i) { blo[i] = std::min(blo[i], p[i]); bhi[i] = std::max(bhi[i], p[i]); }
-    const Vec3d centre{(blo[0] + bhi[0]) / 2, (blo[1] + bhi[1]) / 2, (blo[2] + bhi[2]) / 2};
+    Vec3d centre{(blo[0] + bhi[0]) / 2, (blo[1] + bhi[1]) / 2, (blo[2] + bhi[2]) / 2};
     double half = 0;
     for (int i = 0; i < 3; ++i) half = std::max(half, (bhi[i] - blo[i]) / 2);
     if (!std::isfinite(half) || half <= 0 || !std::isfinite(kFitHalfExtent / half)) {
         error = "scene cannot be represented in fixed point (extent " + fmt(half * 2) + ")";
         return false;
     }
-    const double scale = kFitHalfExtent / half;
+    double scale = kFitHalfExtent / half;
+    if (args.fit_centre && args.fit_scale) {
+        centre = *args.fit_centre;
+        scale = *args.fit_scale;
+    }
     // A far plane beyond the scene changes no visibility: far is clamped to just past the farthest box
     // corner, and the default near follows the clamped far, never a far given far beyond the scene.
     double farthest = 0;

@@ -20,6 +20,10 @@ struct CameraArgs {
     double fov_deg = 60.0;  ///< vertical
     std::optional<double> near, far;
     int width = 320, height = 240;
+    /// World = (model - fit_centre) * fit_scale instead of fitting model + eye + target into the world
+    /// cube (a BSP's world is fixed when it is built, before any camera).
+    std::optional<Vec3d> fit_centre;
+    std::optional<double> fit_scale;
 };
 
 /// Half the side of the cube the scene's bounding box is scaled into, in world units.

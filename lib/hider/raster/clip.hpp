@@ -93,23 +93,22 @@ inline void clip_triangle(const View& view, const ViewPoint& a, const ViewPoint&
     if (src != &out) out = *src;
 }
 
-/// Calls piece(a, b, c) for each drawable screen triangle of mesh triangle t: the triangle itself, or the
-/// fan of its clipped polygon (vertices from project_vertices() in `verts`). Counts outside and clipped
-/// triangles in `st`.
+/// Calls piece(a, b, c) for each drawable screen triangle of the triangle (i0, i1, i2) of `positions`:
+/// the triangle itself, or the fan of its clipped polygon (vertices from project_vertices() in
+/// `verts`). Counts outside and clipped triangles in `st`.
 template <class Piece>
-void for_each_clipped(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, size_t t, FrameStats& st,
-                    Piece&& piece) {
-    const Tri& tri = mesh.tris[t];
-    const ScreenVertex& a = verts[tri.v[0]];
-    const ScreenVertex& b = verts[tri.v[1]];
-    const ScreenVertex& c = verts[tri.v[2]];
+void for_each_clipped(const View& view, Span<const Vec3q16> positions, Span<const ScreenVertex> verts, uint32_t i0,
+                      uint32_t i1, uint32_t i2, FrameStats& st, Piece&& piece) {
+    const ScreenVertex& a = verts[i0];
+    const ScreenVertex& b = verts[i1];
+    const ScreenVertex& c = verts[i2];
     if ((a.outside() & b.outside() & c.outside()) != 0) { ++st.triangles_outside; return; }
     const uint8_t planes = a.outside() | b.outside() | c.outside();
     if (planes == 0) { piece(a, b, c); return; }
     ++st.triangles_clipped;
     ClipPolygon poly;
-    clip_triangle(view, to_view_point(view, mesh.positions[tri.v[0]]), to_view_point(view, mesh.positions[tri.v[1]]),
-                  to_view_point(view, mesh.positions[tri.v[2]]), planes, poly);
+    clip_triangle(view, to_view_point(view, positions[i0]), to_view_point(view, positions[i1]), to_view_point(view, positions[i2]),
+                  planes, poly);
     if (poly.count < 3) return;
     const ScreenVertex first = project(view, poly.v[0]);
     ScreenVertex prev = project(view, poly.v[1]);
@@ -118,6 +117,14 @@ void for_each_clipped(const View& view, const Mesh& mesh, Span<const ScreenVerte
         piece(first, prev, next);
         prev = next;
     }
+}
+
+/// for_each_clipped() for mesh triangle t.
+template <class Piece>
+void for_each_clipped(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, size_t t, FrameStats& st,
+                      Piece&& piece) {
+    const Tri& tri = mesh.tris[t];
+    for_each_clipped(view, mesh.positions, verts, tri.v[0], tri.v[1], tri.v[2], st, static_cast<Piece&&>(piece));
 }
 
 }  // namespace hider

@@ -25,6 +25,14 @@ __attribute__((always_inline)) inline uint32_t with_face_shader(const DrawOption
     return draw(FlatShader<typename Format::Pixel>{Format::pack(shading.color(mesh, tri, front))});
 }
 
+/// with_face_shader() for a face given by its id and unit normal.
+template <class Format, class Draw>
+__attribute__((always_inline)) inline uint32_t with_face_shader(const DrawOptions& opt, const FaceShading& shading, uint32_t id,
+                                                                const Normal14& normal, bool front, Draw&& draw) {
+    if (opt.shade == Shade::depth) return draw(DepthShader<Format>(opt.depth_range));
+    return draw(FlatShader<typename Format::Pixel>{Format::pack(shading.color(id, normal, front))});
+}
+
 /// Paints every pixel of rows [y0, y1) of a set-up raster into the band; returns the pixels painted.
 template <class Raster, class Format, class Depth, class Shader>
 uint32_t paint_rows(const Raster& r, int32_t y0, int32_t y1, const FrameView<Format, Depth>& frame, const Shader& shader) {

@@ -1,0 +1,106 @@
+// The flat BSP format shared by the offline compiler (tools/hider-bsp) and the device: a header, then
+// nodes, triangles and vertices in little-endian arrays, const data in flash or a checked blob. Every
+// node's plane is the exact integer plane of a triangle on the world grid (its normal is the exact cross
+// product of two edges, its origin a vertex), so the device's eye-side test is exact and agrees with
+// every side the compiler decided. Triangles carry their face id; the compiler fixed the T-junctions its
+// cuts made, so the triangles of a face meet without cracks. Nodes and children are indices, children
+// only forward (the tree has no cycle).
+//
+// Byte layout (all little-endian, the blob 8-byte aligned):
+//   header    64 B  magic "HBSP", version, sizes, counts, max depth, checksum, the world transform
+//   nodes     64 B each, node 0 is the root (absent when node_count == 0)
+//     0  int64 n[3]          plane normal (x, y, z), exact; side(p) = n . (p - vertex[origin])
+//    24  uint32 origin       a vertex on the plane
+//    28  uint32 child[2]     front (side > 0) and back subtree, kBspNone when empty
+//    36  uint32 first        triangles lying in the plane: [first, first + count)
+//    40  uint32 count
+//    44  int16 box_min[3]    world box of the subtree (triangles of the node and below), in units of
+//    50  int16 box_max[3]    2^12 raw Q16 (kBspBoxShift), rounded outwards
+//    56  int16 normal[3]     unit normal in Q14 (Normal14) for headlight shading, along n
+//    62  uint16 reserved     0
+//   triangles 16 B each: uint32 v[3] vertex indices, uint32 face (bits 0-29 face id, bit 31: the
+//             triangle faces against n)
+//   vertices  12 B each: int32 x, y, z world position, raw Q16, |coordinate| < 2^27 (kBspWorldLimitRaw)
+#pragma once
+#include <hider/vec.hpp>
+
+namespace hider {
+
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the BSP blob is little-endian and read in place");
+
+constexpr uint32_t kBspMagic = 0x50534248u;  ///< "HBSP" as bytes
+constexpr uint16_t kBspVersion = 1;
+constexpr uint32_t kBspNone = 0xFFFFFFFFu;   ///< no child
+constexpr int kBspBoxShift = 12;             ///< node boxes in units of 2^12 raw Q16 (1/16 world unit)
+/// |coordinate| of a BSP vertex stays below this (2048 world units): the int16 boxes then hold every
+/// vertex. hider-bsp fits a model into +-512 units.
+constexpr int32_t kBspWorldLimitRaw = int32_t{1} << 27;
+constexpr uint32_t kBspFaceMask = 0x3FFFFFFFu;
+constexpr uint32_t kBspFaceBack = 0x80000000u;  ///< the triangle faces against its node's normal
+
+/// A number scale * 2^exponent with scale in Q30: how the compiler's world transform is stored (the
+/// device never needs it; tools map a camera given in model units with it).
+struct BspScaled {
+    int32_t mantissa_q30;
+    int32_t exponent;
+};
+
+struct __attribute__((may_alias)) BspHeader {
+    uint32_t magic;
+    uint16_t version;
+    uint16_t header_size;   ///< sizeof(BspHeader)
+    uint32_t node_count, triangle_count, vertex_count;
+    uint32_t max_depth;     ///< nodes on the longest root-to-leaf path
+    uint32_t total_size;    ///< bytes of the whole blob
+    uint32_t checksum;      ///< FNV-1a of every byte after the header
+    BspScaled centre[3];    ///< world = (model - centre) * scale
+    BspScaled scale;
+};
+static_assert(sizeof(BspHeader) == 64, "BSP header layout");
+
+struct __attribute__((may_alias)) BspNode {
+    int64_t n[3];
+    uint32_t origin;
+    uint32_t child[2];
+    uint32_t first, count;
+    int16_t box_min[3], box_max[3];
+    int16_t normal[3];
+    uint16_t reserved;
+};
+static_assert(sizeof(BspNode) == 64, "BSP node layout");
+
+struct __attribute__((may_alias)) BspTriangle {
+    uint32_t v[3];
+    uint32_t face;
+};
+static_assert(sizeof(BspTriangle) == 16, "BSP triangle layout");
+
+struct __attribute__((may_alias)) BspVertex {
+    int32_t x, y, z;
+};
+static_assert(sizeof(BspVertex) == 12, "BSP vertex layout");
+
+/// FNV-1a over n bytes, continuing from `hash` (start with kFnvBasis).
+constexpr uint32_t kFnvBasis = 0x811C9DC5u;
+constexpr uint32_t fnv1a(const uint8_t* p, size_t n, uint32_t hash = kFnvBasis) {
+    for (size_t i = 0; i < n; ++i) hash = (hash ^ p[i]) * 0x01000193u;
+    return hash;
+}
+
+/// Byte offsets of the arrays in a blob with these counts (and its total size).
+struct BspLayout {
+    size_t nodes, triangles, vertices, total;
+};
+constexpr BspLayout bsp_layout(uint32_t nodes, uint32_t triangles, uint32_t vertices) {
+    BspLayout l{};
+    l.nodes = sizeof(BspHeader);
+    l.triangles = l.nodes + size_t{nodes} * sizeof(BspNode);
+    l.vertices = l.triangles + size_t{triangles} * sizeof(BspTriangle);
+    l.total = l.vertices + size_t{vertices} * sizeof(BspVertex);
+    return l;
+}
+
+/// Stack entries a walk needs per level of the tree (walk.hpp): a node and its second child wait.
+constexpr uint32_t kBspStackPerLevel = 2;
+
+}  // namespace hider

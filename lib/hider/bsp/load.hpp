@@ -1,0 +1,99 @@
+// Validating a BSP blob (format.hpp) once, so the walks can trust every index: magic, version, sizes,
+// checksum, each index in range, children only forward (no cycle), the depth within the caller's stack.
+// Nothing is copied: the tree reads the blob in place (flash on a device).
+#pragma once
+#include <hider/bsp/format.hpp>
+#include <hider/status.hpp>
+#include <hider/view.hpp>
+
+namespace hider {
+
+/// A validated tree: spans into its blob (borrowed for as long as the tree is used).
+struct BspTree {
+    const BspHeader* header = nullptr;
+    Span<const BspNode> nodes;
+    Span<const BspTriangle> triangles;
+    Span<const Vec3q16> vertices;  ///< the world positions, for project_vertices()
+    uint32_t max_depth = 0;        ///< nodes on the longest path from the root, as measured by bsp_load
+};
+static_assert(sizeof(Vec3q16) == sizeof(BspVertex), "BSP vertices are read as Vec3q16");
+
+/// Stack entries (uint32) a walk of a tree `depth` nodes deep needs (walk.hpp).
+constexpr size_t bsp_stack_entries(uint32_t depth) { return size_t{kBspStackPerLevel} * depth + 1; }
+
+/// Checks `blob` and points `out` into it. `stack` is the caller's walk stack: it must hold
+/// bsp_stack_entries(depth) entries for the tree's depth (load() uses it to measure that depth).
+/// Returns bad_data for any inconsistency (out untouched), out_of_range for a vertex outside
+/// kBspWorldLimitRaw, invalid_argument for a blob not 8-byte aligned, capacity_exceeded when the tree is deeper than
+/// the stack holds. Cost: one pass over the bytes (checksum) and one over the nodes.
+inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& out) {
+    if ((reinterpret_cast<uintptr_t>(blob.data()) & 7u) != 0) return Status::invalid_argument;
+    if (blob.size() < sizeof(BspHeader)) return Status::bad_data;
+    const BspHeader& h = *reinterpret_cast<const BspHeader*>(blob.data());
+    if (h.magic != kBspMagic || h.version != kBspVersion || h.header_size != sizeof(BspHeader)) return Status::bad_data;
+    // Sizes in 64 bits: the counts come from the blob and must not wrap a 32-bit size_t.
+    const uint64_t total = uint64_t{sizeof(BspHeader)} + uint64_t{h.node_count} * sizeof(BspNode) +
+                           uint64_t{h.triangle_count} * sizeof(BspTriangle) + uint64_t{h.vertex_count} * sizeof(BspVertex);
+    if (total != h.total_size || total != blob.size() || h.node_count >= 0x80000000u) return Status::bad_data;
+    if (fnv1a(blob.data() + sizeof(BspHeader), blob.size() - sizeof(BspHeader)) != h.checksum) return Status::bad_data;
+    const BspLayout l = bsp_layout(h.node_count, h.triangle_count, h.vertex_count);
+    const BspNode* nodes = reinterpret_cast<const BspNode*>(blob.data() + l.nodes);
+    const BspTriangle* tris = reinterpret_cast<const BspTriangle*>(blob.data() + l.triangles);
+    const Vec3q16* verts = reinterpret_cast<const Vec3q16*>(blob.data() + l.vertices);
+    for (uint32_t i = 0; i < h.node_count; ++i) {
+        const BspNode& n = nodes[i];
+        if (n.origin >= h.vertex_count || n.first > h.triangle_count || n.count > h.triangle_count - n.first) return Status::bad_data;
+        for (uint32_t c : n.child)
+            if (c != kBspNone && (c <= i || c >= h.node_count)) return Status::bad_data;  // forward only: no cycle
+        for (int k = 0; k < 3; ++k)
+            if (n.box_min[k] > n.box_max[k]) return Status::bad_data;
+        if (n.n[0] == 0 && n.n[1] == 0 && n.n[2] == 0) return Status::bad_data;
+        // |n| < 2^62 keeps the eye test's three products and their sum inside 128 bits.
+        for (int64_t c : n.n)
+            if (c <= -(int64_t{1} << 62) || c >= (int64_t{1} << 62)) return Status::bad_data;
+    }
+    for (uint32_t i = 0; i < h.triangle_count; ++i) {
+        const BspTriangle& t = tris[i];
+        if (t.v[0] >= h.vertex_count || t.v[1] >= h.vertex_count || t.v[2] >= h.vertex_count) return Status::bad_data;
+        if ((t.face & ~(kBspFaceMask | kBspFaceBack)) != 0) return Status::bad_data;
+    }
+    for (uint32_t i = 0; i < h.vertex_count; ++i) {
+        const int32_t c[3] = {verts[i].x.raw(), verts[i].y.raw(), verts[i].z.raw()};
+        for (int32_t e : c)
+            if (e <= -kBspWorldLimitRaw || e >= kBspWorldLimitRaw) return Status::out_of_range;
+    }
+    // Depth: a preorder walk keeping (node, depth) pairs of pending back children in the caller's stack.
+    uint32_t depth = 0;
+    if (h.node_count != 0) {
+        size_t top = 0;
+        uint32_t node = 0, level = 1, visits = 0;
+        for (;;) {
+            if (++visits > h.node_count) return Status::bad_data;  // a node with two parents: not a tree
+            depth = max(depth, level);
+            if (level > h.max_depth) return Status::bad_data;
+            if (bsp_stack_entries(level) > stack.size()) return Status::capacity_exceeded;
+            const BspNode& n = nodes[node];
+            if (n.child[1] != kBspNone) {
+                if (top + 2 > stack.size()) return Status::capacity_exceeded;
+                stack[top++] = n.child[1];
+                stack[top++] = level + 1;
+            }
+            if (n.child[0] != kBspNone) {
+                node = n.child[0];
+                ++level;
+                continue;
+            }
+            if (top == 0) break;
+            level = stack[--top];
+            node = stack[--top];
+        }
+    }
+    out.header = &h;
+    out.nodes = {nodes, h.node_count};
+    out.triangles = {tris, h.triangle_count};
+    out.vertices = {verts, h.vertex_count};
+    out.max_depth = depth;
+    return Status::ok;
+}
+
+}  // namespace hider

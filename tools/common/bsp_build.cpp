@@ -1,0 +1,592 @@
+// The offline BSP compiler (see bsp_build.hpp). Host code: standard library, 128-bit integers, doubles
+// only to round cut points and to order points along a line.
+#include "common/bsp_build.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <tuple>
+#include <sstream>
+#include <unordered_map>
+
+namespace hider::tool {
+namespace {
+
+using I128 = __int128;
+using P = std::array<int32_t, 3>;  // a world grid point, raw Q16
+
+struct PHash {
+    size_t operator()(const P& p) const {
+        uint64_t h = 1469598103934665603ull;
+        for (int32_t c : p) h = (h ^ static_cast<uint32_t>(c)) * 1099511628211ull;
+        return static_cast<size_t>(h);
+    }
+};
+
+/// An exact plane: side(p) = n . (p - o).
+struct Plane {
+    int64_t n[3];
+    P o;
+    uint32_t origin;  ///< vertex id of o
+};
+
+/// A convex polygon piece of input triangle `tri` (whose plane is planes_[tri], in group groups_[tri]);
+/// sup[i] is the line the edge v[i] -> v[i+1] lies on.
+struct Poly {
+    std::vector<uint32_t> v;
+    std::vector<uint32_t> sup;
+    uint32_t tri;
+};
+
+/// A line polygon edges lie on (an input edge, or a cut line inside a face): the points made on it.
+struct Support {
+    std::vector<uint32_t> points;
+};
+
+class Builder {
+public:
+    Builder(const BspOptions& opt, BspStats& stats) : opt_(opt), stats_(stats) {}
+
+    bool run(const std::vector<Vec3q16>& positions, const std::vector<Tri>& tris, const std::vector<uint32_t>& ids,
+             BspBuilt& out, std::string& error) {
+        // Vertices merged by position, so triangles that share a corner share its id (and their edges).
+        std::vector<uint32_t> remap(positions.size());
+        for (size_t i = 0; i < positions.size(); ++i)
+            remap[i] = vertex({positions[i].x.raw(), positions[i].y.raw(), positions[i].z.raw()});
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> edge_support;
+        std::vector<uint32_t> work;
+        stats_.input_triangles = tris.size();
+        for (size_t t = 0; t < tris.size(); ++t) {
+            const uint32_t a = remap[tris[t].v[0]], b = remap[tris[t].v[1]], c = remap[tris[t].v[2]];
+            Plane pl = plane_of(a, b, c);
+            if (pl.n[0] == 0 && pl.n[1] == 0 && pl.n[2] == 0) {
+                ++stats_.degenerate;
+                continue;
+            }
+            planes_.push_back(pl);
+            groups_.push_back(group_of(pl));
+            faces_.push_back(ids.empty() ? static_cast<uint32_t>(t + 1) : ids[t]);
+            Poly p{{a, b, c}, {}, static_cast<uint32_t>(planes_.size() - 1)};
+            for (int i = 0; i < 3; ++i) {
+                const uint32_t u = p.v[i], w = p.v[(i + 1) % 3];
+                const auto key = std::minmax(u, w);
+                auto it = edge_support.find(key);
+                if (it == edge_support.end()) {
+                    it = edge_support.emplace(key, new_support()).first;
+                    supports_[it->second].points = {key.first, key.second};
+                }
+                p.sup.push_back(it->second);
+            }
+            polys_.push_back(std::move(p));
+            work.push_back(static_cast<uint32_t>(polys_.size() - 1));
+        }
+        for (const Plane& pl : planes_)
+            for (int64_t c : pl.n)
+                if (c <= -(int64_t{1} << 62) || c >= (int64_t{1} << 62)) {
+                    error = "a triangle's plane does not fit the format (normal beyond 2^62)";
+                    return false;
+                }
+        build_tree(std::move(work));
+        return finish(out, error);
+    }
+
+private:
+    uint32_t vertex(const P& p) {
+        auto it = index_.find(p);
+        if (it != index_.end()) return it->second;
+        verts_.push_back(p);
+        index_.emplace(p, static_cast<uint32_t>(verts_.size() - 1));
+        return static_cast<uint32_t>(verts_.size() - 1);
+    }
+
+    uint32_t new_support() {
+        supports_.emplace_back();
+        return static_cast<uint32_t>(supports_.size() - 1);
+    }
+
+    void add_point(uint32_t support, uint32_t v) {
+        std::vector<uint32_t>& pts = supports_[support].points;
+        if (std::find(pts.begin(), pts.end(), v) == pts.end()) pts.push_back(v);
+    }
+
+    Plane plane_of(uint32_t a, uint32_t b, uint32_t c) const {
+        const P &pa = verts_[a], &pb = verts_[b], &pc = verts_[c];
+        const int64_t e1[3] = {int64_t{pb[0]} - pa[0], int64_t{pb[1]} - pa[1], int64_t{pb[2]} - pa[2]};
+        const int64_t e2[3] = {int64_t{pc[0]} - pa[0], int64_t{pc[1]} - pa[1], int64_t{pc[2]} - pa[2]};
+        Plane pl;
+        pl.n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        pl.n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        pl.n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        pl.o = pa;
+        pl.origin = a;
+        return pl;
+    }
+
+    /// The group of planes equal to pl (exactly: the same normal direction and offset), so polygons of
+    /// coplanar triangles are recognised as coplanar whatever rounding their cut points had.
+    uint32_t group_of(const Plane& pl) {
+        int64_t g = 0;
+        for (int64_t c : pl.n) g = std::gcd(g, c < 0 ? -c : c);
+        int64_t n[3] = {pl.n[0] / g, pl.n[1] / g, pl.n[2] / g};
+        const int flip = (n[0] < 0 || (n[0] == 0 && (n[1] < 0 || (n[1] == 0 && n[2] < 0)))) ? -1 : 1;
+        for (int64_t& c : n) c *= flip;
+        const I128 d = I128(n[0]) * pl.o[0] + I128(n[1]) * pl.o[1] + I128(n[2]) * pl.o[2];
+        const auto key = std::make_tuple(n[0], n[1], n[2], static_cast<int64_t>(d >> 64), static_cast<uint64_t>(d));
+        const auto it = group_index_.emplace(key, static_cast<uint32_t>(group_index_.size())).first;
+        return it->second;
+    }
+
+    static I128 side(const Plane& pl, const P& p) {
+        return I128(pl.n[0]) * (int64_t{p[0]} - pl.o[0]) + I128(pl.n[1]) * (int64_t{p[1]} - pl.o[1]) +
+               I128(pl.n[2]) * (int64_t{p[2]} - pl.o[2]);
+    }
+    static int sign(I128 v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+
+    /// Side of a vertex: 0 on the plane or within half a grid step of it (a rounded cut point).
+    int side_of(const Plane& pl, uint32_t v) const {
+        const I128 s = side(pl, verts_[v]);
+        const I128 slack = (I128(pl.n[0] < 0 ? -pl.n[0] : pl.n[0]) + (pl.n[1] < 0 ? -pl.n[1] : pl.n[1]) +
+                            (pl.n[2] < 0 ? -pl.n[2] : pl.n[2])) / 2;
+        return s > slack ? 1 : (s < -slack ? -1 : 0);
+    }
+
+    /// -1 back, +1 front, 0 coplanar, 2 straddles. Pieces of triangles of the plane's group are coplanar.
+    int classify(uint32_t plane, const Poly& p) const {
+        if (groups_[p.tri] == groups_[plane]) return 0;
+        const Plane& pl = planes_[plane];
+        bool pos = false, neg = false;
+        for (uint32_t v : p.v) {
+            const int s = side_of(pl, v);
+            pos = pos || s > 0;
+            neg = neg || s < 0;
+        }
+        return pos && neg ? 2 : (pos ? 1 : (neg ? -1 : 0));
+    }
+
+    /// The splitter among evenly spaced candidates of `list` (the cost is measured on at most 4096 of its
+    /// polygons, evenly spaced, so large nodes stay fast).
+    uint32_t choose(const std::vector<uint32_t>& list) const {
+        const size_t n = list.size(), tries = std::min<size_t>(n, static_cast<size_t>(std::max(1, opt_.candidates)));
+        const size_t sample = std::min<size_t>(n, 4096);
+        uint32_t best = polys_[list[0]].tri;
+        int64_t best_cost = INT64_MAX;
+        std::vector<uint32_t> tried;
+        for (size_t k = 0; k < tries; ++k) {
+            const uint32_t plane = polys_[list[k * n / tries]].tri;
+            if (std::find(tried.begin(), tried.end(), plane) != tried.end()) continue;
+            tried.push_back(plane);
+            int64_t front = 0, back = 0, cut = 0;
+            for (size_t j = 0; j < sample; ++j) {
+                const int c = classify(plane, polys_[list[j * n / sample]]);
+                front += c == 1;
+                back += c == -1;
+                cut += c == 2;
+            }
+            const int64_t cost = opt_.split_weight * cut + opt_.balance_weight * std::llabs(front - back);
+            if (cost < best_cost) {
+                best_cost = cost;
+                best = plane;
+            }
+        }
+        return best;
+    }
+
+    /// The grid point where edge (a, b) meets the plane, the same whichever polygon asks (computed from
+    /// the lower vertex id).
+    uint32_t cut_point(const Plane& pl, uint32_t a, uint32_t b) {
+        if (a > b) std::swap(a, b);
+        const I128 sa = side(pl, verts_[a]), sb = side(pl, verts_[b]);
+        const long double t = static_cast<long double>(sa) / static_cast<long double>(sa - sb);
+        P m;
+        for (int k = 0; k < 3; ++k)
+            m[k] = static_cast<int32_t>(std::llround(verts_[a][k] + t * (static_cast<long double>(verts_[b][k]) - verts_[a][k])));
+        return vertex(m);
+    }
+
+    /// Cuts p by the plane into its front and back parts (Sutherland-Hodgman with two outputs).
+    void split(const Plane& pl, const Poly& p, Poly& front, Poly& back) {
+        const size_t n = p.v.size();
+        std::vector<int> s(n);
+        for (size_t i = 0; i < n; ++i) s[i] = side_of(pl, p.v[i]);
+        const uint32_t cut_line = new_support();
+        struct Out {
+            uint32_t v;
+            int e0, e1;  ///< input edges the point lies on (-1: none)
+        };
+        std::vector<Out> fo, bo;
+        for (size_t i = 0; i < n; ++i) {
+            const size_t j = (i + 1) % n;
+            const int prev = static_cast<int>((i + n - 1) % n);
+            if (s[i] >= 0) fo.push_back({p.v[i], prev, static_cast<int>(i)});
+            if (s[i] <= 0) bo.push_back({p.v[i], prev, static_cast<int>(i)});
+            if (s[i] == 0) add_point(cut_line, p.v[i]);
+            if (s[i] * s[j] < 0) {
+                const uint32_t m = cut_point(pl, p.v[i], p.v[j]);
+                add_point(p.sup[i], m);
+                add_point(cut_line, m);
+                fo.push_back({m, static_cast<int>(i), -1});
+                bo.push_back({m, static_cast<int>(i), -1});
+            }
+        }
+        auto make = [&](const std::vector<Out>& o, Poly& out) {
+            out.tri = p.tri;
+            out.v.clear();
+            out.sup.clear();
+            for (size_t k = 0; k < o.size(); ++k) {
+                const Out& a = o[k];
+                const Out& b = o[(k + 1) % o.size()];
+                int common = -1;
+                for (int ea : {a.e0, a.e1})
+                    if (ea >= 0 && (ea == b.e0 || ea == b.e1)) common = ea;
+                if (a.v == b.v) continue;  // a cut point rounded onto a corner
+                out.v.push_back(a.v);
+                out.sup.push_back(common >= 0 ? p.sup[static_cast<size_t>(common)] : cut_line);
+            }
+        };
+        make(fo, front);
+        make(bo, back);
+    }
+
+    /// Splits the polygons of each node by its plane, depth first, in preorder (children after parents).
+    void build_tree(std::vector<uint32_t> all) {
+        struct Item {
+            std::vector<uint32_t> list;
+            uint32_t parent;
+            int child;
+            uint32_t depth;
+        };
+        std::vector<Item> stack;
+        if (!all.empty()) stack.push_back({std::move(all), kBspNone, 0, 1});
+        while (!stack.empty()) {
+            Item item = std::move(stack.back());
+            stack.pop_back();
+            const uint32_t id = static_cast<uint32_t>(node_plane_.size());
+            const uint32_t plane = choose(item.list);
+            node_plane_.push_back(plane);
+            node_polys_.emplace_back();
+            node_child_.push_back({kBspNone, kBspNone});
+            node_depth_.push_back(item.depth);
+            stats_.max_depth = std::max<size_t>(stats_.max_depth, item.depth);
+            if (item.parent != kBspNone) node_child_[item.parent][item.child] = id;
+            std::vector<uint32_t> front, back;
+            const Plane& pl = planes_[plane];
+            for (uint32_t q : item.list) {
+                const int c = classify(plane, polys_[q]);
+                if (c == 0) node_polys_[id].push_back(q);
+                else if (c == 1) front.push_back(q);
+                else if (c == -1) back.push_back(q);
+                else {
+                    Poly f, b;
+                    split(pl, polys_[q], f, b);
+                    ++stats_.cuts;
+                    polys_[q] = std::move(f);  // the front part keeps the slot
+                    polys_.push_back(std::move(b));
+                    if (polys_[q].v.size() >= 3) front.push_back(q);
+                    if (polys_.back().v.size() >= 3) back.push_back(static_cast<uint32_t>(polys_.size() - 1));
+                }
+            }
+            if (!back.empty()) stack.push_back({std::move(back), id, 1, item.depth + 1});
+            if (!front.empty()) stack.push_back({std::move(front), id, 0, item.depth + 1});
+        }
+    }
+
+    /// Position of v along support s (its first two points give origin and direction).
+    double along(uint32_t s, uint32_t v) const {
+        const std::vector<uint32_t>& pts = supports_[s].points;
+        const P& o = verts_[pts[0]];
+        const P& d1 = verts_[pts.size() > 1 ? pts[1] : pts[0]];
+        double dir[3], dd = 0, t = 0;
+        for (int k = 0; k < 3; ++k) {
+            dir[k] = static_cast<double>(d1[k]) - o[k];
+            dd += dir[k] * dir[k];
+            t += (static_cast<double>(verts_[v][k]) - o[k]) * dir[k];
+        }
+        return dd == 0 ? 0 : t / dd;
+    }
+
+    /// Every point made on an edge's line between its ends joins the edge, in order along it.
+    std::vector<uint32_t> closed_loop(const Poly& p) {
+        std::vector<uint32_t> loop;
+        for (size_t i = 0; i < p.v.size(); ++i) {
+            const uint32_t a = p.v[i], b = p.v[(i + 1) % p.v.size()], s = p.sup[i];
+            loop.push_back(a);
+            const double ta = along(s, a), tb = along(s, b);
+            std::vector<std::pair<double, uint32_t>> inner;
+            for (uint32_t q : supports_[s].points) {
+                if (q == a || q == b) continue;
+                const double tq = along(s, q);
+                if ((tq > ta && tq < tb) || (tq < ta && tq > tb)) inner.push_back({tb > ta ? tq : -tq, q});
+            }
+            std::sort(inner.begin(), inner.end());
+            for (const auto& e : inner) loop.push_back(e.second);
+            stats_.tjunction_points += inner.size();
+        }
+        return loop;
+    }
+
+    /// Twice the area vector of triangle (a, b, c), exact.
+    std::array<I128, 3> area(uint32_t a, uint32_t b, uint32_t c) const {
+        const P &pa = verts_[a], &pb = verts_[b], &pc = verts_[c];
+        const int64_t e1[3] = {int64_t{pb[0]} - pa[0], int64_t{pb[1]} - pa[1], int64_t{pb[2]} - pa[2]};
+        const int64_t e2[3] = {int64_t{pc[0]} - pa[0], int64_t{pc[1]} - pa[1], int64_t{pc[2]} - pa[2]};
+        return {I128(e1[1]) * e2[2] - I128(e1[2]) * e2[1], I128(e1[2]) * e2[0] - I128(e1[0]) * e2[2],
+                I128(e1[0]) * e2[1] - I128(e1[1]) * e2[0]};
+    }
+
+    /// Triangles of a closed loop: a fan from a corner whose triangles all have area, else from a new
+    /// vertex at the centroid, else (a loop too thin for either) the plain fan.
+    void triangulate(const std::vector<uint32_t>& loop, const Plane& pl, std::vector<std::array<uint32_t, 3>>& out) {
+        const size_t n = loop.size();
+        auto facing = [&](uint32_t a, uint32_t b, uint32_t c) {
+            const auto ar = area(a, b, c);
+            return ar[0] * pl.n[0] + ar[1] * pl.n[1] + ar[2] * pl.n[2];
+        };
+        I128 total = 0;  // orientation of the loop along the node's normal
+        for (size_t i = 1; i + 1 < n; ++i) total += facing(loop[0], loop[i], loop[i + 1]);
+        const int orient = total > 0 ? 1 : -1;
+        for (size_t k = 0; k < n; ++k) {
+            bool good = true;
+            for (size_t i = 1; i + 1 < n && good; ++i) good = sign(facing(loop[k], loop[(k + i) % n], loop[(k + i + 1) % n])) == orient;
+            if (!good) continue;
+            for (size_t i = 1; i + 1 < n; ++i) out.push_back({loop[k], loop[(k + i) % n], loop[(k + i + 1) % n]});
+            return;
+        }
+        P c{};
+        for (int d = 0; d < 3; ++d) {
+            double sum = 0;
+            for (uint32_t v : loop) sum += verts_[v][d];
+            c[d] = static_cast<int32_t>(std::llround(sum / static_cast<double>(n)));
+        }
+        const uint32_t cv = vertex(c);
+        bool good = true;
+        for (size_t i = 0; i < n && good; ++i) good = sign(facing(cv, loop[i], loop[(i + 1) % n])) == orient;
+        if (good) {
+            for (size_t i = 0; i < n; ++i) out.push_back({cv, loop[i], loop[(i + 1) % n]});
+            return;
+        }
+        for (size_t i = 1; i + 1 < n; ++i) out.push_back({loop[0], loop[i], loop[i + 1]});
+    }
+
+    bool finish(BspBuilt& out, std::string& error) {
+        const size_t nodes = node_plane_.size();
+        out.nodes.assign(nodes, BspNode{});
+        out.triangles.clear();
+        std::vector<std::array<int64_t, 6>> box(nodes, {INT64_MAX, INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN, INT64_MIN});
+        for (size_t id = 0; id < nodes; ++id) {
+            const Plane& pl = planes_[node_plane_[id]];
+            BspNode& nd = out.nodes[id];
+            nd.n[0] = pl.n[0];
+            nd.n[1] = pl.n[1];
+            nd.n[2] = pl.n[2];
+            nd.origin = pl.origin;
+            nd.child[0] = node_child_[id][0];
+            nd.child[1] = node_child_[id][1];
+            nd.first = static_cast<uint32_t>(out.triangles.size());
+            Vec3q30 unit{};
+            if (normalize({pl.n[0], pl.n[1], pl.n[2]}, unit)) {
+                auto to14 = [](Q30 c) { return static_cast<int16_t>((c.raw() + (1 << 15)) >> 16); };
+                nd.normal[0] = to14(unit.x);
+                nd.normal[1] = to14(unit.y);
+                nd.normal[2] = to14(unit.z);
+            }
+            for (uint32_t q : node_polys_[id]) {
+                const Poly& p = polys_[q];
+                const Plane& own = planes_[p.tri];
+                const I128 dot = I128(own.n[0]) * pl.n[0] + I128(own.n[1]) * pl.n[1] + I128(own.n[2]) * pl.n[2];
+                const uint32_t face = (faces_[p.tri] & kBspFaceMask) | (dot < 0 ? kBspFaceBack : 0u);
+                ++stats_.polygons;
+                std::vector<std::array<uint32_t, 3>> tris;
+                triangulate(closed_loop(p), own, tris);
+                for (const auto& t : tris) {
+                    out.triangles.push_back({{t[0], t[1], t[2]}, face});
+                    for (uint32_t v : t)
+                        for (int k = 0; k < 3; ++k) {
+                            box[id][k] = std::min<int64_t>(box[id][k], verts_[v][k]);
+                            box[id][3 + k] = std::max<int64_t>(box[id][3 + k], verts_[v][k]);
+                        }
+                }
+            }
+            nd.count = static_cast<uint32_t>(out.triangles.size() - nd.first);
+            stats_.largest_node = std::max<size_t>(stats_.largest_node, nd.count);
+        }
+        for (size_t id = nodes; id-- > 0;) {  // children come after their parents: boxes bottom-up
+            for (uint32_t c : node_child_[id])
+                if (c != kBspNone)
+                    for (int k = 0; k < 3; ++k) {
+                        box[id][k] = std::min(box[id][k], box[c][k]);
+                        box[id][3 + k] = std::max(box[id][3 + k], box[c][3 + k]);
+                    }
+            for (int k = 0; k < 3; ++k) {
+                if (box[id][k] > box[id][3 + k]) box[id][k] = box[id][3 + k] = 0;  // no triangle below (all degenerate)
+                out.nodes[id].box_min[k] = static_cast<int16_t>(box[id][k] >> kBspBoxShift);  // floor
+                out.nodes[id].box_max[k] = static_cast<int16_t>(-((-box[id][3 + k]) >> kBspBoxShift));  // ceil
+            }
+        }
+        if (verts_.size() >= 0x80000000u || out.triangles.size() >= 0x80000000u || nodes >= 0x80000000u) {
+            error = "the tree is too large for the format";
+            return false;
+        }
+        out.vertices.clear();
+        for (const P& p : verts_) out.vertices.push_back({p[0], p[1], p[2]});
+        out.max_depth = static_cast<uint32_t>(stats_.max_depth);
+        stats_.nodes = nodes;
+        stats_.triangles = out.triangles.size();
+        stats_.vertices = verts_.size();
+        return true;
+    }
+
+    const BspOptions& opt_;
+    BspStats& stats_;
+    std::vector<P> verts_;
+    std::unordered_map<P, uint32_t, PHash> index_;
+    std::vector<Plane> planes_;    ///< per input triangle kept
+    std::vector<uint32_t> groups_;  ///< its group of equal planes
+    std::map<std::tuple<int64_t, int64_t, int64_t, int64_t, uint64_t>, uint32_t> group_index_;
+    std::vector<uint32_t> faces_;  ///< face id per input triangle kept
+    std::vector<Poly> polys_;
+    std::vector<Support> supports_;
+    std::vector<uint32_t> node_plane_, node_depth_;
+    std::vector<std::vector<uint32_t>> node_polys_;
+    std::vector<std::array<uint32_t, 2>> node_child_;
+};
+
+BspScaled to_scaled(double v) {
+    if (v == 0 || !std::isfinite(v)) return {0, 0};
+    int e = 0;
+    const double m = std::frexp(v, &e);  // v = m 2^e, 0.5 <= |m| < 1
+    return {static_cast<int32_t>(std::llround(m * 1073741824.0)), e};
+}
+double from_scaled(BspScaled s) { return std::ldexp(static_cast<double>(s.mantissa_q30), s.exponent - 30); }
+
+}  // namespace
+
+bool build_bsp(const std::vector<Vec3q16>& positions, const std::vector<Tri>& tris, const std::vector<uint32_t>& ids,
+               const BspOptions& opt, BspBuilt& out, BspStats& stats, std::string& error) {
+    stats = BspStats{};
+    Builder b(opt, stats);
+    return b.run(positions, tris, ids, out, error);
+}
+
+bool bsp_model_fit(const ObjModel& model, BspFit& out, std::string& error) {
+    if (model.vertices.empty()) {
+        error = "empty model";
+        return false;
+    }
+    Vec3d lo = model.vertices[0], hi = model.vertices[0];
+    for (const auto& v : model.vertices)
+        for (int i = 0; i < 3; ++i) { lo[i] = std::min(lo[i], v[i]); hi[i] = std::max(hi[i], v[i]); }
+    double half = 0;
+    for (int i = 0; i < 3; ++i) half = std::max(half, (hi[i] - lo[i]) / 2);
+    if (!std::isfinite(half) || half <= 0 || !std::isfinite(kFitHalfExtent / half)) {
+        error = "model cannot be represented in fixed point (extent " + std::to_string(half * 2) + ")";
+        return false;
+    }
+    for (int i = 0; i < 3; ++i) out.centre[i] = from_scaled(to_scaled((lo[i] + hi[i]) / 2));
+    out.scale = from_scaled(to_scaled(kFitHalfExtent / half));
+    return true;
+}
+
+std::vector<uint8_t> bsp_blob(const BspBuilt& tree, const BspFit& fit) {
+    const BspLayout l = bsp_layout(static_cast<uint32_t>(tree.nodes.size()), static_cast<uint32_t>(tree.triangles.size()),
+                                   static_cast<uint32_t>(tree.vertices.size()));
+    std::vector<uint8_t> blob(l.total, 0);
+    std::memcpy(blob.data() + l.nodes, tree.nodes.data(), tree.nodes.size() * sizeof(BspNode));
+    std::memcpy(blob.data() + l.triangles, tree.triangles.data(), tree.triangles.size() * sizeof(BspTriangle));
+    std::memcpy(blob.data() + l.vertices, tree.vertices.data(), tree.vertices.size() * sizeof(BspVertex));
+    BspHeader h{};
+    h.magic = kBspMagic;
+    h.version = kBspVersion;
+    h.header_size = sizeof(BspHeader);
+    h.node_count = static_cast<uint32_t>(tree.nodes.size());
+    h.triangle_count = static_cast<uint32_t>(tree.triangles.size());
+    h.vertex_count = static_cast<uint32_t>(tree.vertices.size());
+    h.max_depth = tree.max_depth;
+    h.total_size = static_cast<uint32_t>(l.total);
+    h.checksum = fnv1a(blob.data() + sizeof(BspHeader), blob.size() - sizeof(BspHeader));
+    for (int i = 0; i < 3; ++i) h.centre[i] = to_scaled(fit.centre[i]);
+    h.scale = to_scaled(fit.scale);
+    std::memcpy(blob.data(), &h, sizeof h);
+    return blob;
+}
+
+BspFit bsp_fit_of(const BspHeader& h) {
+    BspFit f;
+    for (int i = 0; i < 3; ++i) f.centre[i] = from_scaled(h.centre[i]);
+    f.scale = from_scaled(h.scale);
+    return f;
+}
+
+std::string bsp_header_source(const std::vector<uint8_t>& blob, const std::string& name, const std::string& source) {
+    std::ostringstream o;
+    o << "// Generated by hider-bsp from " << source << ": a BSP tree in the flat format of lib/hider/bsp/format.hpp\n"
+      << "// (" << blob.size() << " bytes). Do not edit; load it with hider::bsp_load().\n"
+      << "#pragma once\n#include <stdint.h>\n\nnamespace hider::bsp_data {\n\n"
+      << "alignas(8) inline constexpr uint8_t " << name << "[" << blob.size() << "] = {";
+    for (size_t i = 0; i < blob.size(); ++i) {
+        if (i % 24 == 0) o << "\n   ";
+        o << ' ' << static_cast<unsigned>(blob[i]) << ',';
+    }
+    o << "\n};\n\n}  // namespace hider::bsp_data\n";
+    return o.str();
+}
+
+bool bsp_from_obj(const std::string& path, const BspOptions& opt, std::vector<uint8_t>& blob, BspStats& stats,
+                  std::string& error) {
+    ObjModel model;
+    ObjError err;
+    if (!load_obj(path, model, err)) {
+        error = format(err);
+        return false;
+    }
+    BspFit fit;
+    if (!bsp_model_fit(model, fit, error)) {
+        error = path + ": " + error;
+        return false;
+    }
+    CameraArgs cam;
+    cam.fit_centre = fit.centre;
+    cam.fit_scale = fit.scale;
+    cam.width = cam.height = 1;  // the camera is irrelevant here: only the world positions are kept
+    Scene scene;
+    if (!build_scene(model, cam, scene, error)) {
+        error = path + ": " + error;
+        return false;
+    }
+    BspBuilt tree;
+    if (!build_bsp(scene.positions, scene.tris, scene.ids, opt, tree, stats, error)) {
+        error = path + ": " + error;
+        return false;
+    }
+    blob = bsp_blob(tree, fit);
+    stats.bytes = blob.size();
+    return true;
+}
+
+bool bsp_scene(const BspTree& tree, const CameraArgs& args, Scene& out, std::string& error) {
+    const BspFit fit = bsp_fit_of(*tree.header);
+    if (!(fit.scale > 0) || !std::isfinite(fit.scale)) {
+        error = "the tree's world transform is unusable";
+        return false;
+    }
+    ObjModel model;  // the tree's vertices in model units: camera defaults as for the OBJ it came from
+    for (const Vec3q16& v : tree.vertices)
+        model.vertices.push_back({to_double(v.x) / fit.scale + fit.centre[0], to_double(v.y) / fit.scale + fit.centre[1],
+                                  to_double(v.z) / fit.scale + fit.centre[2]});
+    if (!model.vertices.empty()) model.faces.push_back(ObjFace{{0, 0, 0}, 1, 0});  // build_scene wants a face
+    CameraArgs cam = args;
+    cam.fit_centre = fit.centre;
+    cam.fit_scale = fit.scale;
+    if (!build_scene(model, cam, out, error)) return false;
+    for (size_t i = 0; i < tree.vertices.size(); ++i)
+        if (!(out.positions[i] == tree.vertices[i])) {
+            error = "the tree's world transform does not reproduce its vertices";
+            return false;
+        }
+    return true;
+}
+
+}  // namespace hider::tool

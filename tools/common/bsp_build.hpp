@@ -1,0 +1,82 @@
+// The offline BSP compiler (host): splits a mesh's triangles by the planes of chosen triangles into a
+// node tree (Fuchs, Kedem & Naylor 1980), fixes the T-junctions the cuts leave (each cut point joins every
+// piece along the mesh edge or cut line it lies on, as Quake's qbsp tjunc.c does), triangulates the
+// pieces and writes the flat format of lib/hider/bsp/format.hpp. Exact integer geometry on the world
+// grid: planes through grid vertices, sides by 128-bit sums; only cut points are rounded (to the nearest
+// grid point, the same point for every polygon sharing the cut edge).
+#pragma once
+#include <hider/bsp/load.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/obj.hpp"
+#include "common/scene.hpp"
+
+namespace hider::tool {
+
+/// The splitter heuristic: among `candidates` polygons of a node (evenly spaced), the plane with the least
+/// cost = split_weight x polygons cut + balance_weight x |front - back| (ZDBSP's form).
+struct BspOptions {
+    int split_weight = 8;
+    int balance_weight = 1;
+    int candidates = 32;
+};
+
+struct BspStats {
+    size_t input_triangles = 0;
+    size_t degenerate = 0;        ///< input triangles of zero area, dropped
+    size_t cuts = 0;              ///< polygons cut in two
+    size_t polygons = 0;          ///< pieces after cutting (convex polygons)
+    size_t tjunction_points = 0;  ///< points added to polygon edges to close T-junctions
+    size_t triangles = 0;         ///< triangles in the tree
+    size_t nodes = 0;
+    size_t max_depth = 0;
+    size_t largest_node = 0;      ///< most triangles in one node's plane
+    size_t vertices = 0;
+    size_t bytes = 0;             ///< blob size
+};
+
+/// A built tree in the format's layout (host vectors), ready for bsp_blob().
+struct BspBuilt {
+    std::vector<BspNode> nodes;
+    std::vector<BspTriangle> triangles;
+    std::vector<BspVertex> vertices;
+    uint32_t max_depth = 0;
+};
+
+/// Builds the tree of world-space triangles (positions raw Q16 as build_scene makes them, `ids` the face
+/// id of each triangle). False with a reason when the result cannot be stored (too many vertices, ...).
+bool build_bsp(const std::vector<Vec3q16>& positions, const std::vector<Tri>& tris, const std::vector<uint32_t>& ids,
+               const BspOptions& opt, BspBuilt& out, BspStats& stats, std::string& error);
+
+/// The world transform a BSP stores: world = (model - centre) * scale, each number as BspScaled.
+struct BspFit {
+    Vec3d centre{};
+    double scale = 1.0;
+};
+
+/// The fit of a model alone (its bounding box into +-kFitHalfExtent world units), rounded to what the
+/// blob stores, so a tree built from an OBJ and one loaded from a blob give the same world.
+bool bsp_model_fit(const ObjModel& model, BspFit& out, std::string& error);
+
+/// The blob of a built tree: header (with the fit and checksum), nodes, triangles, vertices.
+std::vector<uint8_t> bsp_blob(const BspBuilt& tree, const BspFit& fit);
+
+/// The fit stored in a blob's header.
+BspFit bsp_fit_of(const BspHeader& h);
+
+/// A C++ header holding the blob as an 8-byte aligned constexpr array named `name` (deterministic).
+std::string bsp_header_source(const std::vector<uint8_t>& blob, const std::string& name, const std::string& source);
+
+/// Loads an OBJ model, fits it alone and builds its tree and blob (hider-bsp and hider-render --algo
+/// bsp share this). Errors read like hider-render's ("file:line: what" or "file: what").
+bool bsp_from_obj(const std::string& path, const BspOptions& opt, std::vector<uint8_t>& blob, BspStats& stats,
+                  std::string& error);
+
+/// The scene to draw a loaded tree with: its vertices mapped back to model units (for camera defaults,
+/// exactly as for an OBJ) and the camera of `args` (model units) in the tree's world.
+bool bsp_scene(const BspTree& tree, const CameraArgs& args, Scene& out, std::string& error);
+
+}  // namespace hider::tool

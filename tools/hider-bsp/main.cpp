@@ -1,0 +1,98 @@
+// hider-bsp: compiles an OBJ model into a BSP tree in the flat format of lib/hider/bsp/format.hpp, as a
+// blob (.hbsp) or a C++ header of const data for flash (.hpp). Same OBJ reader, fitting and messages as
+// hider-render; errors print "file:line: what" or a plain reason and exit 2. Output is deterministic.
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include "common/bsp_build.hpp"
+#include "common/cli.hpp"
+
+namespace {
+
+using namespace hider;
+using namespace hider::tool;
+
+const char* kUsage =
+    "usage: hider-bsp MODEL.obj -o OUT.hbsp|OUT.hpp [--split-weight K] [--balance-weight K] [--candidates N]\n"
+    "                 [--name NAME] [--stats]\n";
+
+[[noreturn]] void fail(const std::string& msg) {
+    std::cerr << "hider-bsp: " << msg;
+    if (msg.empty() || msg.back() != '\n') std::cerr << '\n';
+    std::exit(2);
+}
+
+int int_option(const std::string& opt, const std::string& v, long lo, long hi) {
+    long n = 0;
+    if (!parse_int(v, n) || n < lo || n > hi)
+        fail(opt + " needs a whole number " + std::to_string(lo) + ".." + std::to_string(hi) + " (got '" + v + "')");
+    return static_cast<int>(n);
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string model_path, out_path, name = "kBspTree";
+    BspOptions opt;
+    bool stats = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) fail(a + " needs a value\n" + kUsage);
+            return argv[++i];
+        };
+        if (a == "-o") out_path = value();
+        else if (a == "--split-weight") opt.split_weight = int_option(a, value(), 0, 1000000);
+        else if (a == "--balance-weight") opt.balance_weight = int_option(a, value(), 0, 1000000);
+        else if (a == "--candidates") opt.candidates = int_option(a, value(), 1, 100000);
+        else if (a == "--name") name = value();
+        else if (a == "--stats") stats = true;
+        else if (a == "-h" || a == "--help") { std::cout << kUsage; return 0; }
+        else if (!a.empty() && a[0] == '-') fail("unknown option '" + a + "'\n" + kUsage);
+        else if (model_path.empty()) model_path = a;
+        else fail("more than one model given ('" + model_path + "', '" + a + "')");
+    }
+    if (model_path.empty()) fail(std::string("no model given\n") + kUsage);
+    if (out_path.empty()) fail(std::string("no output given (-o OUT.hbsp)\n") + kUsage);
+    const bool header = ends_with(out_path, ".hpp");
+    if (!header && !ends_with(out_path, ".hbsp")) fail("output '" + out_path + "': use .hbsp (a blob) or .hpp (a C++ header)");
+    if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_'))
+        fail("--name '" + name + "' must start with a letter or '_'");
+    for (char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) fail("--name '" + name + "' may hold letters, digits and '_' only");
+
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<uint8_t> blob;
+    BspStats st;
+    std::string why;
+    if (!bsp_from_obj(model_path, opt, blob, st, why)) fail(why);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::ofstream out(out_path, std::ios::binary);
+    if (header) {
+        const std::string src = bsp_header_source(blob, name, std::filesystem::path(model_path).filename().string());
+        out.write(src.data(), static_cast<std::streamsize>(src.size()));
+    } else {
+        out.write(reinterpret_cast<const char*>(blob.data()), static_cast<std::streamsize>(blob.size()));
+    }
+    out.close();
+    if (!out) fail(out_path + ": cannot write");
+    if (stats) {
+        std::printf("input triangles %zu (degenerate %zu) polygons %zu cuts %zu split-ratio %.3f\n", st.input_triangles,
+                    st.degenerate, st.polygons, st.cuts,
+                    st.input_triangles == st.degenerate ? 0.0 : static_cast<double>(st.polygons) / (st.input_triangles - st.degenerate));
+        std::printf("triangles %zu t-junction-points %zu vertices %zu nodes %zu depth %zu largest-node %zu\n", st.triangles,
+                    st.tjunction_points, st.vertices, st.nodes, st.max_depth, st.largest_node);
+        std::printf("bytes %zu (nodes %zu, triangles %zu, vertices %zu) build %.2f s\n", st.bytes, st.nodes * sizeof(BspNode),
+                    st.triangles * sizeof(BspTriangle), st.vertices * sizeof(BspVertex), seconds);
+    }
+    return 0;
+}
