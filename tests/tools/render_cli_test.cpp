@@ -27,6 +27,7 @@ namespace fs = std::filesystem;
 using Args = std::vector<std::string>;
 
 const std::string kExe = HIDER_RENDER_EXE;
+const std::string kBspExe = HIDER_BSP_EXE;
 const std::string kBad = std::string(HIDER_TEST_DATA) + "/bad/";
 
 /// Scratch directory of this file's tests (created on first use).
@@ -75,13 +76,13 @@ struct Run {
     bool output_created = false;  ///< whether the output path exists after the run
 };
 
-/// Runs hider-render with `args` (after the shell commands in `prefix`, if any). `output` is removed
-/// before the run and looked for after it; it should be the path given with -o, if any.
-Run run(const Args& args, const std::string& output = out_ppm(), const std::string& prefix = "") {
+/// Runs `exe` with `args` (after the shell commands in `prefix`, if any). `output` is removed before the
+/// run and looked for after it; it should be the path given with -o, if any.
+Run run_tool(const std::string& exe, const Args& args, const std::string& output, const std::string& prefix = "") {
     const std::string out_file = scratch_path("stdout.txt"), err_file = scratch_path("stderr.txt");
     std::error_code ec;
     fs::remove(output, ec);
-    std::string cmd = shell_quoted(kExe);
+    std::string cmd = shell_quoted(exe);
     for (const std::string& a : args) cmd += " " + shell_quoted(a);
     Run r;
     r.command = cmd;
@@ -92,6 +93,11 @@ Run run(const Args& args, const std::string& output = out_ppm(), const std::stri
     r.err = read_file(err_file);
     r.output_created = exists(output);
     return r;
+}
+
+/// Runs hider-render (see run_tool).
+Run run(const Args& args, const std::string& output = out_ppm(), const std::string& prefix = "") {
+    return run_tool(kExe, args, output, prefix);
 }
 
 /// hider-render MODEL -o out.ppm EXTRA...
@@ -651,4 +657,118 @@ TEST_CASE("--stats counts every triangle in exactly one bucket for the sorted al
     CHECK(degenerate == 1);  // f 1 2 4 is a line
     CHECK(culled == 1);      // f 3 2 1 runs clockwise
     CHECK(drawn + culled + degenerate + outside == in);
+}
+
+// ---- BSP trees: hider-bsp's .hbsp/.hpp output, and hider-render drawing a tree from a blob or an OBJ ----
+
+namespace {
+
+const std::string kTorus = std::string(HIDER_TEST_DATA) + "/models/torus.obj";
+
+/// hider-bsp MODEL -o OUT EXTRA...
+Run bsp_tool(const std::string& model, const std::string& out, const Args& extra = {}) {
+    Args args{model, "-o", out};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_tool(kBspExe, args, out);
+}
+
+/// The torus compiled once into scratch/torus.hbsp.
+const std::string& torus_blob() {
+    static const std::string path = [] {
+        const std::string p = scratch_path("torus.hbsp");
+        const Run r = bsp_tool(kTorus, p);
+        REQUIRE(r.code == 0);
+        return p;
+    }();
+    return path;
+}
+
+/// Copies `bytes` into a scratch .hbsp file.
+std::string write_blob(const std::string& name, const std::string& bytes) { return write_model(name, bytes); }
+
+}  // namespace
+
+TEST_CASE("A tree from hider-bsp and the same OBJ built in memory give byte-identical frames") {
+    const Args cameras[] = {{}, {"--eye", "2.5,1.2,0.7", "--target", "0,0,0.1"}, {"--eye", "0.3,0.2,0.1", "--fov", "100"}};
+    for (const std::string algo : {"bsp", "bsp-front"}) {
+        for (const Args& camera : cameras) {
+            INFO("algo ", algo, ", camera ", camera.empty() ? std::string("default") : camera[1]);
+            const Args flags = with(camera, {"--algo", algo, "--size", "64x48", "--shade", "id", "--stats"});
+            const Run from_blob = render(torus_blob(), flags);
+            INFO("stderr: ", from_blob.err);
+            REQUIRE(from_blob.code == 0);
+            CHECK(contains(from_blob.out, "bsp nodes-visited "));
+            const std::string blob_image = read_file(out_ppm());
+            const Run from_obj = render(kTorus, flags);
+            REQUIRE(from_obj.code == 0);
+            CHECK(read_file(out_ppm()) == blob_image);
+            CHECK(from_obj.out == from_blob.out);  // the same tree: the same walk
+            const Image img = read_image(out_ppm(), 64, 48);
+            REQUIRE(img.ok);
+            CHECK(count_pixels(img, 0x000000u) < 64 * 48);  // the torus is in view
+        }
+    }
+}
+
+TEST_CASE("hider-bsp's output is deterministic, and its .hpp holds the blob's bytes under the given name") {
+    const std::string again = scratch_path("torus_again.hbsp");
+    REQUIRE(bsp_tool(kTorus, again).code == 0);
+    const std::string blob = read_file(torus_blob());
+    CHECK(read_file(again) == blob);
+    CHECK(blob.size() > 64);
+    const std::string header = scratch_path("torus_tree.hpp");
+    const Run r = bsp_tool(kTorus, header, {"--name", "kTorusTree"});
+    CHECK(r.code == 0);
+    const std::string src = read_file(header);
+    CHECK(contains(src, "kTorusTree"));
+    CHECK(contains(src, "torus.obj"));
+    CHECK(contains(src, std::to_string(blob.size())));  // the byte count is stated
+}
+
+TEST_CASE("hider-bsp --stats reports polygons, split ratio, nodes, depth, leaf size, bytes and build time") {
+    const Run r = bsp_tool(kTorus, scratch_path("stats.hbsp"), {"--stats", "--candidates", "8", "--split-weight", "3"});
+    INFO("stdout: ", r.out, "stderr: ", r.err);
+    CHECK(r.code == 0);
+    for (const std::string part : {"input triangles ", "polygons ", "split-ratio ", "nodes ", "depth ", "largest-node ", "bytes ",
+                                   "build "})
+        CHECK(contains(r.out, part));
+}
+
+TEST_CASE("hider-bsp reports OBJ errors with the file and the line, like hider-render, and bad options with exit 2") {
+    const std::string path = kBad + "index_out_of_range.obj";
+    const std::string out = scratch_path("bad.hbsp");
+    const Run bad_obj = bsp_tool(path, out);
+    CHECK(bad_obj.code == 2);
+    CHECK_FALSE(bad_obj.output_created);
+    CHECK(first_line(bad_obj.err) == "hider-bsp: " + first_line(render(path).err).substr(std::string("hider-render: ").size()));
+    CHECK(contains(bad_obj.err, path + ":5: "));
+    const Run bad_ext = bsp_tool(kTorus, scratch_path("tree.bin"));
+    CHECK(bad_ext.code == 2);
+    CHECK(contains(bad_ext.err, "use .hbsp"));
+    const Run bad_weight = bsp_tool(kTorus, out, {"--split-weight", "-1"});
+    CHECK(bad_weight.code == 2);
+    CHECK(contains(bad_weight.err, "--split-weight"));
+    const Run bad_name = bsp_tool(kTorus, scratch_path("t.hpp"), {"--name", "1tree"});
+    CHECK(bad_name.code == 2);
+    CHECK(contains(bad_name.err, "--name"));
+}
+
+TEST_CASE("A corrupt, truncated or empty .hbsp is rejected with exit 2 and no image") {
+    const std::string good = read_file(torus_blob());
+    std::string flipped = good;
+    flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
+    const std::pair<std::string, std::string> cases[] = {
+        {"flipped.hbsp", flipped}, {"truncated.hbsp", good.substr(0, good.size() - 7)}, {"empty.hbsp", ""},
+        {"header_only.hbsp", good.substr(0, 64)}, {"obj_text.hbsp", kTriangle}};
+    for (const auto& [name, bytes] : cases) {
+        INFO("case ", name);
+        const std::string path = write_blob(name, bytes);
+        check_error(render(path, {"--algo", "bsp"}), {path + ": ", "not a valid BSP tree (bad data)"});
+    }
+    const std::string missing = scratch_path("missing.hbsp");
+    check_error(render(missing, {"--algo", "bsp-front"}), {missing + ": cannot open"});
+}
+
+TEST_CASE("A .hbsp tree with a non-BSP algorithm is rejected with the algorithms that draw it") {
+    check_error(render(torus_blob(), {"--algo", "zbuffer"}), {torus_blob() + ": ", "--algo bsp or bsp-front"});
 }

@@ -5,10 +5,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <vector>
 #include <iostream>
 #include <string>
 
+#include "common/bsp_build.hpp"
 #include "common/cli.hpp"
+#include "common/render_bsp.hpp"
 #include "common/obj.hpp"
 #include "common/ray_scene.hpp"
 #include "common/render.hpp"
@@ -23,7 +28,7 @@ using namespace hider;
 using namespace hider::tool;
 
 const char* kUsage =
-    "usage: hider-render MODEL.obj -o OUT.ppm|OUT.png [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
+    "usage: hider-render MODEL.obj|TREE.hbsp -o OUT.ppm|OUT.png [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
     "                    [--fov DEG] [--near N] [--far F] [--shade headlight|id|depth] [--no-cull]\n"
     "                    [--algo NAME] [--depth-bits 16|32] [--band ROWS] [--format rgb565|rgb888|grey8]\n"
     "                    [--painter-key farthest|barycenter] [--pool N] [--stats] [--strict]\n"
@@ -40,6 +45,29 @@ Vec3d parse_vec(const std::string& opt, const std::string& s) {
     std::string why;
     if (!parse_vec3(opt, s, v, why)) fail(why);
     return v;
+}
+
+/// True when path ends with ext, in any case.
+bool has_extension(const std::string& path, const std::string& ext) {
+    if (path.size() < ext.size()) return false;
+    for (size_t i = 0; i < ext.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(path[path.size() - ext.size() + i])) != ext[i]) return false;
+    return true;
+}
+
+/// The whole file at `path`; false with "path: what" when it cannot be read.
+bool read_bytes(const std::string& path, std::vector<uint8_t>& out, std::string& why) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        why = path + ": cannot open";
+        return false;
+    }
+    out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (in.bad()) {
+        why = path + ": cannot read";
+        return false;
+    }
+    return true;
 }
 
 /// Writes the frame as PPM or PNG by the extension of `path` (checked before rendering); exits 2 on failure.
@@ -198,14 +226,35 @@ int main(int argc, char** argv) {
     if (!output_format(out_path, png, why_format)) fail(why_format);
     if (opt.shade == Shade::id) opt.format = PixelFormat::rgb888;  // ids need all 24 bits
 
-    ObjModel model;
-    ObjError err;
-    if (!load_obj(model_path, model, err)) fail(format(err));
     Scene scene;
     std::string why;
-    if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
     RenderResult result;
-    if (!render(scene, opt, result, why)) fail(why);
+    const bool bsp = opt.algo == Algo::bsp || opt.algo == Algo::bsp_front;
+    if (has_extension(model_path, ".hbsp") && !bsp) fail(model_path + ": a BSP tree draws with --algo bsp or bsp-front");
+    if (bsp) {
+        // A tree from a .hbsp file, or built from the OBJ with the default heuristic: the same bytes, the
+        // same world (the model's own fit), so both give the same image.
+        std::vector<uint8_t> blob;
+        if (has_extension(model_path, ".hbsp")) {
+            if (!read_bytes(model_path, blob, why)) fail(why);
+        } else {
+            BspStats bs;
+            if (!bsp_from_obj(model_path, BspOptions{}, blob, bs, why)) fail(why);
+        }
+        const AlignedBlob aligned(blob);
+        std::vector<uint32_t> probe(bsp_stack_entries(1u << 16));
+        BspTree tree;
+        const Status ls = bsp_load(aligned.span(), {probe.data(), probe.size()}, tree);
+        if (ls != Status::ok) fail(model_path + ": not a valid BSP tree (" + status_name(ls) + ")");
+        if (!bsp_scene(tree, cam, scene, why)) fail(model_path + ": " + why);
+        if (!render_bsp(scene, blob, opt, result, why)) fail(model_path + ": " + why);
+    } else {
+        ObjModel model;
+        ObjError err;
+        if (!load_obj(model_path, model, err)) fail(format(err));
+        if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
+        if (!render(scene, opt, result, why)) fail(why);
+    }
     write_image(out_path, result);
     if (stats) {
         const FrameStats& s = result.stats;
@@ -218,6 +267,9 @@ int main(int argc, char** argv) {
             std::printf("rays %llu hits %llu box-tests %llu triangle-tests %llu\n", static_cast<unsigned long long>(result.ray.rays),
                         static_cast<unsigned long long>(result.ray.hits), static_cast<unsigned long long>(result.ray.boxes),
                         static_cast<unsigned long long>(result.ray.triangles));
+        if (bsp)
+            std::printf("bsp nodes-visited %u subtrees-skipped %u triangles %zu\n", s.nodes_visited, s.subtrees_skipped,
+                        static_cast<size_t>(s.triangles_in));
         if (opt.algo == Algo::newell || opt.algo == Algo::reverse) {
             const NewellStats& n = result.newell;
             std::printf("newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u\n",
