@@ -725,6 +725,28 @@ TEST_CASE("hider-bsp's output is deterministic, and its .hpp holds the blob's by
     CHECK(contains(src, std::to_string(blob.size())));  // the byte count is stated
 }
 
+TEST_CASE("hider-bsp with camera options adds hider-render's camera in the tree's world to a .hpp, and refuses them for a blob") {
+    const std::string header = scratch_path("torus_cam.hpp");
+    const Run r = bsp_tool(kTorus, header, {"--name", "torus_view", "--size", "160x128", "--eye", "0,1,3", "--fov", "50"});
+    INFO("stderr: ", r.err);
+    CHECK(r.code == 0);
+    const std::string src = read_file(header);
+    CHECK(contains(src, "namespace hider::bsp_data::torus_view"));
+    CHECK(contains(src, "kWidth = 160;"));
+    CHECK(contains(src, "kHeight = 128;"));
+    CHECK(contains(src, "inline constexpr Camera kCamera"));
+    CHECK(contains(src, "--eye 0,1,3"));  // the options are recorded
+    // The blob in the header is the one hider-bsp writes as .hbsp (the camera does not change the tree).
+    CHECK(contains(src, "kBlob[" + std::to_string(read_file(torus_blob()).size()) + "]"));
+    const Run blob = bsp_tool(kTorus, scratch_path("torus_cam.hbsp"), {"--eye", "0,1,3"});
+    CHECK(blob.code == 2);
+    CHECK_FALSE(blob.output_created);
+    CHECK(contains(blob.err, "camera options need a .hpp output"));
+    const Run bad = bsp_tool(kTorus, scratch_path("torus_bad.hpp"), {"--fov", "0"});
+    CHECK(bad.code == 2);
+    CHECK(contains(bad.err, "field of view 0 degrees out of range"));
+}
+
 TEST_CASE("hider-bsp --stats reports polygons, split ratio, nodes, depth, leaf size, bytes and build time") {
     const Run r = bsp_tool(kTorus, scratch_path("stats.hbsp"), {"--stats", "--candidates", "8", "--split-weight", "3"});
     INFO("stdout: ", r.out, "stderr: ", r.err);

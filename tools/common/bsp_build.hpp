@@ -67,8 +67,11 @@ std::vector<uint8_t> bsp_blob(const BspBuilt& tree, const BspFit& fit);
 /// The fit stored in a blob's header.
 BspFit bsp_fit_of(const BspHeader& h);
 
-/// A C++ header holding the blob as an 8-byte aligned constexpr array named `name` (deterministic).
-std::string bsp_header_source(const std::vector<uint8_t>& blob, const std::string& name, const std::string& source);
+/// A C++ header holding the blob as hider::bsp_data::<name>::kBlob, an 8-byte aligned constexpr array,
+/// followed by `extra` (more declarations in that namespace); `source` and `options` are recorded in its
+/// opening comment. Deterministic (no dates, no directories).
+std::string bsp_header_source(const std::vector<uint8_t>& blob, const std::string& name, const std::string& source,
+                              const std::string& options = "", const std::string& extra = "");
 
 /// Loads an OBJ model, fits it alone and builds its tree and blob (hider-bsp and hider-render --algo
 /// bsp share this). Errors read like hider-render's ("file:line: what" or "file: what").

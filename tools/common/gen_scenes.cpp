@@ -290,15 +290,16 @@ GenScene city(uint32_t seed, int nx, int nz, CityView view) {
     for (int j = 0; j < nz; ++j)
         for (int i = 0; i < nx; ++i) {
             const double x = street + i * pitch, z = street + j * pitch;
-            const double h = uniform(rng, 0.5, 4.0), inset = uniform(rng, 0.0, 0.15);
+            const double h = uniform(rng, 1.0, 6.0), inset = uniform(rng, 0.0, 0.15);
             add_aabb(s, {x + inset, -0.1, z + inset}, {x + block - inset, h, z + block - inset});
         }
     if (view == CityView::above) {
         s.eye = {width * 0.5, std::max(width, depth) * 0.9, depth * 1.25};
         s.target = {width * 0.5, 0.0, depth * 0.5};
     } else {
-        // Street level in the street between block columns 1 and 2 (or the first street), looking along it.
-        const int col = std::min(2, nx);
+        // Street level in the middle street (between block columns nx/2 - 1 and nx/2), looking along it:
+        // blocks on both sides hide those behind them.
+        const int col = nx / 2;
         const double sx = col * pitch + street * 0.5;
         s.eye = {sx, 0.3, depth + 0.6};
         s.target = {sx, 0.5, 0.0};

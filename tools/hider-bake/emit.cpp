@@ -65,6 +65,14 @@ void count_check(std::ostringstream& o, const char* array, const char* count) {
 
 }  // namespace
 
+std::string camera_source(const Camera& camera, int width, int height) {
+    std::ostringstream o;
+    o << "inline constexpr int32_t kWidth = " << width << ";\n"
+      << "inline constexpr int32_t kHeight = " << height << ";\n\n";
+    emit_camera(o, camera);
+    return o.str();
+}
+
 bool valid_name(const std::string& name, std::string& why) {
     auto alpha = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
     auto digit = [](char c) { return c >= '0' && c <= '9'; };

@@ -18,6 +18,9 @@ struct BakeInfo {
 /// Whether `name` is usable as the namespace of a baked scene (an identifier, no "__", not a keyword).
 bool valid_name(const std::string& name, std::string& why);
 
+/// `kWidth`, `kHeight` and `kCamera` (a constexpr hider::Camera) as declarations for a baked header.
+std::string camera_source(const Camera& camera, int width, int height);
+
 /// The header text for `scene`. Ids are written only when some id differs from triangle index + 1
 /// (lib/'s default), so a typical OBJ of triangles costs no flash for them.
 std::string emit_header(const Scene& scene, const BakeInfo& info);

@@ -1,6 +1,8 @@
 // hider-bsp: compiles an OBJ model into a BSP tree in the flat format of lib/hider/bsp/format.hpp, as a
-// blob (.hbsp) or a C++ header of const data for flash (.hpp). Same OBJ reader, fitting and messages as
-// hider-render; errors print "file:line: what" or a plain reason and exit 2. Output is deterministic.
+// blob (.hbsp) or a C++ header of const data for flash (.hpp, namespace hider::bsp_data::NAME). Same OBJ
+// reader, fitting and messages as hider-render; errors print "file:line: what" or a plain reason and exit
+// 2. Camera options (hider-render's, in model units) add the camera mapped into the tree's world to a
+// .hpp (kWidth, kHeight, kCamera), so firmware draws the view hider-render shows. Output is deterministic.
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -11,6 +13,9 @@
 
 #include "common/bsp_build.hpp"
 #include "common/cli.hpp"
+#include "common/render_bsp.hpp"
+#include "hider-bake/cli.hpp"
+#include "hider-bake/emit.hpp"
 
 namespace {
 
@@ -19,7 +24,8 @@ using namespace hider::tool;
 
 const char* kUsage =
     "usage: hider-bsp MODEL.obj -o OUT.hbsp|OUT.hpp [--split-weight K] [--balance-weight K] [--candidates N]\n"
-    "                 [--name NAME] [--stats]\n";
+    "                 [--name NAME] [--stats] [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
+    "                 [--fov DEG] [--near N] [--far F]   (camera options: .hpp only)\n";
 
 [[noreturn]] void fail(const std::string& msg) {
     std::cerr << "hider-bsp: " << msg;
@@ -41,11 +47,13 @@ bool ends_with(const std::string& s, const std::string& tail) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string model_path, out_path, name = "kBspTree";
+    std::string model_path, out_path, name = "tree", camera_options, recorded;
     BspOptions opt;
+    CameraArgs cam;
     bool stats = false;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
+        if (bake::parse_camera_option("hider-bsp", argc, argv, i, cam, camera_options)) continue;
         auto value = [&]() -> std::string {
             if (i + 1 >= argc) fail(a + " needs a value\n" + kUsage);
             return argv[++i];
@@ -65,20 +73,29 @@ int main(int argc, char** argv) {
     if (out_path.empty()) fail(std::string("no output given (-o OUT.hbsp)\n") + kUsage);
     const bool header = ends_with(out_path, ".hpp");
     if (!header && !ends_with(out_path, ".hbsp")) fail("output '" + out_path + "': use .hbsp (a blob) or .hpp (a C++ header)");
-    if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_'))
-        fail("--name '" + name + "' must start with a letter or '_'");
-    for (char c : name)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) fail("--name '" + name + "' may hold letters, digits and '_' only");
+    std::string why;
+    if (!bake::valid_name(name, why)) fail("--name '" + name + "': " + why);
+    if (!camera_options.empty() && !header) fail("camera options need a .hpp output (a blob holds no camera)");
 
     const auto start = std::chrono::steady_clock::now();
     std::vector<uint8_t> blob;
     BspStats st;
-    std::string why;
     if (!bsp_from_obj(model_path, opt, blob, st, why)) fail(why);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::ofstream out(out_path, std::ios::binary);
     if (header) {
-        const std::string src = bsp_header_source(blob, name, std::filesystem::path(model_path).filename().string());
+        std::string extra;
+        if (!camera_options.empty()) {  // the camera in the tree's world, exactly as hider-render maps it
+            const AlignedBlob aligned(blob);
+            std::vector<uint32_t> stack(bsp_stack_entries(1u << 16));
+            BspTree tree;
+            Scene scene;
+            if (bsp_load(aligned.span(), {stack.data(), stack.size()}, tree) != Status::ok) fail("internal: the built tree does not load");
+            if (!bsp_scene(tree, cam, scene, why)) fail(model_path + ": " + why);
+            extra = bake::camera_source(scene.camera, scene.width, scene.height);
+        }
+        const std::string src =
+            bsp_header_source(blob, name, std::filesystem::path(model_path).filename().string(), camera_options, extra);
         out.write(src.data(), static_cast<std::streamsize>(src.size()));
     } else {
         out.write(reinterpret_cast<const char*>(blob.data()), static_cast<std::streamsize>(blob.size()));
