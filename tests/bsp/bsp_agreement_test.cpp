@@ -9,8 +9,12 @@
 
 #include <doctest/doctest.h>
 
+#include <hider/bsp/walk.hpp>
+
+#include "common/bsp_build.hpp"
 #include "common/gen_scenes.hpp"
 #include "common/render.hpp"
+#include "common/render_bsp.hpp"
 #include "support/scene_util.hpp"
 
 using namespace hider;
@@ -90,4 +94,68 @@ TEST_CASE("bsp and bsp-front match the z-buffer on every test model" * doctest::
     for (const char* name : {"torus.obj", "teapot.obj", "suzanne.obj", "spot.obj", "cow.obj", "fandisk.obj", "beetle.obj",
                              "woody.obj", "stanford-bunny.obj"})
         check(name, test::load_model(name), false);
+}
+
+namespace {
+
+/// RGB565 frame of `s` drawn by a BSP walk in bands of `rows`, the vertices projected up front
+/// (project_vertices) or on first use (mark_unprojected); also returns the statistics.
+std::vector<uint16_t> walk_frame(const tool::Scene& s, const BspTree& tree, bool front, bool lazy, bool cull, int rows,
+                                 FrameStats& total) {
+    View view;
+    REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
+    std::vector<ScreenVertex> verts(tree.vertices.size());
+    if (lazy) {
+        mark_unprojected({verts.data(), verts.size()});
+    } else {
+        REQUIRE(project_vertices(view, tree.vertices, {verts.data(), verts.size()}) == Status::ok);
+    }
+    std::vector<uint32_t> stack(bsp_stack_entries(tree.max_depth));
+    std::vector<uint32_t> coverage(static_cast<size_t>(coverage_words(s.width)) * rows);
+    std::vector<uint16_t> out;
+    DrawOptions opt;
+    opt.cull = cull;
+    total = FrameStats{};
+    for (int y0 = 0; y0 < s.height; y0 += rows) {
+        const int y1 = std::min(s.height, y0 + rows);
+        std::vector<uint16_t> color(static_cast<size_t>(s.width) * rows);
+        const auto band = band_view<Rgb565Format, uint16_t>(color.data(), nullptr, s.width, s.height, y0, y1);
+        clear(band, Rgb{0, 0, 0});
+        const FrameStats st = front ? draw_bsp_front(view, s.camera.eye, tree, {verts.data(), verts.size()}, band, opt,
+                                                     {stack.data(), stack.size()}, {coverage.data(), coverage.size()})
+                                    : draw_bsp(view, s.camera.eye, tree, {verts.data(), verts.size()}, band, opt,
+                                               {stack.data(), stack.size()});
+        REQUIRE(st.status == Status::ok);
+        total.merge(st);
+        out.insert(out.end(), color.begin(), color.begin() + static_cast<long>(s.width) * (y1 - y0));
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("BSP walks draw the same bytes whether the vertices are projected up front or on first use") {
+    for (const char* name : {"torus.obj", "city-1-10-10-street", "city-1-10-10-above", "grid-1-20-10", "soup-1-300"}) {
+        const tool::Scene s = std::string(name).find(".obj") != std::string::npos ? test::load_model(name) : test::generated_scene(name);
+        tool::BspBuilt built;
+        tool::BspStats bs;
+        std::string why;
+        REQUIRE_MESSAGE(tool::build_bsp(s.positions, s.tris, s.ids, tool::BspOptions{}, built, bs, why), why);
+        const tool::AlignedBlob blob(tool::bsp_blob(built, tool::BspFit{s.centre, s.scale}));
+        std::vector<uint32_t> probe(bsp_stack_entries(1u << 16));
+        BspTree tree;
+        REQUIRE(bsp_load(blob.span(), {probe.data(), probe.size()}, tree) == Status::ok);
+        for (bool front : {false, true})
+            for (bool cull : {false, true})
+                for (int rows : {s.height, 16}) {
+                    INFO(name, front ? " front" : " back", cull ? " cull" : "", " rows ", rows);
+                    FrameStats eager, lazy;
+                    const std::vector<uint16_t> a = walk_frame(s, tree, front, false, cull, rows, eager);
+                    const std::vector<uint16_t> b = walk_frame(s, tree, front, true, cull, rows, lazy);
+                    CHECK(a == b);
+                    CHECK(eager.triangles_drawn == lazy.triangles_drawn);
+                    CHECK(eager.nodes_visited == lazy.nodes_visited);
+                    CHECK(eager.triangles_drawn + eager.triangles_culled > 0);
+                }
+    }
 }

@@ -533,7 +533,16 @@ std::string bsp_header_source(const std::vector<uint8_t>& blob, const std::strin
         if (i % 24 == 0) o << "\n   ";
         o << ' ' << static_cast<unsigned>(blob[i]) << ',';
     }
-    o << "\n};\n\n" << extra << "}  // namespace hider::bsp_data::" << name << "\n";
+    BspHeader h{};
+    std::memcpy(&h, blob.data(), std::min(blob.size(), sizeof h));
+    o << "\n};\n\n"
+      << "/// The header's counts, for static storage: one ScreenVertex per vertex, bsp_stack_entries(kMaxDepth)\n"
+      << "/// stack entries (bsp_load() checks both against the blob).\n"
+      << "inline constexpr uint32_t kNodeCount = " << h.node_count << ";\n"
+      << "inline constexpr uint32_t kTriangleCount = " << h.triangle_count << ";\n"
+      << "inline constexpr uint32_t kVertexCount = " << h.vertex_count << ";\n"
+      << "inline constexpr uint32_t kMaxDepth = " << h.max_depth << ";\n\n"
+      << extra << "}  // namespace hider::bsp_data::" << name << "\n";
     return o.str();
 }
 

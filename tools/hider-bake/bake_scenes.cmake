@@ -1,9 +1,9 @@
-# Re-bakes every scene of scenes.cmake with hider-bake.
-#   cmake -DBAKE=<hider-bake> -DSOURCE_DIR=<repo> -DOUT_DIR=<dir> -DMODE=check|update -P bake_scenes.cmake
+# Re-bakes every scene of scenes.cmake: meshes with hider-bake, BSP trees with hider-bsp.
+#   cmake -DBAKE=<hider-bake> -DBSP=<hider-bsp> -DSOURCE_DIR=<repo> -DOUT_DIR=<dir> -DMODE=check|update -P bake_scenes.cmake
 # check: bakes into OUT_DIR and fails if any header differs from the committed one in
 #        firmware/common/scenes/ (drift between hider-bake/build_scene/lib and the committed data).
 # update: bakes into OUT_DIR, then copies every header over the committed one (review the diff).
-foreach(var BAKE SOURCE_DIR OUT_DIR MODE)
+foreach(var BAKE BSP SOURCE_DIR OUT_DIR MODE)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "bake_scenes.cmake: -D${var}=... is required")
   endif()
@@ -12,17 +12,25 @@ include(${CMAKE_CURRENT_LIST_DIR}/scenes.cmake)
 set(committed_dir ${SOURCE_DIR}/firmware/common/scenes)
 file(MAKE_DIRECTORY ${OUT_DIR})
 set(stale)
+set(entries)
 foreach(entry IN LISTS HIDER_BAKED_SCENES)
+  list(APPEND entries "${BAKE}|${entry}")
+endforeach()
+foreach(entry IN LISTS HIDER_BAKED_BSP_SCENES)
+  list(APPEND entries "${BSP}|${entry}")
+endforeach()
+foreach(entry IN LISTS entries)
   string(REPLACE "|" ";" fields "${entry}")
+  list(POP_FRONT fields tool)
   list(GET fields 0 name)
   list(GET fields 1 model)
   list(GET fields 2 options)
   separate_arguments(options UNIX_COMMAND "${options}")
   set(out ${OUT_DIR}/${name}.hpp)
-  execute_process(COMMAND ${BAKE} ${SOURCE_DIR}/${model} -o ${out} --name ${name} ${options}
+  execute_process(COMMAND ${tool} ${SOURCE_DIR}/${model} -o ${out} --name ${name} ${options}
                   RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "hider-bake failed for ${name} (exit ${rc})")
+    message(FATAL_ERROR "${tool} failed for ${name} (exit ${rc})")
   endif()
   if(MODE STREQUAL "update")
     file(COPY_FILE ${out} ${committed_dir}/${name}.hpp ONLY_IF_DIFFERENT)

@@ -34,7 +34,7 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
     // Sizes in 64 bits: the counts come from the blob and must not wrap a 32-bit size_t.
     const uint64_t total = uint64_t{sizeof(BspHeader)} + uint64_t{h.node_count} * sizeof(BspNode) +
                            uint64_t{h.triangle_count} * sizeof(BspTriangle) + uint64_t{h.vertex_count} * sizeof(BspVertex);
-    if (total != h.total_size || total != blob.size() || h.node_count >= 0x80000000u) return Status::bad_data;
+    if (total != h.total_size || total != blob.size() || h.node_count >= 0x40000000u) return Status::bad_data;  // walks tag indices with two bits
     if (fnv1a(blob.data() + sizeof(BspHeader), blob.size() - sizeof(BspHeader)) != h.checksum) return Status::bad_data;
     const BspLayout l = bsp_layout(h.node_count, h.triangle_count, h.vertex_count);
     const BspNode* nodes = reinterpret_cast<const BspNode*>(blob.data() + l.nodes);

@@ -10,16 +10,40 @@
 #include <hider/bsp/load.hpp>
 #include <hider/int128.hpp>
 #include <hider/raster/paint.hpp>
+#include <hider/raster/vertices.hpp>
 
 namespace hider {
 
 namespace detail {
 
-/// The eye's side of node n's plane: +1 front (the normal's side), -1 back, 0 in the plane. Exact.
+/// True when |v| < 2^bits.
+constexpr bool fits_bits(int64_t v, int bits) {
+    return static_cast<uint64_t>(v + (int64_t{1} << bits)) < (uint64_t{2} << bits);
+}
+
+/// 32 x 32 -> 64-bit product (one instruction where the CPU has it).
+constexpr int64_t mul32(int32_t a, int32_t b) { return int64_t{a} * b; }
+
+/// The eye's side of node n's plane: +1 front (the normal's side), -1 back, 0 in the plane. Exact. A
+/// filter first: with n = 2^27 h + r (0 <= r < 2^27) and d = eye - origin, n.d = 2^27 (h.d) + r.d where
+/// |r.d| < 3 2^27 max|d|, so when |h.d| > 3 max|d| its sign is the answer (32x32-bit products: |h| < 2^30,
+/// |d| < 2^31). Otherwise, the eye near the plane, the 128-bit product decides.
 inline int eye_side(const BspTree& tree, const BspNode& n, const Vec3q16& eye) {
     const Vec3q16& o = tree.vertices[n.origin];
-    const Int128 s = mul128(n.n[0], int64_t{eye.x.raw()} - o.x.raw()) + mul128(n.n[1], int64_t{eye.y.raw()} - o.y.raw()) +
-                     mul128(n.n[2], int64_t{eye.z.raw()} - o.z.raw());
+    const int64_t d0 = int64_t{eye.x.raw()} - o.x.raw(), d1 = int64_t{eye.y.raw()} - o.y.raw(),
+                  d2 = int64_t{eye.z.raw()} - o.z.raw();
+    constexpr int kShift = 27;
+    const int64_t h0 = n.n[0] >> kShift, h1 = n.n[1] >> kShift, h2 = n.n[2] >> kShift;
+    if (fits_bits(h0, 30) && fits_bits(h1, 30) && fits_bits(h2, 30) && fits_bits(d0, 31) && fits_bits(d1, 31) &&
+        fits_bits(d2, 31)) {
+        const int64_t s = mul32(static_cast<int32_t>(h0), static_cast<int32_t>(d0)) +
+                          mul32(static_cast<int32_t>(h1), static_cast<int32_t>(d1)) +
+                          mul32(static_cast<int32_t>(h2), static_cast<int32_t>(d2));
+        const int64_t bound = 3 * max(abs_value(d0), max(abs_value(d1), abs_value(d2)));
+        if (s > bound) return 1;
+        if (s < -bound) return -1;
+    }
+    const Int128 s = mul128(n.n[0], d0) + mul128(n.n[1], d1) + mul128(n.n[2], d2);
     return s.sign();
 }
 
@@ -27,12 +51,21 @@ inline int eye_side(const BspTree& tree, const BspNode& n, const Vec3q16& eye) {
 inline int64_t floor_div64(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 inline int64_t ceil_div64(int64_t a, int64_t b) { return -floor_div64(-a, b); }
 
-/// The pixels of rows [band_y0, band_y1) that node n's subtree box can cover: empty when the box lies
-/// behind the near plane, past the far plane or beside the band; the whole band when the box reaches
-/// the near plane (its projection is then unbounded). The box is rotated into view space as a centre and
-/// half extents (|R| e), then x/w and y/w are bounded at the box's nearest and farthest w.
-inline PixelRect subtree_rect(const View& view, const BspNode& n, const BandBounds& bb, int32_t band_y0, int32_t band_y1) {
-    const PixelRect band{0, (bb.x_last - bb.x_first) / kSubpixel + 1, band_y0, band_y1};
+/// Where a subtree's box lies against a band: outside it (skip), reaching the near plane (its projection
+/// is unbounded), or in front of the eye with a pixel rectangle computed on request.
+struct SubtreeBox {
+    int64_t cx, cy, cw;  ///< the box centre in view space (w = -z, towards the scene)
+    int64_t ex, ey, ew;  ///< its half extents in view space, rounded up
+    bool outside;        ///< no point of the box projects into the band (or the box is out of depth range)
+    bool near;           ///< the box reaches the near plane: treat it as covering the whole band
+};
+
+/// Node n's subtree box against the band, with no division: the box is rotated into view space as a
+/// centre and half extents (|R| e), then tested against the depth range and the four planes through
+/// the eye and the band's edges (a point projects left of column x when x k - 256 X w < 0, and so on),
+/// each widened by a pixel so that rounded vertex positions stay inside.
+inline SubtreeBox subtree_box(const View& view, const BspNode& n, const BandBounds& bb) {
+    SubtreeBox b{};
     int32_t c[3], e[3];
     for (int k = 0; k < 3; ++k) {
         const int32_t lo = n.box_min[k] * (int32_t{1} << kBspBoxShift), hi = n.box_max[k] * (int32_t{1} << kBspBoxShift);
@@ -46,12 +79,48 @@ inline PixelRect subtree_rect(const View& view, const BspNode& n, const BandBoun
         for (int k = 0; k < 3; ++k) sum += int64_t{abs_value(view.to_view.rot.m[i][k].raw())} * e[k];
         ev[i] = (sum >> 30) + 2;  // rounded up, plus the view transform's own flooring
     }
-    const int64_t w_near = -int64_t{cv.z.raw()} - ev[2], w_far = -int64_t{cv.z.raw()} + ev[2];
-    if (w_far < view.near_raw || w_near > view.far_raw) return {0, 0, 0, 0};  // wholly out of depth range
-    if (w_near <= view.near_raw) return band;  // reaches the near plane: no bound
-    const int64_t xl = cv.x.raw() - ev[0], xh = cv.x.raw() + ev[0], yl = cv.y.raw() - ev[1], yh = cv.y.raw() + ev[1];
+    b.cx = cv.x.raw();
+    b.cy = cv.y.raw();
+    b.cw = -int64_t{cv.z.raw()};
+    b.ex = ev[0];
+    b.ey = ev[1];
+    b.ew = ev[2];
+    if (b.cw + b.ew < view.near_raw || b.cw - b.ew > view.far_raw) {  // wholly out of depth range
+        b.outside = true;
+        return b;
+    }
+    if (b.cw - b.ew <= view.near_raw) {
+        b.near = true;
+        return b;
+    }
+    // X = x k / (256 w), Y = -y k / (256 w) in centre-relative subpixels; w > 0 over the whole box. Each
+    // plane's linear form a v + c w is largest over the box at a cv + c cw + |a| ev + |c| ew: four 32x32-bit
+    // products (each below 2^61) when the box fits in 31 bits, else the box is kept (never wrongly skipped).
+    if (!fits_bits(b.cx, 31) || !fits_bits(b.cy, 31) || !fits_bits(b.cw, 31) || !fits_bits(b.ex, 30) || !fits_bits(b.ey, 30) ||
+        !fits_bits(b.ew, 30))
+        return b;
+    const int32_t k = view.k_q8, cx = static_cast<int32_t>(b.cx), cy = static_cast<int32_t>(b.cy), cw = static_cast<int32_t>(b.cw);
+    const int32_t ex = static_cast<int32_t>(b.ex), ey = static_cast<int32_t>(b.ey), ew = static_cast<int32_t>(b.ew);
+    auto box_max = [&](int32_t a, int32_t cw_coef, int32_t centre, int32_t half) {
+        return mul32(a, centre) + mul32(cw_coef, cw) + mul32(abs_value(a), half) + mul32(abs_value(cw_coef), ew);
+    };
+    const int32_t x_lo = 256 * (bb.x_first - kSubpixel), x_hi = 256 * (bb.x_last + kSubpixel);
+    const int32_t y_lo = 256 * (bb.y_first - kSubpixel), y_hi = 256 * (bb.y_last + kSubpixel);
+    b.outside = box_max(k, -x_lo, cx, ex) < 0 ||  // left of the first column: x k < 256 x_lo w
+                box_max(-k, x_hi, cx, ex) < 0 ||  // right of the last: x k > 256 x_hi w
+                box_max(-k, -y_lo, cy, ey) < 0 ||  // above the first row: -y k < 256 y_lo w
+                box_max(k, y_hi, cy, ey) < 0;      // below the last: -y k > 256 y_hi w
+    return b;
+}
+
+/// The pixels of rows [band_y0, band_y1) that a box subtree_box() did not reject can cover: the whole
+/// band when it reaches the near plane, else x/w and y/w bounded at the box's nearest and farthest w.
+inline PixelRect subtree_rect(const View& view, const SubtreeBox& b, const BandBounds& bb, int32_t band_y0, int32_t band_y1) {
+    if (b.near) return {0, (bb.x_last - bb.x_first) / kSubpixel + 1, band_y0, band_y1};
+    const int64_t w_near = b.cw - b.ew, w_far = b.cw + b.ew;
+    const int64_t xl = b.cx - b.ex, xh = b.cx + b.ex, yl = b.cy - b.ey, yh = b.cy + b.ey;
     const int64_t k = view.k_q8;
-    // X = x k / (256 w), Y = -y k / (256 w): extremes at the nearest or farthest w by the coordinate's sign.
+    // Extremes at the nearest or farthest w by the coordinate's sign.
     auto lo_over = [&](int64_t v) { return floor_div64(v * k, 256 * (v >= 0 ? w_far : w_near)); };
     auto hi_over = [&](int64_t v) { return ceil_div64(v * k, 256 * (v >= 0 ? w_near : w_far)); };
     ScreenBox box{static_cast<int32_t>(clamp<int64_t>(lo_over(xl) - 1, -kCoordLimit, kCoordLimit)),
@@ -64,7 +133,7 @@ inline PixelRect subtree_rect(const View& view, const BspNode& n, const BandBoun
 /// The shared walk. kFrontToBack: near subtree first, coverage, skipping covered subtrees and stopping
 /// when the band is full; else far subtree first, painting over.
 template <bool kFrontToBack, class Format, class Depth>
-FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<const ScreenVertex> verts,
+FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
                     const FrameView<Format, Depth>& frame, const DrawOptions& opt, Span<uint32_t> stack, Coverage* cov) {
     FrameStats st;
     if (!frame_matches(view, frame) || verts.size() < tree.vertices.size() ||
@@ -73,9 +142,12 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
         return st;
     }
     if (tree.nodes.empty()) return st;
-    constexpr uint32_t kDraw = 0x80000000u;  // stack entry: draw this node's triangles (its subtrees are queued)
+    // Stack entries: a node index to enter, or (kDraw) one whose triangles are drawn next, with kFront
+    // when the eye is on its front side (so the side is computed once; bsp_load() keeps indices below 2^30).
+    constexpr uint32_t kDraw = 0x80000000u, kFront = 0x40000000u, kIndex = kFront - 1;
     const FaceShading shading(view, opt);
     const BandBounds bb = band_bounds(frame);
+    const PreparedTransform to_view(view.to_view);
     size_t top = 0;
     stack[top++] = 0;
     while (top != 0) {
@@ -83,12 +155,17 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
             if (cov->full()) break;
         }
         const uint32_t entry = stack[--top];
-        const BspNode& n = tree.nodes[entry & ~kDraw];
+        const BspNode& n = tree.nodes[entry & kIndex];
         if ((entry & kDraw) == 0) {  // enter the node: queue its subtrees around its own triangles
             ++st.nodes_visited;
-            const PixelRect r = subtree_rect(view, n, bb, frame.y0, frame.y1);
-            bool skip = r.x0 >= r.x1 || r.y0 >= r.y1;
-            if constexpr (kFrontToBack) skip = skip || cov->covered(r);
+            const SubtreeBox box = subtree_box(view, n, bb);
+            bool skip = box.outside;
+            if constexpr (kFrontToBack) {
+                if (!skip) {
+                    const PixelRect r = subtree_rect(view, box, bb, frame.y0, frame.y1);
+                    skip = r.x0 >= r.x1 || r.y0 >= r.y1 || cov->covered(r);
+                }
+            }
             if (skip) {
                 ++st.subtrees_skipped;
                 continue;
@@ -97,22 +174,27 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
             const uint32_t near = n.child[side >= 0 ? 0 : 1], far = n.child[side >= 0 ? 1 : 0];
             const uint32_t first = kFrontToBack ? far : near, then = kFrontToBack ? near : far;  // then is drawn first
             if (first != kBspNone) stack[top++] = first;
-            stack[top++] = entry | kDraw;
+            // The eye in the plane sees every triangle of it edge-on: nothing to draw.
+            if (side != 0 && n.count != 0) stack[top++] = entry | kDraw | (side > 0 ? kFront : 0);
             if (then != kBspNone) stack[top++] = then;
             continue;
         }
-        const int side = eye_side(tree, n, eye);
-        if (side == 0) continue;  // the eye is in the plane: every triangle of it is seen edge-on
+        const bool eye_front = (entry & kFront) != 0;
         for (uint32_t t = n.first; t < n.first + n.count; ++t) {
             const BspTriangle& tri = tree.triangles[t];
             const bool back = (tri.face & kBspFaceBack) != 0;
-            const bool front = (side > 0) != back;  // the eye is on the triangle's own front side
-            if (opt.cull && !front) continue;
+            const bool front = eye_front != back;  // the eye is on the triangle's own front side
+            if (opt.cull && !front) {
+                ++st.triangles_culled;
+                continue;
+            }
             const Normal14 normal{static_cast<int16_t>(back ? -n.normal[0] : n.normal[0]),
                                   static_cast<int16_t>(back ? -n.normal[1] : n.normal[1]),
                                   static_cast<int16_t>(back ? -n.normal[2] : n.normal[2])};
             const uint32_t face = tri.face & kBspFaceMask;
-            for_each_clipped(view, tree.vertices, verts, tri.v[0], tri.v[1], tri.v[2], st,
+            for (uint32_t v : tri.v)
+                if (unprojected(verts[v])) project_vertex(view, to_view, tree.vertices[v], verts[v]);
+            for_each_clipped(view, tree.vertices, Span<const ScreenVertex>{verts.data(), verts.size()}, tri.v[0], tri.v[1], tri.v[2], st,
                              [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
                                  TriangleRaster tr;
                                  const int32_t area = TriangleRaster::signed_area(a, b, c);
@@ -136,12 +218,15 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
 
 }  // namespace detail
 
-/// Draws `tree` back to front into the band (the caller cleared it and projected tree.vertices into
-/// `verts` with project_vertices() for the same view); `eye` is the camera's eye (world, as make_view
-/// took it). `stack` holds bsp_stack_entries(tree.max_depth) entries. Returns invalid_argument for an
-/// unusable frame, too few vertices or too small a stack. Counts nodes visited and subtrees skipped.
+/// Draws `tree` back to front into the band (the caller cleared it); `eye` is the camera's eye (world, as
+/// make_view took it). `verts` (one per tree vertex) holds the vertices projected for the same view:
+/// either all of them by project_vertices() (needed for Shade::depth's range), or, marked once per frame
+/// by mark_unprojected(), each projected here when a triangle first needs it (a walk that skips most of
+/// the tree projects only what it draws). `stack` holds bsp_stack_entries(tree.max_depth) entries.
+/// Returns invalid_argument for an unusable frame, too few vertices or too small a stack. Counts nodes
+/// visited and subtrees skipped.
 template <class Format, class Depth>
-FrameStats draw_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<const ScreenVertex> verts,
+FrameStats draw_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
                     const FrameView<Format, Depth>& frame, const DrawOptions& opt, Span<uint32_t> stack) {
     return detail::walk_bsp<false>(view, eye, tree, verts, frame, opt, stack, nullptr);
 }
@@ -149,7 +234,7 @@ FrameStats draw_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
 /// draw_bsp() front to back: each pixel of the band is written at most once, covered subtrees are
 /// skipped unseen and the walk stops when the band is full. `coverage`: rows * coverage_words(width).
 template <class Format, class Depth>
-FrameStats draw_bsp_front(const View& view, const Vec3q16& eye, const BspTree& tree, Span<const ScreenVertex> verts,
+FrameStats draw_bsp_front(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
                           const FrameView<Format, Depth>& frame, const DrawOptions& opt, Span<uint32_t> stack,
                           Span<uint32_t> coverage) {
     Coverage cov;

@@ -1,0 +1,112 @@
+// Host twin of bsp_torus, bsp_city and bsp_city_zbuffer: the same scenes, storage and band renderer
+// (bsp/app.hpp) compiled for the host, writing bsp_torus.ppm, bsp_city.ppm and bsp_city_zbuffer.ppm into
+// the current directory. Then checks on the host: the torus in one 128-row band and the city in 8-row
+// bands give the same bytes as the firmware's bands; the trees agree with a z-buffer render of their
+// source mesh on >= 99.9% of the pixels (the torus against the baked torus mesh without culling, 32-bit
+// depth; the city against bsp_city_zbuffer); front to back wrote each pixel once (checked per band by
+// run()). Prints the counts. Exit 0 ok, 1 on a failure.
+#include <cstdio>
+#include <vector>
+
+#include "bsp/scenes.hpp"
+#include "common/scenes/torus_160x128.hpp"
+#include "stdio_io.hpp"
+
+extern "C" void bench_begin() {}
+extern "C" void bench_end() {}
+
+namespace {
+
+/// Io that keeps the bytes of the one file written; with `disk` also writes it through stdio.
+struct CaptureIo {
+    bool disk = false;
+    bool quiet = false;
+    spin::StdioIo file;
+    std::vector<uint8_t> bytes;
+
+    bool open(const char* path) {
+        bytes.clear();
+        return !disk || file.open(path);
+    }
+    bool write(const void* data, size_t size) {
+        const auto* p = static_cast<const uint8_t*>(data);
+        bytes.insert(bytes.end(), p, p + size);
+        return !disk || file.write(data, size);
+    }
+    bool close() { return !disk || file.close(); }
+    void print(const char* text) {
+        if (!quiet) file.print(text);
+    }
+    void print_u32(uint32_t v) {
+        if (!quiet) file.print_u32(v);
+    }
+};
+
+bspfw::TorusStorage g_torus;
+bspfw::CityStorage g_city;
+bspfw::CityZStorage g_city_z;
+
+/// The PPM bytes of `algo` drawing `s` in bands of `rows` rows (storage `buf` with its band arrays
+/// replaced); writes the file `path` too when `disk`. Empty on failure.
+std::vector<uint8_t> render(const bspfw::Scene& s, bspfw::Algo algo, bspfw::Buffers buf, int32_t rows, const char* path, bool disk) {
+    CaptureIo io;
+    io.disk = disk;
+    io.quiet = !disk;
+    std::vector<uint16_t> color(static_cast<size_t>(s.width) * rows), depth(static_cast<size_t>(s.width) * rows);
+    std::vector<uint32_t> coverage(static_cast<size_t>(hider::coverage_words(s.width)) * rows);
+    buf.color = {color.data(), color.size()};
+    buf.depth = {depth.data(), depth.size()};
+    buf.coverage = {coverage.data(), coverage.size()};
+    buf.rows = rows;
+    if (bspfw::run(io, s, algo, buf, path) != 0) return {};
+    return io.bytes;
+}
+
+/// Pixels (3-byte groups after the common header) that differ between two PPMs of equal size.
+int32_t pixel_mismatches(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, int32_t pixels) {
+    if (a.size() != b.size() || a.size() < static_cast<size_t>(pixels) * 3) return pixels;
+    const size_t header = a.size() - static_cast<size_t>(pixels) * 3;
+    int32_t n = 0;
+    for (size_t i = header; i < a.size(); i += 3) n += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
+    return n;
+}
+
+bool agrees(const char* what, const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, int32_t pixels) {
+    const int32_t diff = pixel_mismatches(a, b, pixels);
+    const bool ok = int64_t{pixels - diff} * 1000 >= int64_t{pixels} * 999;
+    std::printf("%s: %d of %d pixels differ (%.3f%% equal)%s\n", what, static_cast<int>(diff), static_cast<int>(pixels),
+                100.0 * (pixels - diff) / pixels, ok ? ", >= 99.9%: ok" : ", below 99.9%: FAIL");
+    return ok;
+}
+
+bool same(const char* what, const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+    if (!a.empty() && a == b) return true;
+    std::fprintf(stderr, "bsp_reference: %s differ\n", what);
+    return false;
+}
+
+}  // namespace
+
+int main() {
+    namespace bf = bspfw;
+    const bf::Scene torus = bf::torus_scene(), city = bf::city_scene(), city_mesh = bf::city_mesh_scene();
+    const auto torus_ppm = render(torus, bf::Algo::back_to_front, g_torus.buffers(), bf::kTorusRows, "bsp_torus.ppm", true);
+    const auto city_ppm = render(city, bf::Algo::front_to_back, g_city.buffers(), city.height, "bsp_city.ppm", true);
+    const auto city_z_ppm = render(city_mesh, bf::Algo::zbuffer, g_city_z.buffers(), city.height, "bsp_city_zbuffer.ppm", true);
+    if (torus_ppm.empty() || city_ppm.empty() || city_z_ppm.empty()) return 1;
+    bool ok = same("bsp_torus in one band and in 16-row bands",
+                   render(torus, bf::Algo::back_to_front, g_torus.buffers(), torus.height, "", false), torus_ppm);
+    ok = same("bsp_city in 8-row bands and in one band", render(city, bf::Algo::front_to_back, g_city.buffers(), 8, "", false),
+              city_ppm) && ok;
+    ok = same("bsp_city back to front and front to back", render(city, bf::Algo::back_to_front, g_city.buffers(), 8, "", false),
+              city_ppm) && ok;
+
+    // The torus mesh z-buffered without culling (the tree's source, same camera).
+    namespace tm = hider::scenes::torus_160x128;
+    static bf::Storage<tm::kVertexCount, 1, tm::kWidth, tm::kHeight, true, false> torus_z;
+    bf::Scene torus_mesh{{}, tm::mesh(), tm::kCamera, tm::kWidth, tm::kHeight, false};
+    const auto torus_z_ppm = render(torus_mesh, bf::Algo::zbuffer, torus_z.buffers(), tm::kHeight, "bsp_torus_zbuffer.ppm", true);
+    ok = agrees("bsp_torus vs its mesh z-buffered", torus_ppm, torus_z_ppm, torus.width * torus.height) && ok;
+    ok = agrees("bsp_city vs bsp_city_zbuffer", city_ppm, city_z_ppm, city.width * city.height) && ok;
+    return ok ? 0 : 1;
+}
