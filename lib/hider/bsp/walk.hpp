@@ -196,6 +196,9 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
                 if (unprojected(verts[v])) project_vertex(view, to_view, tree.vertices[v], verts[v]);
             for_each_clipped(view, tree.vertices, Span<const ScreenVertex>{verts.data(), verts.size()}, tri.v[0], tri.v[1], tri.v[2], st,
                              [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+                                 if constexpr (kFrontToBack) {  // hidden behind what is drawn: no set-up
+                                     if (cov->covered(pixel_rect(screen_box(a, b, c), bb, frame.y0, frame.y1))) return;
+                                 }
                                  TriangleRaster tr;
                                  const int32_t area = TriangleRaster::signed_area(a, b, c);
                                  if (area == 0 || !tr.setup(a, b, c, area, frame.width, frame.height, bb)) return;

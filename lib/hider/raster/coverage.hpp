@@ -38,16 +38,15 @@ public:
         if (r.x0 >= r.x1 || r.y0 >= r.y1) return true;
         if (remaining_ == 0) return true;
         const int32_t w0 = r.x0 >> 5, w1 = (r.x1 - 1) >> 5;
-        const uint32_t first = ~uint32_t{0} << (r.x0 & 31);
         const uint32_t last = ~uint32_t{0} >> (31 - ((r.x1 - 1) & 31));
-        for (int32_t y = r.y0; y < r.y1; ++y) {
-            const uint32_t* row = words_ + static_cast<ptrdiff_t>(y - y0_) * wpr_;
-            for (int32_t w = w0; w <= w1; ++w) {
-                uint32_t want = ~uint32_t{0};
-                if (w == w0) want &= first;
-                if (w == w1) want &= last;
-                if ((row[w] & want) != want) return false;
-            }
+        const uint32_t first = (~uint32_t{0} << (r.x0 & 31)) & (w0 == w1 ? last : ~uint32_t{0});
+        const uint32_t* row = words_ + static_cast<ptrdiff_t>(r.y0 - y0_) * wpr_;
+        for (int32_t y = r.y0; y < r.y1; ++y, row += wpr_) {
+            if ((row[w0] & first) != first) return false;
+            if (w0 == w1) continue;
+            for (int32_t w = w0 + 1; w < w1; ++w)
+                if (row[w] != ~uint32_t{0}) return false;
+            if ((row[w1] & last) != last) return false;
         }
         return true;
     }
@@ -67,10 +66,14 @@ public:
             if (todo == want) {  // nothing covered yet: the whole run
                 for (int32_t k = 0; k < n; ++k, z += dz) crow[x + k] = shade(z);
                 written += static_cast<uint32_t>(n);
-            } else if (todo != 0) {
-                uint32_t bits = todo >> bit;
-                for (int32_t k = 0; k < n; ++k, z += dz, bits >>= 1)
-                    if ((bits & 1u) != 0) { crow[x + k] = shade(z); ++written; }
+            } else if (todo != 0) {  // up to the last pixel still to paint
+                uint32_t bits = todo >> bit, zk = z;
+                for (int32_t k = 0; bits != 0; ++k, zk += dz, bits >>= 1)
+                    if ((bits & 1u) != 0) {
+                        crow[x + k] = shade(zk);
+                        ++written;
+                    }
+                z += dz * static_cast<uint32_t>(n);
             } else {
                 z += dz * static_cast<uint32_t>(n);
             }
