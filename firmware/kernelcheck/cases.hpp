@@ -32,9 +32,18 @@ struct Buffers {
     uint16_t color[kMaxRows * kWidth];
 };
 
-/// The next case of the sequence: fills `b` and returns the kernel state (zrow = b.depth).
-inline hider::RowKernel make_case(Rng& rng, Buffers& b) {
-    hider::RowKernel k{};
+/// One kernel call: the state and the call's arguments.
+struct Case {
+    hider::RowKernel k;
+    uint16_t* zrow;
+    int32_t rows;
+    intptr_t color_offset;
+};
+
+/// The next case of the sequence: fills `b` and returns the call (zrow = the depth array).
+inline Case make_case(Rng& rng, Buffers& b) {
+    Case cs{};
+    hider::RowKernel& k = cs.k;
     k.lz = rng.next();
     // Half the cases hold depths near the span's own (z >> 16 +- 3): ties, which must keep the stored pixel.
     const bool near = (rng.next() & 1u) != 0;
@@ -43,14 +52,14 @@ inline hider::RowKernel make_case(Rng& rng, Buffers& b) {
                           : static_cast<uint16_t>(rng.next());
         b.color[i] = static_cast<uint16_t>(rng.next());
     }
-    k.rows = rng.range(1, kMaxRows - 1);
+    cs.rows = rng.range(1, kMaxRows - 1);
     // |q| <= 2 and one correction a row: px moves by -3 .. +2 a row, so over at most 7 steps a left edge
     // from [21, 38] stays >= 0 and a right edge from [20, 50] <= 64: every pixel touched is in the row.
     k.la = rng.range(1, 1 << 19);
     k.lm = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.la));
     k.lg = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.la)) - k.la;  // biased: [-a, 0)
-    k.lq = rng.range(-2, 2);
-    k.lpx = rng.range(21, 38);
+    const int32_t lq = rng.range(-2, 2);
+    k.lx = 2 * rng.range(21, 38);  // kernel bytes: 2 px
     k.ra = rng.range(1, 1 << 19);
     k.rm = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.ra));
     k.rg = static_cast<int32_t>(rng.next() % static_cast<uint32_t>(k.ra)) - k.ra;
@@ -68,12 +77,13 @@ inline hider::RowKernel make_case(Rng& rng, Buffers& b) {
             m = g > -a ? -g : static_cast<int32_t>(rng.next() % static_cast<uint32_t>(a));  // in [0, a)
         }
     }
-    k.rq = rng.range(-2, 2);
-    k.rpx = rng.range(20, 50);  // empty, one-pixel and long spans
+    const int32_t rq = rng.range(-2, 2);
+    k.rx = 2 * rng.range(20, 50);  // empty, one-pixel and long spans
     k.dzdx = rng.next() >> rng.range(8, 31);
     k.ldz = near ? rng.next() >> rng.range(12, 31) : rng.next();
-    k.dz = k.dzdx;
     k.stride_bytes = kWidth * 2;
+    k.lstep = 2 * lq + k.stride_bytes;  // kernel bytes: 2 q + stride
+    k.rstep = 2 * rq + k.stride_bytes;
     // Every other case swaps the two arrays' roles, so the colour sits before the depth (negative offset).
     const bool swapped = (rng.next() & 1u) != 0;
     uint16_t* const depth = swapped ? b.color : b.depth;
@@ -85,39 +95,41 @@ inline hider::RowKernel make_case(Rng& rng, Buffers& b) {
             color[i] = t;
         }
     }
-    k.zrow = depth;
-    k.color_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(color) - reinterpret_cast<uintptr_t>(depth));
+    cs.zrow = depth;
+    cs.color_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(color) - reinterpret_cast<uintptr_t>(depth));
     k.color = rng.next() & 0xFFFFu;
-    return k;
+    return cs;
 }
 
-/// FNV-1a over the buffers and the final edge state (zrow as a row count, so the digest is address-free).
-inline uint32_t digest(const Buffers& b, const hider::RowKernel& k) {
+/// FNV-1a over the buffers and the final edge state (the returned zrow as a row count, so the digest is
+/// address-free).
+inline uint32_t digest(const Buffers& b, const hider::RowKernel& k, const uint16_t* zrow) {
     uint32_t h = 2166136261u;
     auto add = [&h](uint32_t v) {
         for (int i = 0; i < 4; ++i) { h ^= (v >> (8 * i)) & 0xFFu; h *= 16777619u; }
     };
     for (int32_t i = 0; i < kMaxRows * kWidth; ++i) add(uint32_t{b.depth[i]} | (uint32_t{b.color[i]} << 16));
-    const uintptr_t base = reinterpret_cast<uintptr_t>(k.zrow) >= reinterpret_cast<uintptr_t>(b.color) &&
-                                   reinterpret_cast<uintptr_t>(k.zrow) <= reinterpret_cast<uintptr_t>(b.color + kMaxRows * kWidth)
+    const uintptr_t base = reinterpret_cast<uintptr_t>(zrow) >= reinterpret_cast<uintptr_t>(b.color) &&
+                                   reinterpret_cast<uintptr_t>(zrow) <= reinterpret_cast<uintptr_t>(b.color + kMaxRows * kWidth)
                                ? reinterpret_cast<uintptr_t>(b.color)
                                : reinterpret_cast<uintptr_t>(b.depth);
-    const uint32_t rows_done = static_cast<uint32_t>(reinterpret_cast<uintptr_t>(k.zrow) - base) /
+    const uint32_t rows_done = static_cast<uint32_t>(reinterpret_cast<uintptr_t>(zrow) - base) /
                                static_cast<uint32_t>(k.stride_bytes);
-    const uint32_t fields[] = {static_cast<uint32_t>(k.lpx), static_cast<uint32_t>(k.lg), k.lz,
-                               static_cast<uint32_t>(k.rpx), static_cast<uint32_t>(k.rg), rows_done};
+    const uint32_t fields[] = {static_cast<uint32_t>(k.lx), static_cast<uint32_t>(k.lg), k.lz,
+                               static_cast<uint32_t>(k.rx), static_cast<uint32_t>(k.rg), rows_done};
     for (uint32_t f : fields) add(f);
     return h;
 }
 
-/// Digest of every case run through `run` (a function of RowKernel&), into out[kCases].
+/// Digest of every case run through `run` (a function of RowKernel&, zrow, rows, colour offset that
+/// returns the next zrow), into out[kCases].
 template <class Run>
 void run_cases(Run&& run, Buffers& b, uint32_t* out) {
     Rng rng{kSeed};
     for (int c = 0; c < kCases; ++c) {
-        hider::RowKernel k = make_case(rng, b);
-        run(k);
-        out[c] = digest(b, k);
+        Case cs = make_case(rng, b);
+        const uint16_t* const next = run(cs.k, cs.zrow, cs.rows, cs.color_offset);
+        out[c] = digest(b, cs.k, next);
     }
 }
 

@@ -1,37 +1,67 @@
-// kernelcheck firmware (big machine): kernelcheck::kCases random row-kernel states (cases.hpp) run through
-// run_row_kernel() (the Thumb-2 loop on ARMv7-M) and through run_row_kernel_portable(); every case must
-// give the same buffers and final state. Then the frame clear (detail::fill, store-multiples on Cortex-M)
-// against a plain loop for every length up to kFillMax. The digests go to kernelcheck.bin, which the
-// host twin writes from the portable kernel and the plain loop (ctest kernelcheck.matches_host).
+// kernelcheck firmware: the chip's assembly against its portable twins, on random states.
+// - kernelcheck::kCases row-kernel states (cases.hpp) through run_row_kernel() (Thumb-2, Thumb-1 or RV32
+//   assembly) and run_row_kernel_portable(): same buffers and final state for every case.
+// - kernelcheck::kSetupCases triangle set-ups (setup_cases.hpp) through kernel_setup() (the Thumb-2 set-up
+//   on ARMv7-M) and kernel_setup_portable(): same outcome and kernel fields for every case.
+// - The frame clear (detail::fill, store-multiples on Cortex-M) against a plain loop for every length up
+//   to kFillMax.
+// The digests go to kernelcheck.bin, which the host twin writes from the portable code (ctest
+// kernelcheck.matches_host).
 #include "common/bench.hpp"
 #include "kernelcheck/cases.hpp"
+#include "kernelcheck/setup_cases.hpp"
 #include "semihost/semihost.hpp"
 
 namespace {
 
+constexpr int kWords = kernelcheck::kCases + kernelcheck::kSetupCases + 1;  // the last word: the fill digest
 kernelcheck::Buffers g_buffers;
-uint32_t g_fast[kernelcheck::kCases + 1];  // the last word: the fill digest
-uint32_t g_portable[kernelcheck::kCases];
+uint32_t g_fast[kWords];
+uint32_t g_portable[kernelcheck::kCases + kernelcheck::kSetupCases];
+
+/// Index of the first differing digest in [begin, end), or -1.
+int first_difference(int begin, int end) {
+    for (int c = begin; c < end; ++c)
+        if (g_fast[c] != g_portable[c]) return c - begin;
+    return -1;
+}
 
 }  // namespace
 
 int main() {
     namespace sh = hider::semihost;
     bench_begin();
-    kernelcheck::run_cases([](hider::RowKernel& k) { hider::run_row_kernel(k); }, g_buffers, g_fast);
+    kernelcheck::run_cases([](hider::RowKernel& k, uint16_t* zrow, int32_t rows, intptr_t offset) {
+        return hider::run_row_kernel(k, zrow, rows, offset);
+    }, g_buffers, g_fast);
     bench_end();
-    kernelcheck::run_cases([](hider::RowKernel& k) { hider::run_row_kernel_portable(k); }, g_buffers, g_portable);
-    for (int c = 0; c < kernelcheck::kCases; ++c) {
-        if (g_fast[c] != g_portable[c]) {
-            sh::print("kernelcheck: run_row_kernel differs from the portable kernel in case ");
-            sh::print_u32(static_cast<uint32_t>(c));
-            sh::print("\n");
-            return 1;
-        }
+    kernelcheck::run_cases([](hider::RowKernel& k, uint16_t* zrow, int32_t rows, intptr_t offset) {
+        return hider::run_row_kernel_portable(k, zrow, rows, offset);
+    }, g_buffers, g_portable);
+    kernelcheck::run_setup_cases([](const hider::ScreenVertex& a, const hider::ScreenVertex& b, const hider::ScreenVertex& c,
+                                    hider::KernelSetupIo& io) { return hider::kernel_setup(a, b, c, io); },
+                                 g_fast + kernelcheck::kCases);
+    kernelcheck::run_setup_cases([](const hider::ScreenVertex& a, const hider::ScreenVertex& b, const hider::ScreenVertex& c,
+                                    hider::KernelSetupIo& io) {
+        return hider::kernel_setup_portable(a, b, c, io.area, *io.band, *io.out);
+    }, g_portable + kernelcheck::kCases);
+    const int kernel_case = first_difference(0, kernelcheck::kCases);
+    if (kernel_case >= 0) {
+        sh::print("kernelcheck: run_row_kernel differs from the portable kernel in case ");
+        sh::print_u32(static_cast<uint32_t>(kernel_case));
+        sh::print("\n");
+        return 1;
     }
-    g_fast[kernelcheck::kCases] = kernelcheck::fill_digest(
+    const int setup_case = first_difference(kernelcheck::kCases, kernelcheck::kCases + kernelcheck::kSetupCases);
+    if (setup_case >= 0) {
+        sh::print("kernelcheck: kernel_setup differs from kernel_setup_portable in case ");
+        sh::print_u32(static_cast<uint32_t>(setup_case));
+        sh::print("\n");
+        return 1;
+    }
+    g_fast[kWords - 1] = kernelcheck::fill_digest(
         [](uint16_t* p, uint32_t n, uint16_t v) { hider::detail::fill<uint16_t>(p, n, v); }, g_buffers);
-    if (g_fast[kernelcheck::kCases] != kernelcheck::fill_digest(kernelcheck::fill_plain, g_buffers)) {
+    if (g_fast[kWords - 1] != kernelcheck::fill_digest(kernelcheck::fill_plain, g_buffers)) {
         sh::print("kernelcheck: the frame clear (detail::fill) differs from a plain loop\n");
         return 1;
     }
@@ -41,6 +71,8 @@ int main() {
     }
     sh::print("kernelcheck: ");
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kCases));
-    sh::print(" cases, the target's row kernel equals the portable one; the clear equals a plain loop\n");
+    sh::print(" kernel cases and ");
+    sh::print_u32(static_cast<uint32_t>(kernelcheck::kSetupCases));
+    sh::print(" set-ups equal the portable code; the clear equals a plain loop\n");
     return 0;
 }

@@ -78,19 +78,17 @@ int main() {
     uint32_t written = 0;
     if constexpr (kKernel) {
         hider::RowKernel k{};  // one row [0, x1); edges that do not move (m = q = 0)
-        k.lpx = 0;
-        k.rpx = x1;
+        k.lx = 0;
+        k.rx = 2 * x1;
+        k.lstep = k.rstep = 2 * kRowPixels;
         k.la = k.ra = 16;
         k.lg = k.rg = -16;  // biased error terms in [-a, 0): no correction
         k.lz = z_q32;
-        k.rows = 1;
         k.stride_bytes = 2 * kRowPixels;
-        k.zrow = zrow;
-        k.dz = dz_q32;
-        k.color_offset = offset;
+        k.dzdx = dz_q32;
         k.color = shader.color;
         bench_begin();
-        hider::run_row_kernel(k);
+        (void)hider::run_row_kernel(k, zrow, 1, offset);
         bench_end();
     } else {
         const hider::PairedSpan<uint16_t, hider::FlatShader<uint16_t>> span{dz_q32, offset, shader};

@@ -2,6 +2,7 @@
 // snapped screen area, flat shading, then TriangleRaster rows into span_depth_test. Works on any band
 // of rows; drawing every band of a frame gives exactly the bytes of drawing the whole frame.
 #pragma once
+#include <hider/raster/kernel_triangle.hpp>
 #include <hider/raster/span.hpp>
 #include <hider/raster/triangle.hpp>
 #include <hider/raster/vertices.hpp>
@@ -74,27 +75,6 @@ struct DepthTestRows<kCount, Format, Depth, Shader, true> {
     }
 };
 
-/// Flat-coloured rows of 16-bit pixels over 16-bit depth without fragment counting: TriangleRaster
-/// runs triangles inside the frame's columns through the RowKernel (row_kernel.hpp), the rest
-/// through operator() like the other functors.
-template <class Format>
-struct FlatRows16 : DepthTestRows<false, Format, uint16_t, FlatShader<typename Format::Pixel>, true> {
-    static constexpr bool kRowKernel = true;
-    using DepthTestRows<false, Format, uint16_t, FlatShader<typename Format::Pixel>, true>::DepthTestRows;
-
-    /// Fills k's row and span fields for rows from begin()'s row on (the caller fills edges and rows).
-    void fill_kernel(RowKernel& k) const {
-        k.zrow = this->zrow;
-        k.stride_bytes = this->stride * static_cast<int32_t>(sizeof(uint16_t));
-        k.dz = this->span->dz_q32;
-        k.color_offset = this->span->color_offset;
-        k.color = this->span->shader.color;
-    }
-};
-
-template <class Shader> struct is_flat_shader { static constexpr bool value = false; };
-template <class Pixel> struct is_flat_shader<FlatShader<Pixel>> { static constexpr bool value = true; };
-
 /// Depth-tested rows [y_begin, y_end) of a set-up triangle with `shader`; returns the fragments
 /// (counted when kCount) and adds the pixels written to `written`.
 template <bool kCount, class Format, class Depth, class Shader>
@@ -106,15 +86,10 @@ uint32_t scan_depth_tested(const TriangleRaster& tr, int32_t y_begin, int32_t y_
         const intptr_t offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(frame.color) -
                                                       reinterpret_cast<uintptr_t>(frame.depth));
         const PairedSpan<Pixel, Shader> span{tr.dzdx(), offset, shader};
-        if constexpr (!kCount && sizeof(Depth) == 2 && is_flat_shader<Shader>::value) {
-            FlatRows16<Format> rows(frame, span);
-            return tr.scan(y_begin, y_end, rows);
-        } else {
-            DepthTestRows<kCount, Format, Depth, Shader> rows(frame, span);
-            const uint32_t fragments = tr.scan(y_begin, y_end, rows);
-            written += rows.written;
-            return fragments;
-        }
+        DepthTestRows<kCount, Format, Depth, Shader> rows(frame, span);
+        const uint32_t fragments = tr.scan(y_begin, y_end, rows);
+        written += rows.written;
+        return fragments;
     } else {
         DepthTestRows<kCount, Format, Depth, Shader> rows(frame, shader, tr.dzdx());
         const uint32_t fragments = tr.scan(y_begin, y_end, rows);
@@ -123,46 +98,15 @@ uint32_t scan_depth_tested(const TriangleRaster& tr, int32_t y_begin, int32_t y_
     }
 }
 
-}  // namespace detail
-
-/// Draws `mesh` into `frame` with the z-buffer. The caller cleared the band (clear()) and projected
-/// the vertices into `verts` with project_vertices() for the same view. Borrows everything for the call.
-/// Errors: invalid_argument when the frame is unusable, has no depth buffer, or its size differs from the view.
-template <bool kCount = false, class Format, class Depth>
-FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
-                        const FrameView<Format, Depth>& frame, const DrawOptions& opt) {
-    FrameStats st;
-    if (!frame.valid() || frame.depth == nullptr || frame.width != view.width || frame.height != view.height ||
-        verts.size() < mesh.positions.size()) {
-        st.status = Status::invalid_argument;
-        return st;
-    }
-    using Pixel = typename Format::Pixel;
-    const BandBounds bb = band_bounds(frame);
-    const FaceShading shading(view, opt);
-    const bool whole_frame = frame.y0 == 0 && frame.y1 == frame.height;
-    // Triangles are counted only by the band holding their first row, so band counts add up.
-    auto owns = [&](int32_t first_row) {
-        const int32_t first = clamp(first_row, int32_t{0}, frame.height - 1);
-        return frame.y0 <= first && first < frame.y1;
-    };
-    // One drawable triangle with its signed area (< 0: front face), culling already decided.
-    auto draw = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, size_t t) {
-        TriangleRaster tr;
-        if (!tr.setup(a, b, c, area, frame.width, frame.height, bb)) return;  // no pixel centre of the band
-        st.triangles_drawn += whole_frame || owns(tr.first_row());  // first_row(): the same rounding
-        const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
-        if (opt.shade == Shade::depth) {
-            st.fragments += detail::scan_depth_tested<kCount>(tr, y_begin, y_end, frame,
-                                                              DepthShader<Format>(opt.depth_range), st.pixels_written);
-            return;
-        }
-        st.fragments += detail::scan_depth_tested<kCount>(
-            tr, y_begin, y_end, frame, FlatShader<Pixel>{Format::pack(shading.color(mesh, t, tr.front()))},
-            st.pixels_written);
-    };
+/// The z-buffer's triangle loop: trivial reject, clip (rare), cull by the sign of the snapped area,
+/// then draw(a, b, c, area, t) for each drawable triangle, in mesh order. Counts culled, clipped and
+/// outside triangles in `st` (culled ones only in the band holding their first row).
+template <class Draw>
+__attribute__((always_inline)) inline void for_each_drawable(const View& view, const Mesh& mesh,
+                                                             Span<const ScreenVertex> verts, bool cull, const BandBounds& bb,
+                                                             bool whole_frame, int32_t band_y0, int32_t band_y1,
+                                                             int32_t height, FrameStats& st, Draw&& draw) {
     // Loop invariants in locals: the lambdas capture st by reference, so GCC would reload them per triangle.
-    const bool cull = opt.cull;
     const Tri* const tris = mesh.tris.data();
     const ScreenVertex* const vp = verts.data();
     const size_t tri_count = mesh.tris.size();
@@ -171,8 +115,13 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
                     __attribute__((always_inline)) {
         if (area == 0) return false;
         if (cull && area > 0) {
-            st.triangles_culled += whole_frame ||
-                owns((min(a.y, min(b.y, c.y)) - bb.y_origin + kSubpixel - 1) >> kSubpixelBits);
+            if (whole_frame) {
+                ++st.triangles_culled;
+            } else {  // counted only by the band holding the first row, so band counts add up
+                const int32_t first = clamp((min(a.y, min(b.y, c.y)) - bb.y_origin + kSubpixel - 1) >> kSubpixelBits,
+                                            int32_t{0}, height - 1);
+                st.triangles_culled += band_y0 <= first && first < band_y1;
+            }
             return false;
         }
         return true;
@@ -194,6 +143,92 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
             if (keep(pa, pb, pc, area)) draw(pa, pb, pc, area, t);
         });
     }
+}
+
+/// One drawable triangle through TriangleRaster and the depth-tested span (any format, shader, band).
+template <bool kCount, class Format, class Depth>
+void draw_raster(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, size_t t,
+                 const FrameView<Format, Depth>& frame, const BandBounds& bb, bool whole_frame, const Mesh& mesh,
+                 const FaceShading& shading, const DrawOptions& opt, FrameStats& st) {
+    TriangleRaster tr;
+    if (!tr.setup(a, b, c, area, frame.width, frame.height, bb)) return;  // no pixel centre of the band
+    const int32_t first = clamp(tr.first_row(), int32_t{0}, frame.height - 1);  // counted by one band only
+    st.triangles_drawn += whole_frame || (frame.y0 <= first && first < frame.y1);
+    const int32_t y_begin = max(frame.y0, tr.first_row()), y_end = min(frame.y1, tr.end_row());
+    if (opt.shade == Shade::depth) {
+        st.fragments += scan_depth_tested<kCount>(tr, y_begin, y_end, frame, DepthShader<Format>(opt.depth_range),
+                                                  st.pixels_written);
+        return;
+    }
+    st.fragments += scan_depth_tested<kCount>(
+        tr, y_begin, y_end, frame,
+        FlatShader<typename Format::Pixel>{Format::pack(shading.color(mesh, t, tr.front()))}, st.pixels_written);
+}
+
+/// The flat RGB565 + 16-bit depth path without fragment counting: triangles inside the frame's columns
+/// are set up straight into the row kernel (kernel_triangle.hpp), the others take draw_raster().
+template <class Format>
+void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                      const FrameView<Format, uint16_t>& frame, const DrawOptions& opt, FrameStats& st) {
+    const BandBounds bb = band_bounds(frame);
+    const FaceShading shading(view, opt);
+    const bool whole_frame = frame.y0 == 0 && frame.y1 == frame.height;
+    const KernelBand band = kernel_band(frame.width, frame.height, frame.y0, frame.y1,
+                                        frame.stride * static_cast<int32_t>(sizeof(uint16_t)));
+    const intptr_t color_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(frame.color) -
+                                                        reinterpret_cast<uintptr_t>(frame.depth));
+    uint16_t* const depth = frame.depth;
+    const int32_t stride = frame.stride, y0 = frame.y0, y1 = frame.y1, height = frame.height;
+    KernelTriangle kt;
+    KernelSetupIo io{&band, 0, &kt};
+    for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st,
+                      [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, size_t t) {
+        io.area = area;
+        const KernelSetup s = kernel_setup(a, b, c, io);
+        if (s == KernelSetup::none) return;
+        if (s == KernelSetup::generic) {
+            draw_raster<false>(a, b, c, area, t, frame, bb, whole_frame, mesh, shading, opt, st);
+            return;
+        }
+        const int32_t first = clamp(kt.top, int32_t{0}, height - 1);
+        st.triangles_drawn += whole_frame || (y0 <= first && first < y1);
+        if (kt.row >= kt.end) return;
+        kt.k.color = Format::pack(shading.color(mesh, t, area < 0));
+        run_kernel_triangle(kt, depth + static_cast<ptrdiff_t>(kt.row - y0) * stride, y1, color_offset);
+    });
+}
+
+template <class T, class U> struct is_same_type { static constexpr bool value = false; };
+template <class T> struct is_same_type<T, T> { static constexpr bool value = true; };
+
+}  // namespace detail
+
+/// Draws `mesh` into `frame` with the z-buffer. The caller cleared the band (clear()) and projected
+/// the vertices into `verts` with project_vertices() for the same view. Borrows everything for the call.
+/// Errors: invalid_argument when the frame is unusable, has no depth buffer, or its size differs from the view.
+template <bool kCount = false, class Format, class Depth>
+FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                        const FrameView<Format, Depth>& frame, const DrawOptions& opt) {
+    FrameStats st;
+    if (!frame.valid() || frame.depth == nullptr || frame.width != view.width || frame.height != view.height ||
+        verts.size() < mesh.positions.size()) {
+        st.status = Status::invalid_argument;
+        return st;
+    }
+    if constexpr (!kCount && detail::is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2) {
+        if (opt.shade != Shade::depth) {
+            detail::draw_flat_kernel(view, mesh, verts, frame, opt, st);
+            return st;
+        }
+    }
+    const BandBounds bb = band_bounds(frame);
+    const FaceShading shading(view, opt);
+    const bool whole_frame = frame.y0 == 0 && frame.y1 == frame.height;
+    detail::for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, frame.y0, frame.y1, frame.height, st,
+                              [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area,
+                                  size_t t) {
+        detail::draw_raster<kCount>(a, b, c, area, t, frame, bb, whole_frame, mesh, shading, opt, st);
+    });
     return st;
 }
 
