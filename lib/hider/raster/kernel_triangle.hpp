@@ -138,14 +138,16 @@ inline uint16_t* run_kernel_triangle(KernelTriangle& t, uint16_t* zrow, int32_t 
             zrow = run_row_kernel(t.k, zrow, upper_end - t.row, color_offset);
             t.row = upper_end;
         }
-        if (t.row < t.mid || t.row >= stop) return zrow;
-        RowKernel& k = t.k;  // the lower short edge takes over
-        if (t.next_left) {
-            k.lx = t.next_x; k.lg = t.next_g; k.la = t.next_a; k.lm = t.next_m; k.lstep = t.next_step;
-            k.lz = t.next_z;
-            k.ldz = t.next_dz;
-        } else {
-            k.rx = t.next_x; k.rg = t.next_g; k.ra = t.next_a; k.rm = t.next_m; k.rstep = t.next_step;
+        if (t.row < t.mid) return zrow;  // stopped above the middle row
+        if (t.mid < t.end) {  // on the middle row (perhaps a later call's first): the lower short edge takes over
+            RowKernel& k = t.k;
+            if (t.next_left) {
+                k.lx = t.next_x; k.lg = t.next_g; k.la = t.next_a; k.lm = t.next_m; k.lstep = t.next_step;
+                k.lz = t.next_z;
+                k.ldz = t.next_dz;
+            } else {
+                k.rx = t.next_x; k.rg = t.next_g; k.ra = t.next_a; k.rm = t.next_m; k.rstep = t.next_step;
+            }
         }
     }
     if (t.row < stop) {
