@@ -73,7 +73,7 @@ inline uint32_t setup_digest(hider::KernelSetup s, const hider::KernelTriangle& 
                                static_cast<uint32_t>(k.rx),    static_cast<uint32_t>(k.rg), static_cast<uint32_t>(k.la),
                                static_cast<uint32_t>(k.lm),    static_cast<uint32_t>(k.lstep), k.ldz,
                                static_cast<uint32_t>(k.ra),    static_cast<uint32_t>(k.rm), static_cast<uint32_t>(k.rstep),
-                               static_cast<uint32_t>(k.stride_bytes), k.dzdx, t.next_left ? 1u : 0u};
+                               k.dzdx, t.next_left ? 1u : 0u};
     for (uint32_t f : fields) add(f);
     if (t.row < t.mid && t.mid < t.end) {  // the lower short edge takes over inside the rows
         const uint32_t next[] = {static_cast<uint32_t>(t.next_x), static_cast<uint32_t>(t.next_g),
@@ -89,17 +89,22 @@ inline uint32_t setup_digest(hider::KernelSetup s, const hider::KernelTriangle& 
 }
 
 /// Digest of every set-up case through `setup` (a function of (a, b, c, KernelSetupIo&) returning a
-/// KernelSetup), into out[kSetupCases].
-template <class Setup>
-void run_setup_cases(Setup&& setup, uint32_t* out) {
+/// KernelSetup) into out[kSetupCases], each case also through `twin`; returns the first case whose
+/// digests differ, or -1.
+template <class Setup, class Twin>
+int run_setup_cases(Setup&& setup, Twin&& twin, uint32_t* out) {
     Rng rng{kSetupSeed};
+    int first_difference = -1;
     for (int i = 0; i < kSetupCases; ++i) {
         const SetupCase c = make_setup_case(rng);
         hider::KernelTriangle t{};
         hider::KernelSetupIo io{&c.band, c.area, &t};
-        const hider::KernelSetup s = setup(c.v[0], c.v[1], c.v[2], io);
-        out[i] = setup_digest(s, t);
+        out[i] = setup_digest(setup(c.v[0], c.v[1], c.v[2], io), t);
+        hider::KernelTriangle u{};
+        io.out = &u;
+        if (setup_digest(twin(c.v[0], c.v[1], c.v[2], io), u) != out[i] && first_difference < 0) first_difference = i;
     }
+    return first_difference;
 }
 
 }  // namespace kernelcheck

@@ -1,5 +1,5 @@
 // Host twin of the kernelcheck firmware: writes kernelcheck.bin (one digest per kernel case, cases.hpp,
-// and per set-up case, setup_cases.hpp, then the fill digest) from the portable row kernel, the portable
+// and per set-up case, setup_cases.hpp, then the fill digest) from the portable kernel, the portable
 // set-up and a plain fill loop, as the reference for the kernelcheck.matches_host ctest.
 #include "kernelcheck/cases.hpp"
 #include "kernelcheck/setup_cases.hpp"
@@ -8,13 +8,13 @@
 int main() {
     static kernelcheck::Buffers buffers;
     static uint32_t digests[kernelcheck::kCases + kernelcheck::kSetupCases + 1];
-    kernelcheck::run_cases([](hider::RowKernel& k, uint16_t* zrow, int32_t rows, intptr_t offset) {
-        return hider::run_row_kernel_portable(k, zrow, rows, offset);
-    }, buffers, digests);
-    kernelcheck::run_setup_cases([](const hider::ScreenVertex& a, const hider::ScreenVertex& b, const hider::ScreenVertex& c,
-                                    hider::KernelSetupIo& io) {
-        return hider::kernel_setup_portable(a, b, c, io.area, *io.band, *io.out);
-    }, digests + kernelcheck::kCases);
+    auto kernel = [](hider::KernelTriangle& t, uint16_t* zrow, int32_t stop, const hider::KernelTarget& target) {
+        return hider::run_kernel_triangle_portable(t, zrow, stop, target);
+    };
+    auto setup = [](const hider::ScreenVertex& a, const hider::ScreenVertex& b, const hider::ScreenVertex& c,
+                    hider::KernelSetupIo& io) { return hider::kernel_setup_portable(a, b, c, io.area, *io.band, *io.out); };
+    if (kernelcheck::run_cases(kernel, kernel, buffers, digests) >= 0) return 1;
+    if (kernelcheck::run_setup_cases(setup, setup, digests + kernelcheck::kCases) >= 0) return 1;
     digests[kernelcheck::kCases + kernelcheck::kSetupCases] = kernelcheck::fill_digest(kernelcheck::fill_plain, buffers);
     return host::write_file("kernelcheck.bin", digests, sizeof digests) ? 0 : 1;
 }

@@ -28,7 +28,7 @@ struct BinnedStats {
 };
 
 namespace detail {
-constexpr uint16_t kNoTriangle = 0xFFFF;
+constexpr uint16_t kNoTriangle = 0xFFFF;  ///< ends a list; above every triangle index
 
 /// First row of the box of a drawable triangle, clamped to the frame.
 inline int32_t first_row_in_frame(int32_t y_min, const BandBounds& bb, int32_t height) {
@@ -39,7 +39,7 @@ inline int32_t first_row_in_frame(int32_t y_min, const BandBounds& bb, int32_t h
 /// the start); returns t, the next insertion's `prev`. Insertions come in ascending order.
 inline uint16_t insert_sorted(uint16_t* next, uint16_t& head, uint16_t prev, uint16_t t) {
     uint16_t at = prev == kNoTriangle ? head : next[prev];
-    while (at != kNoTriangle && at < t) {
+    while (at < t) {  // kNoTriangle stops it
         prev = at;
         at = next[at];
     }
@@ -47,6 +47,220 @@ inline uint16_t insert_sorted(uint16_t* next, uint16_t& head, uint16_t prev, uin
     if (prev == kNoTriangle) head = t;
     else next[prev] = t;
     return t;
+}
+
+/// Links every drawable triangle of the mesh (non-zero area, not culled) into the list of the band
+/// holding its first row, back to front so each list runs in mesh order; counts culled, clipped and outside triangles as draw_zbuffer()
+/// does on a whole frame. band_scale = ceil(2^20 / rows): band = first row * band_scale >> 20, exact for
+/// rows of frames up to 1,024.
+inline void bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
+                          const BandBounds& bb, int32_t height, uint32_t band_scale, uint16_t* next, uint16_t* head,
+                          FrameStats& st) {
+    const Tri* const tris = mesh.tris.data();
+    const ScreenVertex* const vp = verts.data();
+    for (size_t i = mesh.tris.size(); i-- > 0;) {
+        const Tri& tri = tris[i];
+        const ScreenVertex& a = vp[tri.v[0]];
+        const ScreenVertex& b = vp[tri.v[1]];
+        const ScreenVertex& c = vp[tri.v[2]];
+        int32_t first = height;  // first row of any drawable piece
+        auto piece = [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) __attribute__((always_inline)) {
+            const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
+            if (area == 0) return;
+            if (cull && area > 0) {
+                ++st.triangles_culled;
+                return;
+            }
+            // A box without a pixel centre of the frame is binned too: its set-up finds nothing to draw.
+            first = min(first, first_row_in_frame(min<int32_t>(pa.y, min<int32_t>(pb.y, pc.y)), bb, height));
+        };
+        if (a.z != 0 && b.z != 0 && c.z != 0) piece(a, b, c);
+        else for_each_clipped(view, mesh, verts, i, st, piece);
+        if (first == height) continue;
+        const uint32_t band = (static_cast<uint32_t>(first) * band_scale) >> 20;
+        next[i] = head[band];
+        head[band] = static_cast<uint16_t>(i);
+    }
+}
+
+/// The carried set-ups of draw_bands_kernel(): slots in use this band (mesh order) from `cur` to
+/// `cur_end`, the next band's from `nxt` (growing), and a stack of free slots below `free_top`.
+struct CarriedSlots {
+    KernelTriangle* pool;
+    const uint8_t* cur;
+    const uint8_t* cur_end;
+    uint8_t* nxt;
+    uint8_t* free_top;
+};
+
+/// Where a band's kernel rows go: the target, the band's first depth row and its end row.
+struct KernelBandTarget {
+    KernelTarget target;
+    uint16_t* zrow;
+    int32_t row_end;
+};
+
+/// Resumes the carried set-ups whose triangle comes before `limit`: draws their rows of the band (each
+/// is on the band's first row) and moves each to the next band's slots or back to the free ones.
+/// Out of line with few live values, so GCC keeps the loop in registers.
+__attribute__((noinline)) inline void resume_carried(CarriedSlots& cs, uint16_t limit, const KernelBandTarget& bt) {
+    KernelTriangle* const pool = cs.pool;
+    const uint8_t* cur = cs.cur;
+    const uint8_t* const end = cs.cur_end;
+    uint8_t* nxt = cs.nxt;
+    uint8_t* free_top = cs.free_top;
+    for (; cur != end; ++cur) {
+        const uint8_t s = *cur;
+        KernelTriangle& kt = pool[s];
+        if (kt.tri >= limit) break;
+        run_kernel_triangle(kt, bt.zrow, bt.row_end, bt.target);
+        if (kt.row < kt.end) *nxt++ = s;
+        else *free_top++ = s;
+    }
+    cs.cur = cur;
+    cs.nxt = nxt;
+    cs.free_top = free_top;
+}
+
+/// The bands of draw_zbuffer_binned() for flat RGB565 over 16-bit depth: kernel set-ups carried in slots.
+template <class BandDone>
+void draw_bands_kernel(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                       const FrameView<Rgb565Format, uint16_t>& buffers, const DrawOptions& opt, Rgb background,
+                       BinnedScratch& scratch, BandDone& done, BinnedStats& out, FrameStats& st) {
+    const int32_t rows = buffers.y1, width = buffers.width, height = buffers.height;
+    const size_t bands = static_cast<size_t>((height + rows - 1) / rows);
+    uint16_t* const next = scratch.next.data();
+    uint16_t* const head = scratch.head.data();
+    const uint8_t capacity = static_cast<uint8_t>(scratch.carried.size());
+    KernelTriangle* const pool = scratch.carried.data();
+    uint8_t* cur = scratch.slots.data();  // this band's carried slots, in mesh order
+    uint8_t* nxt = cur + capacity;        // the next band's
+    uint8_t* const free_slots = nxt + capacity;
+    for (uint8_t k = 0; k < capacity; ++k) free_slots[k] = k;
+    CarriedSlots cs{pool, cur, cur, nxt, free_slots + capacity};
+    const FaceShading shading(view, opt);
+    KernelBand kband = kernel_band(width, height, 0, height, buffers.stride * 2);
+    KernelBandTarget bt{{static_cast<intptr_t>(reinterpret_cast<uintptr_t>(buffers.color) -
+                                               reinterpret_cast<uintptr_t>(buffers.depth)),
+                         kband.stride_bytes},
+                        buffers.depth, 0};
+    KernelTriangle spare;  // a set-up without a free slot: drawn here, set up again in the next band
+    KernelSetupIo io{&kband, 0, &spare};
+    const ScreenVertex* const vp = verts.data();
+    const Tri* const tris = mesh.tris.data();
+    for (size_t b = 0; b < bands; ++b) {
+        const int32_t y0 = static_cast<int32_t>(b) * rows, y1 = min(height, y0 + rows);
+        const FrameView<Rgb565Format, uint16_t> band =
+            band_view<Rgb565Format, uint16_t>(buffers.color, buffers.depth, width, height, y0, y1);
+        clear(band, background);
+        const BandBounds band_bb = band_bounds(band);
+        kband.row_from = y0;
+        bt.row_end = y1;
+        uint16_t last = kNoTriangle;
+        uint16_t& next_head = b + 1 < bands ? head[b + 1] : last;
+        uint16_t insert_prev = kNoTriangle;
+        const uint8_t* const band_cur = cs.cur;
+        uint8_t* const band_nxt = cs.nxt;
+        for (uint16_t t = head[b];;) {
+            resume_carried(cs, t, bt);  // the carried triangles before t, in mesh order
+            if (t == kNoTriangle) break;
+            const uint16_t tri = t;
+            t = next[t];
+            const ScreenVertex& a = vp[tris[tri].v[0]];
+            const ScreenVertex& bv = vp[tris[tri].v[1]];
+            const ScreenVertex& c = vp[tris[tri].v[2]];
+            bool continues = false;
+            auto piece = [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc, bool whole) {
+                const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
+                if (area == 0 || (opt.cull && area > 0)) return;
+                const bool slot = whole && cs.free_top != free_slots;
+                KernelTriangle& kt = slot ? pool[cs.free_top[-1]] : spare;
+                io.area = area;
+                io.out = &kt;
+                const KernelSetup s = kernel_setup(pa, pb, pc, io);
+                if (s == KernelSetup::kernel) {
+                    const int32_t first = clamp<int32_t>(kt.top, 0, height - 1);
+                    st.triangles_drawn += y0 <= first && first < y1;
+                    if (kt.row >= kt.end) return;
+                    kt.k.color = Rgb565Format::pack(shading.color(mesh, tri, area < 0));
+                    kt.tri = tri;
+                    run_kernel_triangle(kt, band.depth + static_cast<ptrdiff_t>(kt.row - y0) * band.stride, y1, bt.target);
+                    if (kt.row >= kt.end) return;
+                    if (slot) *cs.nxt++ = *--cs.free_top;
+                    else continues = true;
+                } else if (s == KernelSetup::generic) {  // crosses the side columns, or a steep plane
+                    draw_raster<false>(pa, pb, pc, area, tri, band, band_bb, false, mesh, shading, opt, st);
+                    const int32_t y_max = max<int32_t>(pa.y, max<int32_t>(pb.y, pc.y));
+                    continues = continues || ((y_max - band_bb.y_origin + kSubpixel - 1) >> kSubpixelBits) > y1;
+                }
+            };
+            if (a.z != 0 && bv.z != 0 && c.z != 0) {
+                piece(a, bv, c, true);
+            } else {
+                FrameStats counted;  // clipping was counted while binning
+                for_each_clipped(view, mesh, verts, tri, counted,
+                                 [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) {
+                                     piece(pa, pb, pc, false);  // pieces are set up again in every band
+                                 });
+            }
+            if (continues) {  // set up again in the next band
+                ++out.set_up_again;
+                if (b + 1 < bands) insert_prev = insert_sorted(next, next_head, insert_prev, tri);
+            }
+        }
+        out.carried += static_cast<uint32_t>(cs.cur - band_cur);
+        out.carried_high_water = max<uint32_t>(out.carried_high_water, static_cast<uint32_t>(cs.nxt - band_nxt));
+        cs.cur = band_nxt;  // the next band resumes what this one carried
+        cs.cur_end = cs.nxt;
+        cs.nxt = const_cast<uint8_t*>(band_cur);
+        if (!done(band)) {
+            st.status = Status::invalid_argument;
+            return;
+        }
+    }
+}
+
+/// The bands of draw_zbuffer_binned() for any other format or shading: each band sets up its triangles
+/// and re-links those that continue into the next band.
+template <class Format, class Depth, class BandDone>
+void draw_bands_generic(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                        const FrameView<Format, Depth>& buffers, const DrawOptions& opt, Rgb background,
+                        BinnedScratch& scratch, BandDone& done, BinnedStats& out, FrameStats& st) {
+    const int32_t rows = buffers.y1, width = buffers.width, height = buffers.height;
+    const size_t bands = static_cast<size_t>((height + rows - 1) / rows);
+    uint16_t* const next = scratch.next.data();
+    uint16_t* const head = scratch.head.data();
+    const FaceShading shading(view, opt);
+    for (size_t b = 0; b < bands; ++b) {
+        const int32_t y0 = static_cast<int32_t>(b) * rows, y1 = min(height, y0 + rows);
+        const FrameView<Format, Depth> band = band_view<Format, Depth>(buffers.color, buffers.depth, width, height, y0, y1);
+        clear(band, background);
+        const BandBounds band_bb = band_bounds(band);
+        uint16_t last = kNoTriangle;
+        uint16_t& next_head = b + 1 < bands ? head[b + 1] : last;
+        uint16_t insert_prev = kNoTriangle;
+        for (uint16_t t = head[b]; t != kNoTriangle;) {
+            const uint16_t tri = t;
+            t = next[t];
+            bool continues = false;
+            FrameStats counted;  // clipping was counted while binning
+            for_each_clipped(view, mesh, verts, tri, counted,
+                             [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) {
+                const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
+                if (area == 0 || (opt.cull && area > 0)) return;
+                draw_raster<false>(pa, pb, pc, area, tri, band, band_bb, false, mesh, shading, opt, st);
+                const int32_t y_max = max<int32_t>(pa.y, max<int32_t>(pb.y, pc.y));
+                continues = continues || ((y_max - band_bb.y_origin + kSubpixel - 1) >> kSubpixelBits) > y1;
+            });
+            if (!continues) continue;
+            ++out.set_up_again;
+            if (b + 1 < bands) insert_prev = insert_sorted(next, next_head, insert_prev, tri);
+        }
+        if (!done(band)) {
+            st.status = Status::invalid_argument;
+            return;
+        }
+    }
 }
 }  // namespace detail
 
@@ -62,134 +276,30 @@ FrameStats draw_zbuffer_binned(const View& view, const Mesh& mesh, Span<const Sc
                                const FrameView<Format, Depth>& buffers, const DrawOptions& opt, Rgb background,
                                BinnedScratch& scratch, BandDone&& done, BinnedStats* bs = nullptr) {
     FrameStats st;
-    const int32_t rows = buffers.y1, width = buffers.width, height = buffers.height;
+    const int32_t rows = buffers.y1, height = buffers.height;
     const size_t tri_count = mesh.tris.size();
     const size_t bands = buffers.valid() ? static_cast<size_t>((height + rows - 1) / rows) : 0;
-    if (!buffers.valid() || buffers.y0 != 0 || buffers.depth == nullptr || width != view.width ||
+    if (!buffers.valid() || buffers.y0 != 0 || buffers.depth == nullptr || buffers.width != view.width ||
         height != view.height || verts.size() < mesh.positions.size() || tri_count > detail::kNoTriangle ||
         scratch.next.size() < tri_count || scratch.head.size() < bands || scratch.carried.size() > 255 ||
         scratch.slots.size() < 3 * scratch.carried.size()) {
         st.status = Status::invalid_argument;
         return st;
     }
-    const FrameView<Format, Depth> whole = band_view<Format, Depth>(nullptr, nullptr, width, height, 0, height);
-    const BandBounds bb = band_bounds(whole);
-    uint16_t* const next = scratch.next.data();
-    uint16_t* const head = scratch.head.data();
-    for (size_t b = 0; b < bands; ++b) head[b] = detail::kNoTriangle;
-    // Binning, back to front: each list ends up in mesh order. Culled, clipped and outside triangles are
-    // counted here, as draw_zbuffer() counts them on a whole frame.
+    for (size_t b = 0; b < bands; ++b) scratch.head[b] = detail::kNoTriangle;
     st.triangles_in = static_cast<uint32_t>(tri_count);
-    for (size_t i = tri_count; i-- > 0;) {
-        int32_t first = height;  // first row of any drawable piece
-        for_each_clipped(view, mesh, verts, i, st, [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-            const int32_t area = TriangleRaster::signed_area(a, b, c);
-            if (area == 0) return;
-            if (opt.cull && area > 0) {
-                ++st.triangles_culled;
-                return;
-            }
-            const ScreenBox box = screen_box(a, b, c);
-            if (misses_band(box, bb)) return;  // no pixel centre of the frame: never drawn
-            first = min(first, detail::first_row_in_frame(box.y_min, bb, height));
-        });
-        if (first == height) continue;
-        const size_t band = static_cast<size_t>(first / rows);
-        next[i] = head[band];
-        head[band] = static_cast<uint16_t>(i);
-    }
-    // Carried slots: cur (this band, mesh order), nxt (the next band), and a stack of free ones.
-    const uint8_t capacity = static_cast<uint8_t>(scratch.carried.size());
-    KernelTriangle* const pool = scratch.carried.data();
-    uint8_t* cur = scratch.slots.data();
-    uint8_t* nxt = cur + capacity;
-    uint8_t* const free_slots = nxt + capacity;
-    uint8_t n_cur = 0, n_free = capacity;
-    for (uint8_t k = 0; k < capacity; ++k) free_slots[k] = static_cast<uint8_t>(capacity - 1 - k);
+    const BandBounds bb = band_bounds(band_view<Format, Depth>(nullptr, nullptr, buffers.width, height, 0, height));
+    const uint32_t band_scale = ((uint32_t{1} << 20) + static_cast<uint32_t>(rows) - 1) / static_cast<uint32_t>(rows);
+    detail::bin_triangles(view, mesh, verts, opt.cull, bb, height, band_scale, scratch.next.data(), scratch.head.data(), st);
     BinnedStats local;
     BinnedStats& out = bs != nullptr ? *bs : local;
-    const FaceShading shading(view, opt);
-    constexpr bool kKernel = detail::is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2;
-    const bool use_kernel = kKernel && opt.shade != Shade::depth;
-    KernelBand kband = kernel_band(width, height, 0, height, buffers.stride * static_cast<int32_t>(sizeof(Depth)));
-    KernelTriangle spare;  // a kernel set-up without a free slot: drawn here, set up again next band
-    for (size_t b = 0; b < bands; ++b) {
-        const int32_t y0 = static_cast<int32_t>(b) * rows, y1 = min(height, y0 + rows);
-        const FrameView<Format, Depth> band =
-            band_view<Format, Depth>(buffers.color, buffers.depth, width, height, y0, y1);
-        clear(band, background);
-        const BandBounds band_bb = band_bounds(band);
-        const intptr_t color_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(band.color) -
-                                                            reinterpret_cast<uintptr_t>(band.depth));
-        kband.row_from = y0;
-        uint16_t dummy_head = detail::kNoTriangle;
-        uint16_t& next_head = b + 1 < bands ? head[b + 1] : dummy_head;
-        uint16_t insert_prev = detail::kNoTriangle;
-        auto again = [&](uint16_t t) {  // set up again in the next band
-            ++out.set_up_again;
-            if (b + 1 < bands) insert_prev = detail::insert_sorted(next, next_head, insert_prev, t);
-        };
-        auto run = [&](KernelTriangle& kt) {  // this band's rows of a kernel set-up; true when it continues
-            if constexpr (kKernel) {
-                uint16_t* const zrow = band.depth + static_cast<ptrdiff_t>(kt.row - y0) * band.stride;
-                run_kernel_triangle(kt, zrow, y1, color_offset);
-            }
-            return kt.row < kt.end;
-        };
-        uint8_t n_nxt = 0, ci = 0;
-        uint16_t t = head[b];
-        while (ci < n_cur || t != detail::kNoTriangle) {
-            if (ci < n_cur && (t == detail::kNoTriangle || pool[cur[ci]].tri < t)) {  // carried from the band above
-                const uint8_t s = cur[ci++];
-                ++out.carried;
-                if (run(pool[s])) nxt[n_nxt++] = s;
-                else free_slots[n_free++] = s;
-                continue;
-            }
-            const uint16_t tri = t;
-            t = next[t];
-            bool continues = false;
-            FrameStats pieces;  // clipping counts were taken while binning
-            for_each_clipped(view, mesh, verts, tri, pieces, [&](const ScreenVertex& pa, const ScreenVertex& pb,
-                                                                 const ScreenVertex& pc) {
-                const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
-                if (area == 0 || (opt.cull && area > 0)) return;
-                if (kKernel && use_kernel) {
-                    const bool slot = n_free != 0 && verts[mesh.tris[tri].v[0]].z != 0 && verts[mesh.tris[tri].v[1]].z != 0 &&
-                                      verts[mesh.tris[tri].v[2]].z != 0;  // clipped pieces are set up per band
-                    KernelTriangle& kt = slot ? pool[free_slots[n_free - 1]] : spare;
-                    KernelSetupIo io{&kband, area, &kt};
-                    const KernelSetup s = kernel_setup(pa, pb, pc, io);
-                    if (s == KernelSetup::none) return;
-                    if (s == KernelSetup::kernel) {
-                        const int32_t first = clamp(kt.top, int32_t{0}, height - 1);
-                        st.triangles_drawn += y0 <= first && first < y1;
-                        if (kt.row >= kt.end) return;
-                        if constexpr (kKernel) kt.k.color = Format::pack(shading.color(mesh, tri, area < 0));
-                        kt.tri = tri;
-                        if (!run(kt)) return;
-                        if (slot) nxt[n_nxt++] = free_slots[--n_free];
-                        else continues = true;
-                        return;
-                    }
-                }
-                // Generic: any format, or a kernel triangle crossing the side columns.
-                detail::draw_raster<false>(pa, pb, pc, area, tri, band, band_bb, false, mesh, shading, opt, st);
-                const int32_t y_max = max<int32_t>(pa.y, max<int32_t>(pb.y, pc.y));
-                continues = continues || ((y_max - bb.y_origin + kSubpixel - 1) >> kSubpixelBits) > y1;  // end row
-            });
-            if (continues) again(tri);
-        }
-        out.carried_high_water = max<uint32_t>(out.carried_high_water, n_nxt);
-        uint8_t* const swap = cur;
-        cur = nxt;
-        nxt = swap;
-        n_cur = n_nxt;
-        if (!done(band)) {
-            st.status = Status::invalid_argument;
+    if constexpr (detail::is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2) {
+        if (opt.shade != Shade::depth) {
+            detail::draw_bands_kernel(view, mesh, verts, buffers, opt, background, scratch, done, out, st);
             return st;
         }
     }
+    detail::draw_bands_generic(view, mesh, verts, buffers, opt, background, scratch, done, out, st);
     return st;
 }
 

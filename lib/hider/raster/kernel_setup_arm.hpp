@@ -149,8 +149,10 @@ __attribute__((naked, noinline)) inline uint32_t kernel_setup_v7m(const ScreenVe
         "cmp    r2, lr\n\t"
         "it     lt\n\t"
         "movlt  lr, r2\n\t"                   // y1 = min(bottom, row_end)
-        "strd   r0, r5, [r6, %[top]]\n\t"
-        "strd   r1, lr, [r6, %[mid]]\n\t"
+        "strh   r0, [r6, %[top]]\n\t"
+        "strh   r5, [r6, %[row]]\n\t"
+        "strh   r1, [r6, %[mid]]\n\t"
+        "strh   lr, [r6, %[end]]\n\t"
         "cmp    r5, lr\n\t"
         "bge    91f\n\t"                      // no row: set up, nothing to draw
         "push   {r1, r3, r5, r7-r12, lr}\n\t" // mid odd y0 xt yt xm ym xb yb y1
@@ -213,8 +215,7 @@ __attribute__((naked, noinline)) inline uint32_t kernel_setup_v7m(const ScreenVe
         "orr    r1, r1, r2, lsl #28\n\t"
         "eor    r8, r8, #0x80000000\n\t"
         "add    r8, r8, r1\n\t"
-        "ldr    r2, [r4, %[stride]]\n\t"
-        "strd   r2, r0, [r6, %[k_stride]]\n\t" // stride, dzdx
+        "str    r0, [r6, %[dzdx]]\n\t"
         "push   {r0, r3, r8, r10, r12}\n\t"   // dzdx ref_px z_ref dzdy ref_py; the rows at sp + 20
         "ldrd   r10, r11, [r4]\n\t"           // x_origin, y_origin for the walkers
         // The long edge (top -> bottom) on row y0: the left edge for an even permutation.
@@ -381,8 +382,9 @@ __attribute__((naked, noinline)) inline uint32_t kernel_setup_v7m(const ScreenVe
         :
         : [y_first] "i"(offsetof(KernelBand, y_first)), [x_last] "i"(offsetof(KernelBand, x_last)),
           [row_from] "i"(offsetof(KernelBand, row_from)), [stride] "i"(offsetof(KernelBand, stride_bytes)),
-          [top] "i"(offsetof(KernelTriangle, top)), [mid] "i"(offsetof(KernelTriangle, mid)),
-          [k_stride] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, stride_bytes)),
+          [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
+          [mid] "i"(offsetof(KernelTriangle, mid)), [end] "i"(offsetof(KernelTriangle, end)),
+          [dzdx] "i"(offsetof(RowKernel, dzdx)),
           [lx] "i"(offsetof(RowKernel, lx)), [lz] "i"(offsetof(RowKernel, lz)), [la] "i"(offsetof(RowKernel, la)),
           [ldz] "i"(offsetof(RowKernel, ldz)), [rx] "i"(offsetof(RowKernel, rx)), [ra] "i"(offsetof(RowKernel, ra)),
           [next_x] "i"(offsetof(KernelTriangle, next_x)), [next_a] "i"(offsetof(KernelTriangle, next_a)),

@@ -1,4 +1,5 @@
-// A flat triangle inside the frame's columns, set up for the row kernel (row_kernel.hpp) in one pass:
+// A flat triangle inside the frame's columns, set up for the row kernel (row_kernel.hpp's KernelTriangle)
+// in one pass:
 // vertices sorted by y, the band test, the depth plane (plane.hpp), the kernel's two edge walkers on the
 // first row to draw and the short edge that takes over at the middle vertex. Drawing then needs no
 // further division, in one call or in several (bands): the record holds everything to resume. Rows,
@@ -27,19 +28,6 @@ inline KernelBand kernel_band(int32_t width, int32_t height, int32_t row_begin, 
     return {ox, oy, (width - 1) * kSubpixel + ox, row_begin * kSubpixel + oy, (row_end - 1) * kSubpixel + oy,
             row_begin, row_end, stride_bytes};
 }
-
-/// A triangle ready for the row kernel from row `row` on. Until `mid`, the short edge is the one above
-/// the middle vertex; from `mid` on, `next` (kernel form: x, g - a, a, m, step, and for a left edge its
-/// depth and depth step) replaces it. Rows end at `end`. The layout is the assembly set-ups' contract.
-struct KernelTriangle {
-    RowKernel k;
-    int32_t top;  ///< the triangle's first row, unclamped
-    int32_t row, mid, end;
-    int32_t next_x, next_g, next_a, next_m, next_step;
-    uint32_t next_z, next_dz;
-    bool next_left;  ///< `next` is the left edge (the long edge runs on the right)
-    uint16_t tri;    ///< the mesh triangle (binned.hpp keeps carried set-ups in mesh order)
-};
 
 /// What kernel_setup() found.
 enum class KernelSetup : uint32_t {
@@ -71,18 +59,18 @@ __attribute__((always_inline)) inline KernelSetup kernel_setup_portable(const Sc
     const int32_t cy = ((yt - band.y_origin + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + band.y_origin;
     if (cx > x_max || cy > yb) return KernelSetup::none;
     auto first_row = [&band](int32_t y_sub) { return (y_sub - band.y_origin + kSubpixel - 1) >> kSubpixelBits; };
-    out.top = first_row(yt);
-    out.row = max(out.top, band.row_from);
-    out.mid = first_row(ym);
-    out.end = min(first_row(yb), band.row_end);
-    const int32_t y0 = out.row, y1 = out.end, row_mid = out.mid;
+    const int32_t top = first_row(yt), y0 = max(top, band.row_from), y1 = min(first_row(yb), band.row_end);
+    const int32_t row_mid = first_row(ym);
+    out.top = static_cast<int16_t>(top);  // rows lie within the guard band: +-1,100
+    out.row = static_cast<int16_t>(y0);
+    out.mid = static_cast<int16_t>(row_mid);
+    out.end = static_cast<int16_t>(y1);
     if (y0 >= y1) return KernelSetup::kernel;  // no row: no plane needed
     const int32_t abs_area = area < 0 ? -area : area;
     const PlaneNumerators n = plane_numerators(a, v1, v2);
     if (!plane_step_fits(n.npx, abs_area) || !plane_step_fits(n.nqy, abs_area)) return KernelSetup::generic;
     const DepthPlane plane = depth_plane(a, n, abs_area, band.x_origin, band.y_origin);
     RowKernel& k = out.k;
-    k.stride_bytes = band.stride_bytes;
     k.dzdx = plane.dzdx;
     const bool long_left = even;
     auto walker = [&band](int32_t xu, int32_t yu, int32_t xl, int32_t yl, int32_t py) __attribute__((always_inline)) {
@@ -123,40 +111,6 @@ struct KernelSetupIo {
     int32_t area;  ///< signed_area(a, b, c) != 0
     KernelTriangle* out;
 };
-
-/// Draws rows [t.row, min(t.end, row_stop)) of a set-up triangle into the depth rows from `zrow` (the
-/// depth row of t.row) with colour `color_offset` bytes after each depth element, and leaves t on the
-/// next row. Returns the depth pointer of that row.
-// As for run_row_kernel_portable(): GCC cannot tie the set-up's fields to the rows it drew.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-inline uint16_t* run_kernel_triangle(KernelTriangle& t, uint16_t* zrow, int32_t row_stop, intptr_t color_offset) {
-    const int32_t stop = min(t.end, row_stop);
-    if (t.row < t.mid) {  // rows above the middle vertex
-        const int32_t upper_end = min(t.mid, stop);
-        if (t.row < upper_end) {
-            zrow = run_row_kernel(t.k, zrow, upper_end - t.row, color_offset);
-            t.row = upper_end;
-        }
-        if (t.row < t.mid) return zrow;  // stopped above the middle row
-        if (t.mid < t.end) {  // on the middle row (perhaps a later call's first): the lower short edge takes over
-            RowKernel& k = t.k;
-            if (t.next_left) {
-                k.lx = t.next_x; k.lg = t.next_g; k.la = t.next_a; k.lm = t.next_m; k.lstep = t.next_step;
-                k.lz = t.next_z;
-                k.ldz = t.next_dz;
-            } else {
-                k.rx = t.next_x; k.rg = t.next_g; k.ra = t.next_a; k.rm = t.next_m; k.rstep = t.next_step;
-            }
-        }
-    }
-    if (t.row < stop) {
-        zrow = run_row_kernel(t.k, zrow, stop - t.row, color_offset);
-        t.row = stop;
-    }
-    return zrow;
-}
-#pragma GCC diagnostic pop
 
 }  // namespace hider
 

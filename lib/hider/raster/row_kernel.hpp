@@ -27,24 +27,48 @@ struct RowKernel {
     int32_t la, lm, lstep;
     uint32_t ldz;            ///< left depth step per row (dz/dy + q dz/dx)
     int32_t ra, rm, rstep;
-    int32_t stride_bytes;    ///< bytes from one depth row to the next
     uint32_t dzdx;           ///< depth step per pixel (spans, and the left edge's correction)
     uint32_t color;          ///< RGB565 in the low half
 };
 
 // The assembly loops' offsets (32-bit pointers).
 static_assert(sizeof(void*) != 4 || (offsetof(RowKernel, la) == 20 && offsetof(RowKernel, ldz) == 32 &&
-                                     offsetof(RowKernel, ra) == 36 && offsetof(RowKernel, stride_bytes) == 48 &&
-                                     offsetof(RowKernel, dzdx) == 52 && offsetof(RowKernel, color) == 56),
+                                     offsetof(RowKernel, ra) == 36 && offsetof(RowKernel, dzdx) == 48 &&
+                                     offsetof(RowKernel, color) == 52 && sizeof(RowKernel) == 56),
               "row kernel layout");
 
-/// The kernel in C++: `rows` rows from depth row `zrow`, colour `color_offset` bytes from each depth
-/// element; leaves k's edges and depth on the next row and returns that row's depth pointer.
+/// Where the kernel draws: constants of a frame or band (the layout is the assembly loops' contract).
+struct KernelTarget {
+    intptr_t color_offset;  ///< bytes from a depth element to its pixel's colour
+    int32_t stride_bytes;   ///< bytes from one depth row to the next
+};
+static_assert(sizeof(void*) != 4 || (offsetof(KernelTarget, stride_bytes) == 4), "kernel target layout");
+
+/// A triangle for the row kernel from row `row` on (kernel_triangle.hpp sets it up). Until `mid`, the
+/// short edge is the one above the middle vertex; from `mid` on, `next` (kernel form: x, g - a, a, m,
+/// step, and for a left edge its depth and depth step) replaces it. Rows end at `end`. The layout is
+/// the assembly's contract.
+struct KernelTriangle {
+    RowKernel k;
+    int16_t top;  ///< the triangle's first row, unclamped
+    int16_t row, mid, end;
+    int32_t next_x, next_g, next_a, next_m, next_step;
+    uint32_t next_z, next_dz;
+    uint16_t tri;    ///< the mesh triangle (binned.hpp keeps carried set-ups in mesh order)
+    bool next_left;  ///< `next` is the left edge (the long edge runs on the right)
+};
+static_assert(sizeof(void*) != 4 || (offsetof(KernelTriangle, top) == 56 && offsetof(KernelTriangle, next_x) == 64 &&
+                                     offsetof(KernelTriangle, next_left) == 94 && sizeof(KernelTriangle) == 96),
+              "kernel triangle layout");
+
+/// The row loop in C++: `rows` >= 1 rows from depth row `zrow` of target `t`; leaves k's edges and
+/// depth on the next row and returns that row's depth pointer.
 // kernel_setup() fills the fields only for triangles with rows, which GCC cannot tie to the calls here:
 // it reports them as maybe uninitialised once inlined (a false positive).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-inline uint16_t* run_row_kernel_portable(RowKernel& k, uint16_t* zrow, int32_t rows, intptr_t color_offset) {
+inline uint16_t* run_row_kernel_portable(RowKernel& k, uint16_t* zrow, int32_t rows, const KernelTarget& t) {
+    const intptr_t color_offset = t.color_offset;
     const uintptr_t base = reinterpret_cast<uintptr_t>(zrow);
     uintptr_t lp = base + static_cast<uintptr_t>(k.lx), rp = base + static_cast<uintptr_t>(k.rx);
     int32_t lg = k.lg, rg = k.rg;
@@ -74,7 +98,7 @@ inline uint16_t* run_row_kernel_portable(RowKernel& k, uint16_t* zrow, int32_t r
         rp += static_cast<uintptr_t>(k.rstep);
         if (rg >= 0) { rg -= k.ra; rp -= 2; }
     }
-    const uintptr_t next = base + static_cast<uintptr_t>(rows) * static_cast<uintptr_t>(k.stride_bytes);
+    const uintptr_t next = base + static_cast<uintptr_t>(rows) * static_cast<uintptr_t>(t.stride_bytes);
     k.lx = static_cast<int32_t>(lp - next);
     k.lg = lg;
     k.lz = lz;
@@ -82,8 +106,39 @@ inline uint16_t* run_row_kernel_portable(RowKernel& k, uint16_t* zrow, int32_t r
     k.rg = rg;
     return reinterpret_cast<uint16_t*>(next);
 }
+
+/// Draws rows [t.row, min(t.end, row_stop)) of a set-up triangle into target `target` from depth row
+/// `zrow` (that of t.row), switching to the lower short edge on the middle row (also when a call
+/// starts there), and leaves t on the next row. Returns the depth pointer of that row. The portable twin
+/// of the assembly kernels.
+inline uint16_t* run_kernel_triangle_portable(KernelTriangle& t, uint16_t* zrow, int32_t row_stop, const KernelTarget& target) {
+    const int32_t stop = min<int32_t>(t.end, row_stop);
+    if (t.row < t.mid) {  // rows above the middle vertex
+        const int32_t upper_end = min<int32_t>(t.mid, stop);
+        if (t.row < upper_end) {
+            zrow = run_row_kernel_portable(t.k, zrow, upper_end - t.row, target);
+            t.row = static_cast<int16_t>(upper_end);
+        }
+        if (t.row < t.mid) return zrow;  // stopped above the middle row
+        if (t.mid < t.end) {  // on the middle row (perhaps a later call's first): the lower short edge takes over
+            RowKernel& k = t.k;
+            if (t.next_left) {
+                k.lx = t.next_x; k.lg = t.next_g; k.la = t.next_a; k.lm = t.next_m; k.lstep = t.next_step;
+                k.lz = t.next_z;
+                k.ldz = t.next_dz;
+            } else {
+                k.rx = t.next_x; k.rg = t.next_g; k.ra = t.next_a; k.rm = t.next_m; k.rstep = t.next_step;
+            }
+        }
+    }
+    if (t.row < stop) {
+        zrow = run_row_kernel_portable(t.k, zrow, stop - t.row, target);
+        t.row = static_cast<int16_t>(stop);
+    }
+    return zrow;
+}
 #pragma GCC diagnostic pop
 
 }  // namespace hider
 
-#include <hider/raster/row_kernel_asm.hpp>  // the assembly kernels and run_row_kernel()
+#include <hider/raster/row_kernel_asm.hpp>  // the assembly kernels and run_kernel_triangle()

@@ -15,7 +15,8 @@ namespace hider {
 class TriangleRaster {
 public:
     /// Twice the signed area in subpixels^2 of (a, b, c); < 0 means counter-clockwise on the image.
-    static constexpr int32_t signed_area(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    __attribute__((always_inline)) static constexpr int32_t signed_area(const ScreenVertex& a, const ScreenVertex& b,
+                                                                        const ScreenVertex& c) {
         return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
     }
 

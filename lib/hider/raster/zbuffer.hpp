@@ -175,8 +175,9 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
     const bool whole_frame = frame.y0 == 0 && frame.y1 == frame.height;
     const KernelBand band = kernel_band(frame.width, frame.height, frame.y0, frame.y1,
                                         frame.stride * static_cast<int32_t>(sizeof(uint16_t)));
-    const intptr_t color_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(frame.color) -
-                                                        reinterpret_cast<uintptr_t>(frame.depth));
+    const KernelTarget target{static_cast<intptr_t>(reinterpret_cast<uintptr_t>(frame.color) -
+                                                    reinterpret_cast<uintptr_t>(frame.depth)),
+                              band.stride_bytes};
     uint16_t* const depth = frame.depth;
     const int32_t stride = frame.stride, y0 = frame.y0, y1 = frame.y1, height = frame.height;
     KernelTriangle kt;
@@ -190,11 +191,11 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
             draw_raster<false>(a, b, c, area, t, frame, bb, whole_frame, mesh, shading, opt, st);
             return;
         }
-        const int32_t first = clamp(kt.top, int32_t{0}, height - 1);
+        const int32_t first = clamp<int32_t>(kt.top, 0, height - 1);
         st.triangles_drawn += whole_frame || (y0 <= first && first < y1);
         if (kt.row >= kt.end) return;
         kt.k.color = Format::pack(shading.color(mesh, t, area < 0));
-        run_kernel_triangle(kt, depth + static_cast<ptrdiff_t>(kt.row - y0) * stride, y1, color_offset);
+        run_kernel_triangle(kt, depth + static_cast<ptrdiff_t>(kt.row - y0) * stride, y1, target);
     });
 }
 
