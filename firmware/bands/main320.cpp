@@ -10,7 +10,7 @@
 namespace {
 
 namespace scene = hider::scenes::torus_320x240;
-using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, 3, 36>;
+using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, 3, 45>;
 Sizes::Storage g;
 
 }  // namespace

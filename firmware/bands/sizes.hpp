@@ -11,7 +11,7 @@ namespace bands {
 template <int32_t W, int32_t H, size_t V, size_t T, int32_t Rows, size_t Carried>
 struct Sizes {
     static constexpr size_t kBands = static_cast<size_t>((H + Rows - 1) / Rows);
-    static constexpr size_t kPpmChunk = 32;  ///< pixels converted to RGB888 at a time for the PPM sink
+    static constexpr size_t kPpmChunk = 16;  ///< pixels converted to RGB888 at a time for the PPM sink
 
     struct Storage {
         hider::ScreenVertex verts[V];

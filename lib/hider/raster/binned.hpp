@@ -49,6 +49,34 @@ inline uint16_t insert_sorted(uint16_t* next, uint16_t& head, uint16_t prev, uin
     return t;
 }
 
+/// First row of the drawable pieces of clipped triangle t (height if none); counts its culled pieces,
+/// and it as clipped or outside. Out of line: the clipped polygon's 200 bytes stay off the binning
+/// loop's stack frame.
+__attribute__((noinline)) inline int32_t first_row_clipped(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                                                           size_t t, bool cull, const BandBounds& bb, int32_t height,
+                                                           FrameStats& st) {
+    int32_t first = height;
+    for_each_clipped(view, mesh, verts, t, st, [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) {
+        const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
+        if (area == 0) return;
+        if (cull && area > 0) {
+            ++st.triangles_culled;
+            return;
+        }
+        first = min(first, first_row_in_frame(min<int32_t>(pa.y, min<int32_t>(pb.y, pc.y)), bb, height));
+    });
+    return first;
+}
+
+/// for_each_clipped() out of line, without counting (binning counted): the clipped polygon stays off the
+/// band loop's stack frame.
+template <class Piece>
+__attribute__((noinline)) void for_each_piece(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, size_t t,
+                                              Piece&& piece) {
+    FrameStats counted;
+    for_each_clipped(view, mesh, verts, t, counted, piece);
+}
+
 /// Links every drawable triangle of the mesh (non-zero area, not culled) into the list of the band
 /// holding its first row, back to front so each list runs in mesh order; counts culled, clipped and outside triangles as draw_zbuffer()
 /// does on a whole frame. band_scale = ceil(2^20 / rows): band = first row * band_scale >> 20, exact for
@@ -75,7 +103,7 @@ inline void bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenV
             first = min(first, first_row_in_frame(min<int32_t>(pa.y, min<int32_t>(pb.y, pc.y)), bb, height));
         };
         if (a.z != 0 && b.z != 0 && c.z != 0) piece(a, b, c);
-        else for_each_clipped(view, mesh, verts, i, st, piece);
+        else first = first_row_clipped(view, mesh, verts, i, cull, bb, height, st);
         if (first == height) continue;
         const uint32_t band = (static_cast<uint32_t>(first) * band_scale) >> 20;
         next[i] = head[band];
@@ -122,103 +150,123 @@ __attribute__((noinline)) inline void resume_carried(CarriedSlots& cs, uint16_t 
     cs.free_top = free_top;
 }
 
-/// The bands of draw_zbuffer_binned() for flat RGB565 over 16-bit depth: kernel set-ups carried in slots.
-template <class BandDone>
-void draw_bands_kernel(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
-                       const FrameView<Rgb565Format, uint16_t>& buffers, const DrawOptions& opt, Rgb background,
-                       BinnedScratch& scratch, BandDone& done, BinnedStats& out, FrameStats& st) {
-    const int32_t rows = buffers.y1, width = buffers.width, height = buffers.height;
-    const size_t bands = static_cast<size_t>((height + rows - 1) / rows);
-    uint16_t* const next = scratch.next.data();
-    uint16_t* const head = scratch.head.data();
-    const uint8_t capacity = static_cast<uint8_t>(scratch.carried.size());
-    KernelTriangle* const pool = scratch.carried.data();
-    uint8_t* cur = scratch.slots.data();  // this band's carried slots, in mesh order
-    uint8_t* nxt = cur + capacity;        // the next band's
-    uint8_t* const free_slots = nxt + capacity;
-    for (uint8_t k = 0; k < capacity; ++k) free_slots[k] = k;
-    CarriedSlots cs{pool, cur, cur, nxt, free_slots + capacity};
-    const FaceShading shading(view, opt);
-    KernelBand kband = kernel_band(width, height, 0, height, buffers.stride * 2);
-    KernelBandTarget bt{{static_cast<intptr_t>(reinterpret_cast<uintptr_t>(buffers.color) -
-                                               reinterpret_cast<uintptr_t>(buffers.depth)),
-                         kband.stride_bytes},
-                        buffers.depth, 0};
-    KernelTriangle spare;  // a set-up without a free slot: drawn here, set up again in the next band
-    KernelSetupIo io{&kband, 0, &spare};
-    const ScreenVertex* const vp = verts.data();
-    const Tri* const tris = mesh.tris.data();
-    for (size_t b = 0; b < bands; ++b) {
-        const int32_t y0 = static_cast<int32_t>(b) * rows, y1 = min(height, y0 + rows);
-        const FrameView<Rgb565Format, uint16_t> band =
-            band_view<Rgb565Format, uint16_t>(buffers.color, buffers.depth, width, height, y0, y1);
-        clear(band, background);
-        const BandBounds band_bb = band_bounds(band);
-        kband.row_from = y0;
-        bt.row_end = y1;
-        uint16_t last = kNoTriangle;
-        uint16_t& next_head = b + 1 < bands ? head[b + 1] : last;
-        uint16_t insert_prev = kNoTriangle;
-        const uint8_t* const band_cur = cs.cur;
-        uint8_t* const band_nxt = cs.nxt;
-        for (uint16_t t = head[b];;) {
-            resume_carried(cs, t, bt);  // the carried triangles before t, in mesh order
+/// The bands of draw_zbuffer_binned() for flat RGB565 over 16-bit depth: kernel set-ups carried in
+/// slots. A class rather than lambdas: the per-triangle code reaches the band's state through `this`
+/// (GCC rebuilt a closure of sixteen references per triangle).
+class KernelBands {
+public:
+    KernelBands(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                const FrameView<Rgb565Format, uint16_t>& buffers, const DrawOptions& opt, BinnedScratch& scratch,
+                BinnedStats& out, FrameStats& st)
+        : view_(view), mesh_(mesh), verts_(verts), buffers_(buffers), opt_(opt), shading_(view, opt), out_(out), st_(st),
+          next_(scratch.next.data()), head_(scratch.head.data()), pool_(scratch.carried.data()),
+          free_base_(scratch.slots.data() + 2 * scratch.carried.size()),
+          kband_(kernel_band(buffers.width, buffers.height, 0, buffers.height, buffers.stride * 2)),
+          bt_{{static_cast<intptr_t>(reinterpret_cast<uintptr_t>(buffers.color) - reinterpret_cast<uintptr_t>(buffers.depth)),
+               kband_.stride_bytes},
+              buffers.depth, 0},
+          io_{&kband_, 0, &spare_} {
+        const uint8_t capacity = static_cast<uint8_t>(scratch.carried.size());
+        for (uint8_t k = 0; k < capacity; ++k) free_base_[k] = k;
+        cs_ = {pool_, scratch.slots.data(), scratch.slots.data(), scratch.slots.data() + capacity, free_base_ + capacity};
+    }
+
+    /// Draws band b (rows [y0, y1)) after clearing it; false when done() refuses it.
+    template <class BandDone>
+    bool band(size_t b, size_t bands, int32_t y0, int32_t y1, Rgb background, BandDone& done) {
+        band_ = band_view<Rgb565Format, uint16_t>(buffers_.color, buffers_.depth, buffers_.width, buffers_.height, y0, y1);
+        clear(band_, background);
+        band_bb_ = band_bounds(band_);
+        kband_.row_from = y0;
+        bt_.row_end = y1;
+        next_head_ = b + 1 < bands ? &head_[b + 1] : nullptr;
+        insert_prev_ = kNoTriangle;
+        const uint8_t* const band_cur = cs_.cur;
+        uint8_t* const band_nxt = cs_.nxt;
+        for (uint16_t t = head_[b];;) {
+            resume_carried(cs_, t, bt_);  // the carried triangles before t, in mesh order
             if (t == kNoTriangle) break;
             const uint16_t tri = t;
-            t = next[t];
-            const ScreenVertex& a = vp[tris[tri].v[0]];
-            const ScreenVertex& bv = vp[tris[tri].v[1]];
-            const ScreenVertex& c = vp[tris[tri].v[2]];
-            bool continues = false;
-            auto piece = [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc, bool whole) {
-                const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
-                if (area == 0 || (opt.cull && area > 0)) return;
-                const bool slot = whole && cs.free_top != free_slots;
-                KernelTriangle& kt = slot ? pool[cs.free_top[-1]] : spare;
-                io.area = area;
-                io.out = &kt;
-                const KernelSetup s = kernel_setup(pa, pb, pc, io);
-                if (s == KernelSetup::kernel) {
-                    const int32_t first = clamp<int32_t>(kt.top, 0, height - 1);
-                    st.triangles_drawn += y0 <= first && first < y1;
-                    if (kt.row >= kt.end) return;
-                    kt.k.color = Rgb565Format::pack(shading.color(mesh, tri, area < 0));
-                    kt.tri = tri;
-                    run_kernel_triangle(kt, band.depth + static_cast<ptrdiff_t>(kt.row - y0) * band.stride, y1, bt.target);
-                    if (kt.row >= kt.end) return;
-                    if (slot) *cs.nxt++ = *--cs.free_top;
-                    else continues = true;
-                } else if (s == KernelSetup::generic) {  // crosses the side columns, or a steep plane
-                    draw_raster<false>(pa, pb, pc, area, tri, band, band_bb, false, mesh, shading, opt, st);
-                    const int32_t y_max = max<int32_t>(pa.y, max<int32_t>(pb.y, pc.y));
-                    continues = continues || ((y_max - band_bb.y_origin + kSubpixel - 1) >> kSubpixelBits) > y1;
-                }
-            };
-            if (a.z != 0 && bv.z != 0 && c.z != 0) {
-                piece(a, bv, c, true);
-            } else {
-                FrameStats counted;  // clipping was counted while binning
-                for_each_clipped(view, mesh, verts, tri, counted,
-                                 [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) {
-                                     piece(pa, pb, pc, false);  // pieces are set up again in every band
-                                 });
-            }
-            if (continues) {  // set up again in the next band
-                ++out.set_up_again;
-                if (b + 1 < bands) insert_prev = insert_sorted(next, next_head, insert_prev, tri);
-            }
+            t = next_[t];
+            new_triangle(tri);
         }
-        out.carried += static_cast<uint32_t>(cs.cur - band_cur);
-        out.carried_high_water = max<uint32_t>(out.carried_high_water, static_cast<uint32_t>(cs.nxt - band_nxt));
-        cs.cur = band_nxt;  // the next band resumes what this one carried
-        cs.cur_end = cs.nxt;
-        cs.nxt = const_cast<uint8_t*>(band_cur);
-        if (!done(band)) {
-            st.status = Status::invalid_argument;
-            return;
+        out_.carried += static_cast<uint32_t>(cs_.cur - band_cur);
+        out_.carried_high_water = max<uint32_t>(out_.carried_high_water, static_cast<uint32_t>(cs_.nxt - band_nxt));
+        cs_.cur = band_nxt;  // the next band resumes what this one carried
+        cs_.cur_end = cs_.nxt;
+        cs_.nxt = const_cast<uint8_t*>(band_cur);
+        return done(band_);
+    }
+
+private:
+    /// A triangle of this band's list: set up in a free slot (or the spare), its rows drawn; continuing
+    /// into the next band in its slot, or re-linked there when it has none.
+    __attribute__((noinline)) void new_triangle(uint16_t tri) {
+        const Tri& t = mesh_.tris[tri];
+        const ScreenVertex& a = verts_[t.v[0]];
+        const ScreenVertex& b = verts_[t.v[1]];
+        const ScreenVertex& c = verts_[t.v[2]];
+        continues_ = false;
+        if (a.z != 0 && b.z != 0 && c.z != 0) {
+            piece(a, b, c, tri, true);
+        } else {  // clipped pieces are set up again in every band
+            for_each_piece(view_, mesh_, verts_, tri, [this, tri](const ScreenVertex& pa, const ScreenVertex& pb,
+                                                                 const ScreenVertex& pc) { piece(pa, pb, pc, tri, false); });
+        }
+        if (!continues_) return;
+        ++out_.set_up_again;
+        if (next_head_ != nullptr) insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
+    }
+
+    void piece(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint16_t tri, bool whole) {
+        const int32_t area = TriangleRaster::signed_area(a, b, c);
+        if (area == 0 || (opt_.cull && area > 0)) return;
+        const bool slot = whole && cs_.free_top != free_base_;
+        KernelTriangle& kt = slot ? pool_[cs_.free_top[-1]] : spare_;
+        io_.area = area;
+        io_.out = &kt;
+        const KernelSetup s = kernel_setup(a, b, c, io_);
+        const int32_t y0 = band_.y0, y1 = band_.y1;
+        if (s == KernelSetup::kernel) {
+            const int32_t first = clamp<int32_t>(kt.top, 0, buffers_.height - 1);
+            st_.triangles_drawn += y0 <= first && first < y1;
+            if (kt.row >= kt.end) return;
+            kt.k.color = Rgb565Format::pack(shading_.color(mesh_, tri, area < 0));
+            kt.tri = tri;
+            run_kernel_triangle(kt, band_.depth + static_cast<ptrdiff_t>(kt.row - y0) * band_.stride, y1, bt_.target);
+            if (kt.row >= kt.end) return;
+            if (slot) *cs_.nxt++ = *--cs_.free_top;
+            else continues_ = true;
+        } else if (s == KernelSetup::generic) {  // crosses the side columns, or a steep plane
+            draw_raster<false>(a, b, c, area, tri, band_, band_bb_, false, mesh_, shading_, opt_, st_);
+            const int32_t y_max = max<int32_t>(a.y, max<int32_t>(b.y, c.y));
+            continues_ = continues_ || ((y_max - band_bb_.y_origin + kSubpixel - 1) >> kSubpixelBits) > y1;
         }
     }
-}
+
+    const View& view_;
+    const Mesh& mesh_;
+    Span<const ScreenVertex> verts_;
+    const FrameView<Rgb565Format, uint16_t>& buffers_;
+    const DrawOptions& opt_;
+    const FaceShading shading_;
+    BinnedStats& out_;
+    FrameStats& st_;
+    uint16_t* const next_;
+    uint16_t* const head_;
+    KernelTriangle* const pool_;
+    uint8_t* const free_base_;
+    CarriedSlots cs_{};
+    KernelBand kband_;
+    KernelBandTarget bt_;
+    KernelTriangle spare_;  // a set-up without a free slot: drawn here, set up again in the next band
+    KernelSetupIo io_;
+    FrameView<Rgb565Format, uint16_t> band_{};
+    BandBounds band_bb_{};
+    uint16_t* next_head_ = nullptr;
+    uint16_t insert_prev_ = kNoTriangle;
+    bool continues_ = false;
+};
 
 /// The bands of draw_zbuffer_binned() for any other format or shading: each band sets up its triangles
 /// and re-links those that continue into the next band.
@@ -243,9 +291,7 @@ void draw_bands_generic(const View& view, const Mesh& mesh, Span<const ScreenVer
             const uint16_t tri = t;
             t = next[t];
             bool continues = false;
-            FrameStats counted;  // clipping was counted while binning
-            for_each_clipped(view, mesh, verts, tri, counted,
-                             [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) {
+            for_each_piece(view, mesh, verts, tri, [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) {
                 const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
                 if (area == 0 || (opt.cull && area > 0)) return;
                 draw_raster<false>(pa, pb, pc, area, tri, band, band_bb, false, mesh, shading, opt, st);
@@ -295,7 +341,14 @@ FrameStats draw_zbuffer_binned(const View& view, const Mesh& mesh, Span<const Sc
     BinnedStats& out = bs != nullptr ? *bs : local;
     if constexpr (detail::is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2) {
         if (opt.shade != Shade::depth) {
-            detail::draw_bands_kernel(view, mesh, verts, buffers, opt, background, scratch, done, out, st);
+            detail::KernelBands kb(view, mesh, verts, buffers, opt, scratch, out, st);
+            for (size_t b = 0; b < bands; ++b) {
+                const int32_t y0 = static_cast<int32_t>(b) * rows;
+                if (!kb.band(b, bands, y0, min(height, y0 + rows), background, done)) {
+                    st.status = Status::invalid_argument;
+                    break;
+                }
+            }
             return st;
         }
     }
