@@ -10,7 +10,7 @@
 namespace {
 
 namespace scene = hider::scenes::torus_320x240;
-using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, 3, 45>;
+using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, 3, 43>;
 Sizes::Storage g;
 
 }  // namespace

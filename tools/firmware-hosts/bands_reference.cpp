@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
     }
     if (argc == 2 && std::strcmp(argv[1], "320") == 0) {
         namespace sc = hider::scenes::torus_320x240;
-        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands320.ppm", 3, 45);
+        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands320.ppm", 3, 43);
     }
     std::fputs("usage: bands_reference 160|320\n", stderr);
     return 2;
