@@ -72,4 +72,42 @@ int run(Io& io, const Scene& s, const FrameBuffers& buf, uint32_t frames, const 
     return 0;
 }
 
+/// One frame (frame 0) of `s` in three bench pairs: view set-up and projection, clear, draw; written as
+/// "<prefix>_000.ppm". Returns the exit status as run() does.
+template <class Io>
+int run_split(Io& io, const Scene& s, const FrameBuffers& buf, const char* prefix) {
+    const Frame frame = hider::frame_view<hider::Rgb565Format, uint16_t>(buf.color, buf.depth, s.width, s.height);
+    hider::View view;
+    bench_begin();
+    hider::Status status = frame_view(s, 0, view);
+    if (status == hider::Status::ok) status = hider::project_vertices(view, s.mesh.positions, buf.verts);
+    bench_end();
+    bench_begin();
+    hider::clear(frame, kBackground);
+    bench_end();
+    hider::FrameStats st;
+    bench_begin();
+    if (status == hider::Status::ok) st = hider::draw_zbuffer<false>(view, s.mesh, buf.verts, frame, draw_options());
+    bench_end();
+    if (status != hider::Status::ok || !st.ok()) {
+        io.print("spin: render failed\n");
+        return 1;
+    }
+    char path[64];
+    frame_file_name(path, prefix, 0);
+    if (!write_frame_ppm(io, path, buf.color, s.width, s.height, buf.ppm_row)) {
+        io.print("spin: cannot write ");
+        io.print(path);
+        io.print("\n");
+        return 1;
+    }
+    io.print(path);
+    io.print(": triangles drawn ");
+    io.print_u32(st.triangles_drawn);
+    io.print(", culled ");
+    io.print_u32(st.triangles_culled);
+    io.print("\n");
+    return 0;
+}
+
 }  // namespace spin

@@ -8,6 +8,7 @@
 #include "common/obj.hpp"
 #include "common/scene.hpp"
 #include "common/scenes/torus_160x128.hpp"
+#include "common/scenes/teapot_320x240.hpp"
 #include "common/scenes/torus_320x240.hpp"
 #include "hider-bake/cli.hpp"
 
@@ -31,6 +32,8 @@ const Baked kBaked[] = {
      scenes::torus_160x128::kCamera, scenes::torus_160x128::mesh()},
     {"torus_320x240", scenes::torus_320x240::kWidth, scenes::torus_320x240::kHeight,
      scenes::torus_320x240::kCamera, scenes::torus_320x240::mesh()},
+    {"teapot_320x240", scenes::teapot_320x240::kWidth, scenes::teapot_320x240::kHeight,
+     scenes::teapot_320x240::kCamera, scenes::teapot_320x240::mesh()},
 };
 
 bool same(const Vec3q16& a, const Vec3q16& b) { return a == b; }

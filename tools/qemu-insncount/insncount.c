@@ -6,6 +6,7 @@
  *   model=m0plus|m3       cycle model (ARM targets only)
  *   pairs=1               one more line per region pair: "pair <i> insns=<n> cycles=<lo> cycles_max=<hi>"
  *   profile=<file>        region executions per instruction address: "<pc hex> <count> <cycles lo>"
+ *   profile_pair=<n>      profile only the n-th region pair (from 0)
  *                         (cycles 0 without model=)
  * First line of the report (cycle fields only with model=):
  *   insncount total=<n> region=<n> pairs=<n> cycles=<lo> cycles_max=<hi> region_cycles=<lo> region_cycles_max=<hi>
@@ -79,6 +80,7 @@ static bool in_region;
 static bool have_start, have_end, printed, list_pairs;
 static uint64_t start_addr, end_addr;
 static int model = MODEL_NONE;
+static long profile_pair = -1;
 static const Block *last_block;
 static Block *blocks;
 static char out_path[4096], profile_path[4096];
@@ -99,7 +101,7 @@ static void on_block(unsigned int vcpu, void *userdata) {
     cyc_lo += b->lo;
     cyc_hi += b->hi;
     last_block = b;
-    if (in_region) b->region_execs++;
+    if (in_region && (profile_pair < 0 || (uint64_t)profile_pair == pairs)) b->region_execs++;
 }
 
 static void on_start(unsigned int vcpu, void *userdata) {
@@ -271,10 +273,12 @@ QEMU_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_
             model = MODEL_M3;
         } else if (strcmp(arg, "pairs=1") == 0) {
             list_pairs = true;
+        } else if (strncmp(arg, "profile_pair=", 13) == 0) {
+            profile_pair = strtol(arg + 13, NULL, 0);
         } else if (strncmp(arg, "profile=", 8) == 0) {
             snprintf(profile_path, sizeof profile_path, "%s", arg + 8);
         } else {
-            fprintf(stderr, "insncount: unknown option '%s' (start=, end=, out=, model=m0plus|m3, pairs=1, profile=)\n", arg);
+            fprintf(stderr, "insncount: unknown option '%s' (start=, end=, out=, model=m0plus|m3, pairs=1, profile=, profile_pair=)\n", arg);
             return -1;
         }
     }
