@@ -160,6 +160,26 @@ void fill(T* p, size_t n, T v) {
                              : "memory", "cc");
             words -= blocks * 12;  // not % 12: a second library division on ARMv6-M
         }
+#elif defined(__riscv) && __riscv_xlen == 32
+        // RV32 has no store-multiple: 32 stores and one pointer step per 128 bytes (GCC's loop below takes
+        // 11 instructions per 8 words). Offsets 0..124 keep every store compressible.
+        if (size_t blocks = words / 32) {
+            AliasWord* const end = w + blocks * 32;
+            __asm__ volatile("1:\n\t"
+                             "sw %2, 0(%0)\n\tsw %2, 4(%0)\n\tsw %2, 8(%0)\n\tsw %2, 12(%0)\n\t"
+                             "sw %2, 16(%0)\n\tsw %2, 20(%0)\n\tsw %2, 24(%0)\n\tsw %2, 28(%0)\n\t"
+                             "sw %2, 32(%0)\n\tsw %2, 36(%0)\n\tsw %2, 40(%0)\n\tsw %2, 44(%0)\n\t"
+                             "sw %2, 48(%0)\n\tsw %2, 52(%0)\n\tsw %2, 56(%0)\n\tsw %2, 60(%0)\n\t"
+                             "sw %2, 64(%0)\n\tsw %2, 68(%0)\n\tsw %2, 72(%0)\n\tsw %2, 76(%0)\n\t"
+                             "sw %2, 80(%0)\n\tsw %2, 84(%0)\n\tsw %2, 88(%0)\n\tsw %2, 92(%0)\n\t"
+                             "sw %2, 96(%0)\n\tsw %2, 100(%0)\n\tsw %2, 104(%0)\n\tsw %2, 108(%0)\n\t"
+                             "sw %2, 112(%0)\n\tsw %2, 116(%0)\n\tsw %2, 120(%0)\n\tsw %2, 124(%0)\n\t"
+                             "addi %0, %0, 128\n\tbne %0, %1, 1b"
+                             : "+r"(w)
+                             : "r"(end), "r"(word)
+                             : "memory");
+            words -= blocks * 32;
+        }
 #endif
         for (; words >= 8; words -= 8, w += 8) {
             w[0] = word; w[1] = word; w[2] = word; w[3] = word;

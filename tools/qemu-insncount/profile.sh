@@ -4,7 +4,8 @@
 # (addr2line; build with -g for useful lines). Prints the top entries by instructions, with the share
 # and, on ARM targets, the modelled cycles (lower bound).
 # Usage: profile.sh <cm0plus|cm3|rv32imac> <firmware.elf> [big|small] [top entries, default 30]
-# Env:   INSNCOUNT_PLUGIN, NM as for run.sh; ADDR2LINE (default: from the preset); LINES=1.
+# Env:   INSNCOUNT_PLUGIN, NM as for run.sh; ADDR2LINE (default: from the preset); LINES=1;
+#        PAIR=<n> profiles only the n-th bench pair (from 0).
 set -eu
 if [ $# -lt 2 ] || [ $# -gt 4 ]; then
     echo "usage: $0 <cm0plus|cm3|rv32imac> <firmware.elf> [big|small] [top]" >&2
@@ -20,7 +21,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 elf_abs=$(cd "$(dirname "$elf")" && pwd)/$(basename "$elf")
-(cd "$work" && INSNCOUNT_ARGS="profile=$work/profile.txt" sh "$here/run.sh" "$preset" "$elf_abs" "$work/counts.txt" "$machine" >/dev/null 2>&1) || true
+(cd "$work" && INSNCOUNT_ARGS="profile=$work/profile.txt${PAIR:+,profile_pair=$PAIR}" sh "$here/run.sh" "$preset" "$elf_abs" "$work/counts.txt" "$machine" >/dev/null 2>&1) || true
 if [ ! -s "$work/profile.txt" ]; then
     echo "$0: no profile written" >&2
     exit 1
