@@ -71,6 +71,12 @@ constexpr Vec3q16 apply(const Transform& t, const Vec3q16& p) {
             detail::row_dot(t.rot.m[2], p, t.trans.z)};
 }
 
+/// apply() forced inline, for a loop over many points that keeps its other work in registers.
+__attribute__((always_inline)) constexpr Vec3q16 apply_inline(const Transform& t, const Vec3q16& p) {
+    return {detail::row_dot(t.rot.m[0], p, t.trans.x), detail::row_dot(t.rot.m[1], p, t.trans.y),
+            detail::row_dot(t.rot.m[2], p, t.trans.z)};
+}
+
 /// A transform prepared for many points (the vertices of a frame). On ARMv6-M its rotation is split into
 /// 16-bit halves once, so each point costs its own split and the twelve 32-bit products per row of
 /// detail::dot3_split_floor; elsewhere it is apply(). Same results as apply() everywhere.
