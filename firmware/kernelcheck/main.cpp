@@ -3,6 +3,9 @@
 //   assembly) and run_kernel_triangle_portable(), two calls each: same buffers and final state.
 // - kernelcheck::kSetupCases triangle set-ups (setup_cases.hpp) through kernel_setup() (the Thumb-2 set-up
 //   on ARMv7-M) and kernel_setup_portable(): same outcome and kernel fields for every case.
+// - kernelcheck::kVertexCases batches of positions (vertex_cases.hpp) through project_vertices() (on
+//   ARMv6-M the Thumb-1 loop, elsewhere project_common()) and the general per-position path: same
+//   vertices; on ARMv6-M the loop must also refuse no position inside the view volume with w < 2^29.
 // - The frame clear (detail::fill, store-multiples on Cortex-M) against a plain loop for every length up
 //   to kFillMax.
 // The chip's digests go to kernelcheck.bin, which the host twin writes from the portable code (ctest
@@ -10,11 +13,12 @@
 #include "common/bench.hpp"
 #include "kernelcheck/cases.hpp"
 #include "kernelcheck/setup_cases.hpp"
+#include "kernelcheck/vertex_cases.hpp"
 #include "semihost/semihost.hpp"
 
 namespace {
 
-constexpr int kWords = kernelcheck::kCases + kernelcheck::kSetupCases + 1;  // the last word: the fill digest
+constexpr int kWords = kernelcheck::kCases + kernelcheck::kSetupCases + kernelcheck::kVertexCases + 1;  // the last: fill
 kernelcheck::Buffers g_buffers;
 uint32_t g_digests[kWords];
 
@@ -48,6 +52,44 @@ int main() {
         sh::print("\n");
         return 1;
     }
+    uint32_t refused_inside = 0, accepted = 0;
+    const int vertex_case = kernelcheck::run_vertex_cases(
+        [](const hider::View& v, const hider::Vec3q16* p, hider::ScreenVertex* out) {
+            (void)hider::project_vertices(v, {p, kernelcheck::kVertexBatch}, {out, kernelcheck::kVertexBatch});
+        },
+        kernelcheck::project_each,
+        [&](const kernelcheck::VertexCase& c) {
+#if defined(__ARM_ARCH_6M__)
+            // Walk the Thumb-1 loop itself: every position it stops at must be one it may refuse.
+            static hider::ScreenVertex out[kernelcheck::kVertexBatch];
+            const hider::detail::VertexPrep prep = hider::detail::vertex_prep(c.view);
+            const hider::Vec3q16* const end = c.p + kernelcheck::kVertexBatch;
+            for (const hider::Vec3q16* p = c.p; p != end; ++p) {
+                const hider::Vec3q16* const stop = hider::project_common_v6m(&prep, p, out + (p - c.p), end);
+                accepted += static_cast<uint32_t>(stop - p);
+                if ((p = stop) == end) break;
+                const hider::ViewPoint q = hider::to_view_point(c.view, *p);
+                refused_inside += hider::outcode(c.view, q) == 0 && q.w < (int32_t{1} << 29);
+            }
+#else
+            (void)c;
+            (void)accepted;
+#endif
+        },
+        g_digests + kernelcheck::kCases + kernelcheck::kSetupCases);
+    if (vertex_case >= 0 || refused_inside != 0) {
+        if (vertex_case >= 0) {
+            sh::print("kernelcheck: project_vertices differs from the per-position path in case ");
+            sh::print_u32(static_cast<uint32_t>(vertex_case));
+            sh::print("\n");
+        }
+        if (refused_inside != 0) {
+            sh::print("kernelcheck: the vertex loop refused ");
+            sh::print_u32(refused_inside);
+            sh::print(" positions inside the view volume\n");
+        }
+        return 1;
+    }
     g_digests[kWords - 1] = kernelcheck::fill_digest(
         [](uint16_t* p, uint32_t n, uint16_t v) { hider::detail::fill<uint16_t>(p, n, v); }, g_buffers);
     if (g_digests[kWords - 1] != kernelcheck::fill_digest(kernelcheck::fill_plain, g_buffers)) {
@@ -62,6 +104,14 @@ int main() {
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kCases));
     sh::print(" kernel cases and ");
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kSetupCases));
-    sh::print(" set-ups equal the portable code; the clear equals a plain loop\n");
+    sh::print(" set-ups equal the portable code, ");
+    sh::print_u32(static_cast<uint32_t>(kernelcheck::kVertexCases * kernelcheck::kVertexBatch));
+    sh::print(" positions the per-position path");
+#if defined(__ARM_ARCH_6M__)
+    sh::print(" (the Thumb-1 loop projected ");
+    sh::print_u32(accepted);
+    sh::print(")");
+#endif
+    sh::print("; the clear equals a plain loop\n");
     return 0;
 }

@@ -1,13 +1,15 @@
 // Host twin of the kernelcheck firmware: writes kernelcheck.bin (one digest per kernel case, cases.hpp,
-// and per set-up case, setup_cases.hpp, then the fill digest) from the portable kernel, the portable
-// set-up and a plain fill loop, as the reference for the kernelcheck.matches_host ctest.
+// per set-up case, setup_cases.hpp, and per vertex case, vertex_cases.hpp, then the fill digest) from
+// the portable kernel, the portable set-up, the per-position projection and a plain fill loop, as the
+// reference for the kernelcheck.matches_host ctest.
 #include "kernelcheck/cases.hpp"
 #include "kernelcheck/setup_cases.hpp"
+#include "kernelcheck/vertex_cases.hpp"
 #include "stdio_io.hpp"
 
 int main() {
     static kernelcheck::Buffers buffers;
-    static uint32_t digests[kernelcheck::kCases + kernelcheck::kSetupCases + 1];
+    static uint32_t digests[kernelcheck::kCases + kernelcheck::kSetupCases + kernelcheck::kVertexCases + 1];
     auto kernel = [](hider::KernelTriangle& t, uint16_t* zrow, int32_t stop, const hider::KernelTarget& target) {
         return hider::run_kernel_triangle_portable(t, zrow, stop, target);
     };
@@ -15,6 +17,10 @@ int main() {
                     hider::KernelSetupIo& io) { return hider::kernel_setup_portable(a, b, c, io.area, *io.band, *io.out); };
     if (kernelcheck::run_cases(kernel, kernel, buffers, digests) >= 0) return 1;
     if (kernelcheck::run_setup_cases(setup, setup, digests + kernelcheck::kCases) >= 0) return 1;
-    digests[kernelcheck::kCases + kernelcheck::kSetupCases] = kernelcheck::fill_digest(kernelcheck::fill_plain, buffers);
+    if (kernelcheck::run_vertex_cases(kernelcheck::project_each, kernelcheck::project_each, [](const kernelcheck::VertexCase&) {},
+                                      digests + kernelcheck::kCases + kernelcheck::kSetupCases) >= 0)
+        return 1;
+    digests[kernelcheck::kCases + kernelcheck::kSetupCases + kernelcheck::kVertexCases] =
+        kernelcheck::fill_digest(kernelcheck::fill_plain, buffers);
     return host::write_file("kernelcheck.bin", digests, sizeof digests) ? 0 : 1;
 }

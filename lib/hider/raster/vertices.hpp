@@ -2,6 +2,7 @@
 // ScreenVertex (or the planes it lies outside of), into a caller array indexed like the positions.
 #pragma once
 #include <hider/raster/clip.hpp>
+#include <hider/raster/vertices_asm.hpp>
 
 namespace hider {
 
@@ -68,6 +69,21 @@ __attribute__((always_inline)) inline bool project_common(const View& v, const V
     out.z = min(z, kDepthFar);
     return true;
 }
+
+
+/// One position the general way: its clip codes, then project() or the planes it lies outside of.
+inline void project_one(const View& view, const ViewPoint& p, ScreenVertex& o) {
+    const ScaledXY xy = scaled_xy(view, p);
+    const uint8_t code = outcode(view, p, xy);
+    if (code != 0) {
+        o.mark_outside(code);
+        return;
+    }
+    const ScreenVertex s = project(view, p, xy);
+    o.x = s.x;  // field by field: a whole-struct copy became a 9-byte memcpy call on ARMv6-M
+    o.y = s.y;
+    o.z = s.z;
+}
 }  // namespace detail
 
 /// Transforms and projects every position into `out` (same index); vertices outside a clip plane are
@@ -80,27 +96,27 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
                                DepthRange* range = nullptr) {
     if (out.size() < positions.size()) return Status::invalid_argument;
     const PreparedTransform to_view(view.to_view);
+#if defined(__ARM_ARCH_6M__)
+    // The assembly loop runs until a position it refuses; that one goes the general way.
+    const detail::VertexPrep prep = detail::vertex_prep(view);
+    const Vec3q16* const first = positions.data();
+    const Vec3q16* const end = first + positions.size();
+    for (const Vec3q16* p = first; p != end; ++p) {
+        p = project_common_v6m(&prep, p, out.data() + (p - first), end);
+        if (p == end) break;
+        detail::project_one(view, to_view_point(to_view, *p), out[static_cast<size_t>(p - first)]);
+    }
+#else
     for (size_t i = 0; i < positions.size(); ++i) {
-        ViewPoint p;
         if constexpr (kSlow64BitDivide && kHardwareDivide32) {  // the transform inline, then the common case
             const Vec3q16 q = apply_inline(view.to_view, positions[i]);
-            p = {q.x.raw(), q.y.raw(), -q.z.raw()};
-            if (detail::project_common(view, p, out[i])) continue;
+            const ViewPoint p{q.x.raw(), q.y.raw(), -q.z.raw()};
+            if (!detail::project_common(view, p, out[i])) detail::project_one(view, p, out[i]);
         } else {
-            p = to_view_point(to_view, positions[i]);
+            detail::project_one(view, to_view_point(to_view, positions[i]), out[i]);
         }
-        const ScaledXY xy = scaled_xy(view, p);
-        const uint8_t code = outcode(view, p, xy);
-        if (code != 0) {
-            out[i].mark_outside(code);
-            continue;
-        }
-        const ScreenVertex s = project(view, p, xy);
-        ScreenVertex& o = out[i];  // field by field: a whole-struct copy became a 9-byte memcpy call on ARMv6-M
-        o.x = s.x;
-        o.y = s.y;
-        o.z = s.z;
     }
+#endif
     if (range != nullptr) {  // a second pass, so frames without depth shading do not pay for it
         DepthRange r;
         for (size_t i = 0; i < positions.size(); ++i) {
