@@ -1,7 +1,7 @@
 // Random triangle set-ups shared by the kernelcheck firmware and its host twin: each case is a band of a
 // frame (random size, rows and stride) and three vertices (tiny to huge, inside and past the frame, flat
-// and steep depth), set up through `setup` (kernel_setup() on the chip, kernel_setup_portable() on the
-// host). setup_digest() folds the outcome and every field the row kernel will read into one 32-bit
+// and steep depth, some on the first or last column centre, some spanning the whole guard band in y),
+// set up through `setup` (kernel_setup() on the chip, kernel_setup_portable() on the host). setup_digest() folds the outcome and every field the row kernel will read into one 32-bit
 // digest per case.
 #pragma once
 #include <hider/raster/kernel_triangle.hpp>
@@ -51,6 +51,17 @@ inline SetupCase make_setup_case(Rng& rng) {
                 case 1: v.z = hider::kDepthNear + rng.next() % (hider::kDepthFar - hider::kDepthNear); break;
                 default: v.z = z0; break;
             }
+        }
+        // Edge cases: a vertex exactly on the first or last column centre; a triangle reaching far past
+        // the band above and below (depth differences over y spans near 2^15).
+        const uint32_t extra = rng.next();
+        if ((extra & 7u) == 0) {
+            hider::ScreenVertex& v = c.v[(extra >> 3) % 3];
+            v.x = static_cast<int16_t>((extra & 0x100u) != 0 ? b.x_origin : b.x_last);
+        }
+        if (((extra >> 9) & 7u) == 0) {
+            c.v[(extra >> 12) % 3].y = static_cast<int16_t>(-hider::kCoordLimit + static_cast<int32_t>((extra >> 16) & 0xFF));
+            c.v[(extra >> 14) % 3].y = static_cast<int16_t>(hider::kCoordLimit - static_cast<int32_t>((extra >> 24) & 0xFF));
         }
         c.area = hider::TriangleRaster::signed_area(c.v[0], c.v[1], c.v[2]);
         if (c.area != 0) return c;

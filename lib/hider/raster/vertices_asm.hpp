@@ -16,7 +16,7 @@ struct VertexPrep {
     int32_t far_fast;           ///< 88: min(far, 2^29 - 1): the loop refuses w above it
     uint32_t k_hi, k_lo;        ///< 92, 96: k_q8 in 16-bit halves
     uint32_t scale_lo, scale_hi;///< 100, 104: depth_scale_q31
-    const uint16_t* table;      ///< 108: reciprocal_table()
+    const uint16_t* table;      ///< 108: kReciprocalTableData
 };
 static_assert(sizeof(void*) != 4 || (offsetof(VertexPrep, near_raw) == 84 && offsetof(VertexPrep, table) == 108),
               "vertex loop constants layout");
@@ -38,7 +38,7 @@ inline VertexPrep vertex_prep(const View& v) {
     p.k_lo = static_cast<uint32_t>(v.k_q8) & 0xFFFFu;
     p.scale_lo = static_cast<uint32_t>(v.depth_scale_q31);
     p.scale_hi = static_cast<uint32_t>(v.depth_scale_q31 >> 32);
-    p.table = reciprocal_table();
+    p.table = kReciprocalTableData;
     return p;
 }
 }  // namespace detail
