@@ -43,6 +43,20 @@ public:
         return {scale(opt_.base.r), scale(opt_.base.g), scale(opt_.base.b)};
     }
 
+    /// Rgb565Format::pack(color(mesh, t, front)), the headlight with normals computed in place (the row
+    /// kernel's draw loops call it per drawn triangle).
+    __attribute__((always_inline)) uint16_t color565(const Mesh& mesh, size_t t, bool front) const {
+        if (opt_.shade != Shade::headlight || mesh.normals.empty()) return Rgb565Format::pack(color(mesh, t, front));
+        const Normal14& n = mesh.normals[t];
+        int32_t b_q16 = (view_z_[0] * n.x + view_z_[1] * n.y + view_z_[2] * n.z) >> 12;
+        if (!front) b_q16 = -b_q16;
+        b_q16 = clamp<int32_t>(b_q16, 0, int32_t{1} << 16);
+        const uint32_t r = static_cast<uint32_t>(opt_.base.r * b_q16 + (1 << 15)) >> 16;
+        const uint32_t g = static_cast<uint32_t>(opt_.base.g * b_q16 + (1 << 15)) >> 16;
+        const uint32_t b = static_cast<uint32_t>(opt_.base.b * b_q16 + (1 << 15)) >> 16;
+        return static_cast<uint16_t>(((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3));
+    }
+
 private:
     DrawOptions opt_;
     int32_t view_z_[3];  // third row of the view rotation, Q14: N_view.z = row . N

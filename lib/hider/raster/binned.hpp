@@ -231,7 +231,7 @@ private:
             const int32_t first = clamp<int32_t>(kt.top, 0, buffers_.height - 1);
             st_.triangles_drawn += y0 <= first && first < y1;
             if (kt.row >= kt.end) return;
-            kt.k.color = Rgb565Format::pack(shading_.color(mesh_, tri, area < 0));
+            kt.k.color = shading_.color565(mesh_, tri, area < 0);
             kt.tri = tri;
             run_kernel_triangle(kt, band_.depth + static_cast<ptrdiff_t>(kt.row - y0) * band_.stride, y1, bt_.target);
             if (kt.row >= kt.end) return;

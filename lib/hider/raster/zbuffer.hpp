@@ -106,16 +106,19 @@ __attribute__((always_inline)) inline void for_each_drawable(const View& view, c
                                                              Span<const ScreenVertex> verts, bool cull, const BandBounds& bb,
                                                              bool whole_frame, int32_t band_y0, int32_t band_y1,
                                                              int32_t height, FrameStats& st, Draw&& draw) {
-    // Loop invariants in locals: the lambdas capture st by reference, so GCC would reload them per triangle.
+    // Loop invariants in locals, captured by value: the lambdas capture st by reference, so GCC would
+    // reload them (and the flags behind references) per triangle.
     const Tri* const tris = mesh.tris.data();
     const ScreenVertex* const vp = verts.data();
     const size_t tri_count = mesh.tris.size();
+    const bool cull_faces = cull, whole = whole_frame;
     // False for zero area and culled faces (counted). Inline: most triangles end here.
-    auto keep = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area)
+    auto keep = [cull_faces, whole, &st, &bb, band_y0, band_y1, height](const ScreenVertex& a, const ScreenVertex& b,
+                                                                        const ScreenVertex& c, int32_t area)
                     __attribute__((always_inline)) {
         if (area == 0) return false;
-        if (cull && area > 0) {
-            if (whole_frame) {
+        if (cull_faces && area > 0) {
+            if (whole) {
                 ++st.triangles_culled;
             } else {  // counted only by the band holding the first row, so band counts add up
                 const int32_t first = clamp((min(a.y, min(b.y, c.y)) - bb.y_origin + kSubpixel - 1) >> kSubpixelBits,
@@ -127,8 +130,9 @@ __attribute__((always_inline)) inline void for_each_drawable(const View& view, c
         return true;
     };
     st.triangles_in = static_cast<uint32_t>(tri_count);
-    for (size_t t = 0; t < tri_count; ++t) {
-        const Tri& tri = tris[t];
+    const Tri* tri_p = tris;
+    for (size_t t = 0; t < tri_count; ++t, ++tri_p) {
+        const Tri& tri = *tri_p;
         const ScreenVertex& a = vp[tri.v[0]];
         const ScreenVertex& b = vp[tri.v[1]];
         const ScreenVertex& c = vp[tri.v[2]];
@@ -165,6 +169,9 @@ void draw_raster(const ScreenVertex& a, const ScreenVertex& b, const ScreenVerte
         FlatShader<typename Format::Pixel>{Format::pack(shading.color(mesh, t, tr.front()))}, st.pixels_written);
 }
 
+template <class T, class U> struct is_same_type { static constexpr bool value = false; };
+template <class T> struct is_same_type<T, T> { static constexpr bool value = true; };
+
 /// The flat RGB565 + 16-bit depth path without fragment counting: triangles inside the frame's columns
 /// are set up straight into the row kernel (kernel_triangle.hpp), the others take draw_raster().
 template <class Format>
@@ -194,13 +201,11 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
         const int32_t first = clamp<int32_t>(kt.top, 0, height - 1);
         st.triangles_drawn += whole_frame || (y0 <= first && first < y1);
         if (kt.row >= kt.end) return;
-        kt.k.color = Format::pack(shading.color(mesh, t, area < 0));
+        if constexpr (is_same_type<Format, Rgb565Format>::value) kt.k.color = shading.color565(mesh, t, area < 0);
+        else kt.k.color = Format::pack(shading.color(mesh, t, area < 0));
         run_kernel_triangle(kt, depth + static_cast<ptrdiff_t>(kt.row - y0) * stride, y1, target);
     });
 }
-
-template <class T, class U> struct is_same_type { static constexpr bool value = false; };
-template <class T> struct is_same_type<T, T> { static constexpr bool value = true; };
 
 }  // namespace detail
 
