@@ -13,7 +13,7 @@
 namespace hider {
 
 /// Screen constants of a band for kernel set-ups (centre-relative subpixels, rows of the full frame).
-/// The layout is the assembly set-ups' contract (kernel_setup_arm.hpp).
+/// The layout is the assembly set-ups' contract (kernel_setup_asm.hpp).
 struct KernelBand {
     int32_t x_origin, y_origin;  ///< centre of pixel (0, 0)
     int32_t x_last;              ///< centre of the last column
@@ -114,4 +114,4 @@ struct KernelSetupIo {
 
 }  // namespace hider
 
-#include <hider/raster/kernel_setup_arm.hpp>  // the assembly set-ups and kernel_setup()
+#include <hider/raster/kernel_setup_asm.hpp>  // the assembly set-ups and kernel_setup()

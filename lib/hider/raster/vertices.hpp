@@ -7,10 +7,10 @@
 namespace hider {
 
 namespace detail {
-/// floor(n 2^31 / w) for 0 < n < w: udiv64_32() for this numerator (normalised divisor, two 16-bit
-/// quotient digits, each one 32-bit division and at most two corrections), without the call.
-__attribute__((always_inline)) constexpr uint32_t ratio_q31(uint32_t n, uint32_t w) {
-    const int s = clz32(w);
+/// floor(n 2^31 / w) for 0 < n < w, given s = clz32(w): udiv64_32() for this numerator (normalised
+/// divisor, two 16-bit quotient digits, each one 32-bit division and at most two corrections), without
+/// the call.
+__attribute__((always_inline)) constexpr uint32_t ratio_q31(uint32_t n, uint32_t w, int s) {
     const uint32_t v = w << s, vn1 = v >> 16, vn0 = v & 0xFFFFu;
     const uint32_t nn = n << s;  // below v
     const uint32_t un32 = nn >> 1, un1 = (nn & 1u) << 15;  // nn 2^31 = un32 2^32 + un1 2^16
@@ -48,7 +48,8 @@ __attribute__((always_inline)) inline bool project_common(const View& v, const V
     // m = floor((|n| + 128 w) / 256) < w 2^15; m >> s over W = ceil(w / 2^s) (w's top 16 bits, rounded
     // up, at least 2^15 when s > 0) is the quotient q or one less: it is at least q - (q + 1) / (W + 1)
     // - 1 and q <= kGuardBand < 2^14. The remainder m - e w < 2 w fits the low words.
-    const int s = uw < (uint32_t{1} << 16) ? 0 : 16 - clz32(uw);
+    const int leading = clz32(uw);  // once: a library call where the CPU has no CLZ (RV32IMAC)
+    const int s = leading > 16 ? 0 : 16 - leading;
     const uint32_t wd = ((uw - 1) >> s) + 1;
     const int t = s + 8;  // m >> s = sum >> t, 8 <= t <= 22: two words
     auto quotient = [&](uint64_t a) __attribute__((always_inline)) {
@@ -61,12 +62,12 @@ __attribute__((always_inline)) inline bool project_common(const View& v, const V
     };
     const int32_t qx = quotient(ax), qy = quotient(ay);
     uint32_t u = uint32_t{1} << 31;
-    if (w > v.near_raw) u = max(ratio_q31(static_cast<uint32_t>(v.near_raw), uw), v.near_over_far_q31);
+    if (w > v.near_raw) u = ratio_q31(static_cast<uint32_t>(v.near_raw), uw, leading);  // at least n / f: w <= f
     const uint32_t z = kDepthNear + static_cast<uint32_t>(
         (mul_u32_u64((uint32_t{1} << 31) - u, v.depth_scale_q31) + (uint64_t{1} << 30)) >> 31);
     out.x = static_cast<int16_t>(xk < 0 ? -qx : qx);
     out.y = static_cast<int16_t>(yk < 0 ? qy : -qy);  // project() divides -y k
-    out.z = min(z, kDepthFar);
+    out.z = z;  // at most kDepthFar: the scale is rounded down and 2^31 - u <= 2^31 - n / f
     return true;
 }
 
