@@ -161,24 +161,22 @@ void fill(T* p, size_t n, T v) {
             words -= blocks * 12;  // not % 12: a second library division on ARMv6-M
         }
 #elif defined(__riscv) && __riscv_xlen == 32
-        // RV32 has no store-multiple: 32 stores and one pointer step per 128 bytes (GCC's loop below takes
-        // 11 instructions per 8 words). Offsets 0..124 keep every store compressible.
-        if (size_t blocks = words / 32) {
-            AliasWord* const end = w + blocks * 32;
+        // RV32 has no store-multiple: 64 stores and one pointer step per 256 bytes (GCC's loop below takes
+        // 11 instructions per 8 words; 32 stores a step measured 2,400 instructions more a torus frame).
+        if (size_t blocks = words / 64) {
+            AliasWord* const end = w + blocks * 64;
             __asm__ volatile("1:\n\t"
-                             "sw %2, 0(%0)\n\tsw %2, 4(%0)\n\tsw %2, 8(%0)\n\tsw %2, 12(%0)\n\t"
-                             "sw %2, 16(%0)\n\tsw %2, 20(%0)\n\tsw %2, 24(%0)\n\tsw %2, 28(%0)\n\t"
-                             "sw %2, 32(%0)\n\tsw %2, 36(%0)\n\tsw %2, 40(%0)\n\tsw %2, 44(%0)\n\t"
-                             "sw %2, 48(%0)\n\tsw %2, 52(%0)\n\tsw %2, 56(%0)\n\tsw %2, 60(%0)\n\t"
-                             "sw %2, 64(%0)\n\tsw %2, 68(%0)\n\tsw %2, 72(%0)\n\tsw %2, 76(%0)\n\t"
-                             "sw %2, 80(%0)\n\tsw %2, 84(%0)\n\tsw %2, 88(%0)\n\tsw %2, 92(%0)\n\t"
-                             "sw %2, 96(%0)\n\tsw %2, 100(%0)\n\tsw %2, 104(%0)\n\tsw %2, 108(%0)\n\t"
-                             "sw %2, 112(%0)\n\tsw %2, 116(%0)\n\tsw %2, 120(%0)\n\tsw %2, 124(%0)\n\t"
-                             "addi %0, %0, 128\n\tbne %0, %1, 1b"
+                             ".irp off, 0, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52, 56, 60, 64, 68, 72, 76, "
+                             "80, 84, 88, 92, 96, 100, 104, 108, 112, 116, 120, 124, 128, 132, 136, 140, 144, 148, 152, "
+                             "156, 160, 164, 168, 172, 176, 180, 184, 188, 192, 196, 200, 204, 208, 212, 216, 220, 224, "
+                             "228, 232, 236, 240, 244, 248, 252\n\t"
+                             "sw %2, \\off(%0)\n\t"
+                             ".endr\n\t"
+                             "addi %0, %0, 256\n\tbne %0, %1, 1b"
                              : "+r"(w)
                              : "r"(end), "r"(word)
                              : "memory");
-            words -= blocks * 32;
+            words -= blocks * 64;
         }
 #endif
         for (; words >= 8; words -= 8, w += 8) {

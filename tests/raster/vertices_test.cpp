@@ -9,6 +9,15 @@
 namespace hider {
 namespace {
 
+TEST_CASE("leading_zeros_smeared is clz32") {
+    for (int b = 0; b < 32; ++b)
+        for (uint32_t low : {0u, 1u, 0x55555555u, 0xFFFFFFFFu}) {
+            const uint32_t v = (uint32_t{1} << b) | (low & ((uint32_t{1} << b) - 1));
+            CHECK(detail::leading_zeros_smeared(v) == clz32(v));
+            CHECK(detail::leading_zeros(v) == clz32(v));
+        }
+}
+
 TEST_CASE("ratio_q31 is floor(n 2^31 / w) for every n < w") {
     std::mt19937_64 rng(31);
     auto check = [](uint32_t n, uint32_t w) {

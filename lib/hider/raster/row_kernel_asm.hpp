@@ -330,9 +330,9 @@ __attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_v6m(Kernel
 /// RV32. In the row loop: a0 the state, a4..a7 lp lg lz rp, t0 rg, t1..t5 lm lstep ldz rm rstep, t6 dz,
 /// s0 the colour, a2 rows left in this phase, a3 the colour offset; la and ra are loaded by the
 /// corrections; on the stack the middle row's depth pointer, the rows after the switch (-1: none) and
-/// the depth row after the last. Pixel loop: s1 walks the depth elements up to rp, s2 z, a1 and s3
-/// scratch (9 instructions a written pixel, 6 a rejected one). Per row outside the pixels: 12, plus 4
-/// and 3 for edge corrections.
+/// the depth row after the last. Pixel loop, two pixels a pass after an odd one: s1 walks the depth
+/// elements up to rp, s2 z, a1 and s3 scratch (8 instructions a written pixel, 5 a rejected one, one
+/// more for the odd pixel). Per row outside the pixels: 15, plus 4 and 3 for edge corrections.
 __attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_rv32(KernelTriangle*, uint16_t*, int32_t,
                                                                            const KernelTarget*) {
     __asm__ volatile(
@@ -387,17 +387,38 @@ __attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_rv32(Kerne
         "3:\n\t"                            // row
         "bgeu   a4, a7, 5f\n\t"             // empty span
         "mv     s1, a4\n\t"
-        "mv     s2, a6\n"                   // z = lz
-        "4:\n\t"                            // pixel
-        "lhu    a1, 0(s1)\n\t"
+        "mv     s2, a6\n\t"                 // z = lz
+        "sub    a1, a7, a4\n\t"
+        "andi   a1, a1, 2\n\t"
+        "beqz   a1, 4f\n\t"                 // an even count: pairs only
+        "lhu    a1, 0(s1)\n\t"              // the odd pixel
         "srli   s3, s2, 16\n\t"
-        "bgeu   s3, a1, 6f\n\t"             // stored depth <= ours: keep it
+        "bgeu   s3, a1, 11f\n\t"            // stored depth <= ours: keep it
         "sh     s3, 0(s1)\n\t"
         "add    s3, s1, a3\n\t"
         "sh     s0, 0(s3)\n"
-        "6:\n\t"
+        "11:\n\t"
         "add    s2, s2, t6\n\t"
         "addi   s1, s1, 2\n\t"
+        "beq    s1, a7, 5f\n"
+        "4:\n\t"                            // two pixels
+        "lhu    a1, 0(s1)\n\t"
+        "srli   s3, s2, 16\n\t"
+        "bgeu   s3, a1, 12f\n\t"
+        "sh     s3, 0(s1)\n\t"
+        "add    s3, s1, a3\n\t"
+        "sh     s0, 0(s3)\n"
+        "12:\n\t"
+        "add    s2, s2, t6\n\t"
+        "lhu    a1, 2(s1)\n\t"
+        "srli   s3, s2, 16\n\t"
+        "bgeu   s3, a1, 13f\n\t"
+        "sh     s3, 2(s1)\n\t"
+        "add    s3, s1, a3\n\t"
+        "sh     s0, 2(s3)\n"
+        "13:\n\t"
+        "add    s2, s2, t6\n\t"
+        "addi   s1, s1, 4\n\t"
         "bne    s1, a7, 4b\n"
         "5:\n\t"                            // left edge: g += m, p += step, z += dz_row, then correct
         "add    a5, a5, t1\n\t"

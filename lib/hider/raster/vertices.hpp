@@ -7,6 +7,29 @@
 namespace hider {
 
 namespace detail {
+/// clz32(v) for v != 0 without a CLZ instruction or a library call: the bits below the top one set,
+/// then a de Bruijn multiply and a 32-entry table (Bit Twiddling Hacks).
+inline constexpr uint8_t kTopBitDeBruijn[32] = {0,  9,  1,  10, 13, 21, 2,  29, 11, 14, 16, 18, 22, 25, 3, 30,
+                                                8,  12, 20, 28, 15, 17, 24, 7,  19, 27, 23, 6,  26, 5,  4, 31};
+constexpr int leading_zeros_smeared(uint32_t v) {
+    v |= v >> 1;
+    v |= v >> 2;
+    v |= v >> 4;
+    v |= v >> 8;
+    v |= v >> 16;
+    return 31 - kTopBitDeBruijn[(v * 0x07C4ACDDu) >> 27];
+}
+
+/// clz32(v) for v != 0: on RISC-V without Zbb leading_zeros_smeared() (libgcc's __clzsi2 and the spills
+/// around the call cost about 14 instructions more a vertex), else the instruction.
+__attribute__((always_inline)) inline int leading_zeros(uint32_t v) {
+#if defined(__riscv) && !defined(__riscv_zbb)
+    return leading_zeros_smeared(v);
+#else
+    return clz32(v);
+#endif
+}
+
 /// floor(n 2^31 / w) for 0 < n < w, given s = clz32(w): udiv64_32() for this numerator (normalised
 /// divisor, two 16-bit quotient digits, each one 32-bit division and at most two corrections), without
 /// the call.
@@ -48,7 +71,7 @@ __attribute__((always_inline)) inline bool project_common(const View& v, const V
     // m = floor((|n| + 128 w) / 256) < w 2^15; m >> s over W = ceil(w / 2^s) (w's top 16 bits, rounded
     // up, at least 2^15 when s > 0) is the quotient q or one less: it is at least q - (q + 1) / (W + 1)
     // - 1 and q <= kGuardBand < 2^14. The remainder m - e w < 2 w fits the low words.
-    const int leading = clz32(uw);  // once: a library call where the CPU has no CLZ (RV32IMAC)
+    const int leading = leading_zeros(uw);
     const int s = leading > 16 ? 0 : 16 - leading;
     const uint32_t wd = ((uw - 1) >> s) + 1;
     const int t = s + 8;  // m >> s = sum >> t, 8 <= t <= 22: two words

@@ -190,7 +190,8 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
     KernelTriangle kt;
     KernelSetupIo io{&band, 0, &kt};
     for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st,
-                      [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, size_t t) {
+                      [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, size_t t)
+                          __attribute__((always_inline)) {
         io.area = area;
         const KernelSetup s = kernel_setup(a, b, c, io);
         if (s == KernelSetup::none) return;
