@@ -158,9 +158,9 @@ int run_cases(Run&& run, Twin&& twin, Buffers& b, uint32_t* out) {
     return first_difference;
 }
 
-/// Longest fill tried: more than three of the ARMv7-M clear's 20-word blocks and five of the ARMv6-M
-/// clear's 12-word blocks, so every loop and every remainder runs.
-constexpr uint32_t kFillMax = 130;
+/// Longest fill tried: two of the ARMv7-M clear's 96-word blocks, four of the ARMv6-M clear's 56-word
+/// blocks and of RV32's 64-word ones, with remainders, so every loop and every remainder runs.
+constexpr uint32_t kFillMax = 520;
 
 /// One digest of `fill` over every length 0..kFillMax from an odd and an even 16-bit element, each
 /// with guard elements on both sides (an overrun or a missed element changes it).
