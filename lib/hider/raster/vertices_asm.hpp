@@ -50,14 +50,14 @@ inline VertexPrep vertex_prep(const View& v) {
 /// 255 w 2^14 by 16-bit parts, then the three quotients by w from one estimate of 2^48 / (w normalised)
 /// (reciprocal_word()'s table and Newton step): the screen coordinates from one estimate each, n 2^31 / w
 /// in two 16-bit digits, every estimate corrected against its exact remainder. Stack: the position's
-/// halves, x y w, the guard, the shift, the normalised w and the estimate, the pointers (80 bytes).
+/// low halves, x y w, the guard, the shift, the normalised w and the estimate, the pointers (80 bytes).
 __attribute__((naked, noinline)) inline const Vec3q16* project_common_v6m(const detail::VertexPrep*, const Vec3q16*,
                                                                           ScreenVertex*, const Vec3q16*) {
     __asm__ volatile(
         ".syntax unified\n\t"
-        // One rotation row at offset \o of the constants (r7) times the position halves on the stack
-        // (ph 0..8, pl 12..20) plus the translation, floored: 4 sum(rh ph) + floor((sum(rh pl + rl ph)
-        // + floor(sum(rl pl) / 2^16)) / 2^14) + t. Result in r0; scratch r1..r4.
+        // One rotation row at offset \o of the constants (r7) times the position halves (ph in r4 r5 r6,
+        // pl on the stack at 12..20) plus the translation, floored: 4 sum(rh ph) + floor((sum(rh pl + rl ph)
+        // + floor(sum(rl pl) / 2^16)) / 2^14) + t. Result in r0; scratch r1..r3.
         ".macro hider_row o\n\t"
         "ldr    r0, [r7, #(\\o + 12)]\n\t"
         "ldr    r1, [sp, #12]\n\t"
@@ -82,7 +82,6 @@ __attribute__((naked, noinline)) inline const Vec3q16* project_common_v6m(const 
         "ldr    r3, [sp, #12]\n\t"
         "muls   r2, r3, r2\n\t"                 // rh0 pl0
         "ldr    r3, [r7, #(\\o + 12)]\n\t"
-        "ldr    r4, [sp, #0]\n\t"
         "muls   r3, r4, r3\n\t"                 // rl0 ph0
         "adds   r2, r2, r3\n\t"
         "asrs   r3, r2, #31\n\t"
@@ -92,8 +91,7 @@ __attribute__((naked, noinline)) inline const Vec3q16* project_common_v6m(const 
         "ldr    r3, [sp, #16]\n\t"
         "muls   r2, r3, r2\n\t"                 // rh1 pl1
         "ldr    r3, [r7, #(\\o + 16)]\n\t"
-        "ldr    r4, [sp, #4]\n\t"
-        "muls   r3, r4, r3\n\t"                 // rl1 ph1
+        "muls   r3, r5, r3\n\t"                 // rl1 ph1
         "adds   r2, r2, r3\n\t"
         "asrs   r3, r2, #31\n\t"
         "adds   r0, r0, r2\n\t"
@@ -102,8 +100,7 @@ __attribute__((naked, noinline)) inline const Vec3q16* project_common_v6m(const 
         "ldr    r3, [sp, #20]\n\t"
         "muls   r2, r3, r2\n\t"                 // rh2 pl2
         "ldr    r3, [r7, #(\\o + 20)]\n\t"
-        "ldr    r4, [sp, #8]\n\t"
-        "muls   r3, r4, r3\n\t"                 // rl2 ph2
+        "muls   r3, r6, r3\n\t"                 // rl2 ph2
         "adds   r2, r2, r3\n\t"
         "asrs   r3, r2, #31\n\t"
         "adds   r0, r0, r2\n\t"
@@ -112,15 +109,12 @@ __attribute__((naked, noinline)) inline const Vec3q16* project_common_v6m(const 
         "lsls   r1, r1, #18\n\t"
         "orrs   r0, r1\n\t"                     // floor(/ 2^14)
         "ldr    r1, [r7, #(\\o + 0)]\n\t"
-        "ldr    r2, [sp, #0]\n\t"
-        "muls   r1, r2, r1\n\t"                 // rh0 ph0
+        "muls   r1, r4, r1\n\t"                 // rh0 ph0
         "ldr    r2, [r7, #(\\o + 4)]\n\t"
-        "ldr    r3, [sp, #4]\n\t"
-        "muls   r2, r3, r2\n\t"
+        "muls   r2, r5, r2\n\t"
         "adds   r1, r1, r2\n\t"
         "ldr    r2, [r7, #(\\o + 8)]\n\t"
-        "ldr    r3, [sp, #8]\n\t"
-        "muls   r2, r3, r2\n\t"
+        "muls   r2, r6, r2\n\t"
         "adds   r1, r1, r2\n\t"
         "lsls   r1, r1, #2\n\t"
         "adds   r0, r0, r1\n\t"
@@ -214,16 +208,13 @@ __attribute__((naked, noinline)) inline const Vec3q16* project_common_v6m(const 
         "b      90f\n"
         "11:\n\t"
         "ldm    r0!, {r1, r2, r3}\n\t"
-        "asrs   r4, r1, #16\n\t"
-        "str    r4, [sp, #0]\n\t"
+        "asrs   r4, r1, #16\n\t"              // ph in r4 r5 r6, pl on the stack
         "uxth   r1, r1\n\t"
         "str    r1, [sp, #12]\n\t"
-        "asrs   r4, r2, #16\n\t"
-        "str    r4, [sp, #4]\n\t"
+        "asrs   r5, r2, #16\n\t"
         "uxth   r2, r2\n\t"
         "str    r2, [sp, #16]\n\t"
-        "asrs   r4, r3, #16\n\t"
-        "str    r4, [sp, #8]\n\t"
+        "asrs   r6, r3, #16\n\t"
         "uxth   r3, r3\n\t"
         "str    r3, [sp, #20]\n\t"
         "hider_row 0\n\t"
