@@ -6,6 +6,8 @@
 // - kernelcheck::kVertexCases batches of positions (vertex_cases.hpp) through project_vertices() (on
 //   ARMv6-M the Thumb-1 loop, elsewhere project_common()) and the general per-position path: same
 //   vertices; on ARMv6-M the loop must also refuse no position inside the view volume with w < 2^29.
+// - kernelcheck::kDrawCases random small scenes (draw_cases.hpp) through draw_flat_kernel() with and
+//   without the Thumb-1 draw loop (on ARMv6-M; elsewhere both are the C++ loop): same frame and counts.
 // - The frame clear (detail::fill, store-multiples on Cortex-M) against a plain loop for every length up
 //   to kFillMax.
 // The chip's digests go to kernelcheck.bin, which the host twin writes from the portable code (ctest
@@ -13,12 +15,14 @@
 #include "common/bench.hpp"
 #include "kernelcheck/cases.hpp"
 #include "kernelcheck/setup_cases.hpp"
+#include "kernelcheck/draw_cases.hpp"
 #include "kernelcheck/vertex_cases.hpp"
 #include "semihost/semihost.hpp"
 
 namespace {
 
-constexpr int kWords = kernelcheck::kCases + kernelcheck::kSetupCases + kernelcheck::kVertexCases + 1;  // the last: fill
+constexpr int kDrawAt = kernelcheck::kCases + kernelcheck::kSetupCases + kernelcheck::kVertexCases;
+constexpr int kWords = kDrawAt + kernelcheck::kDrawCases + 1;  // the last word: the fill digest
 kernelcheck::Buffers g_buffers;
 uint32_t g_digests[kWords];
 
@@ -90,6 +94,22 @@ int main() {
         }
         return 1;
     }
+    const int draw_case = kernelcheck::run_draw_cases(
+        [](const hider::View& v, const hider::Mesh& m, const hider::ScreenVertex* verts,
+           const hider::FrameView<hider::Rgb565Format, uint16_t>& f, const hider::DrawOptions& o, hider::FrameStats& st) {
+            hider::detail::draw_flat_kernel<hider::Rgb565Format, true>(v, m, {verts, kernelcheck::kVertexBatch}, f, o, st);
+        },
+        [](const hider::View& v, const hider::Mesh& m, const hider::ScreenVertex* verts,
+           const hider::FrameView<hider::Rgb565Format, uint16_t>& f, const hider::DrawOptions& o, hider::FrameStats& st) {
+            hider::detail::draw_flat_kernel<hider::Rgb565Format, false>(v, m, {verts, kernelcheck::kVertexBatch}, f, o, st);
+        },
+        g_buffers, g_digests + kDrawAt);
+    if (draw_case >= 0) {
+        sh::print("kernelcheck: the draw loop differs from the C++ loop in case ");
+        sh::print_u32(static_cast<uint32_t>(draw_case));
+        sh::print("\n");
+        return 1;
+    }
     g_digests[kWords - 1] = kernelcheck::fill_digest(
         [](uint16_t* p, uint32_t n, uint16_t v) { hider::detail::fill<uint16_t>(p, n, v); }, g_buffers);
     if (g_digests[kWords - 1] != kernelcheck::fill_digest(kernelcheck::fill_plain, g_buffers)) {
@@ -106,7 +126,9 @@ int main() {
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kSetupCases));
     sh::print(" set-ups equal the portable code, ");
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kVertexCases * kernelcheck::kVertexBatch));
-    sh::print(" positions the per-position path");
+    sh::print(" positions the per-position path, ");
+    sh::print_u32(static_cast<uint32_t>(kernelcheck::kDrawCases));
+    sh::print(" scenes the C++ draw loop");
 #if defined(__ARM_ARCH_6M__)
     sh::print(" (the Thumb-1 loop projected ");
     sh::print_u32(accepted);

@@ -43,6 +43,11 @@ public:
         return {scale(opt_.base.r), scale(opt_.base.g), scale(opt_.base.b)};
     }
 
+    /// The headlight's constants (for the Thumb-1 draw loop, raster/draw_loop_asm.hpp): the third row of
+    /// the view rotation in Q14, and the options.
+    int32_t view_z(int j) const { return view_z_[j]; }
+    const DrawOptions& options() const { return opt_; }
+
     /// Rgb565Format::pack(color(mesh, t, front)), the headlight with normals computed in place (the row
     /// kernel's draw loops call it per drawn triangle).
     __attribute__((always_inline)) uint16_t color565(const Mesh& mesh, size_t t, bool front) const {

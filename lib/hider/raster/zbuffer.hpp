@@ -2,6 +2,7 @@
 // snapped screen area, flat shading, then TriangleRaster rows into span_depth_test. Works on any band
 // of rows; drawing every band of a frame gives exactly the bytes of drawing the whole frame.
 #pragma once
+#include <hider/raster/draw_loop_asm.hpp>
 #include <hider/raster/kernel_triangle.hpp>
 #include <hider/raster/span.hpp>
 #include <hider/raster/triangle.hpp>
@@ -98,14 +99,21 @@ uint32_t scan_depth_tested(const TriangleRaster& tr, int32_t y_begin, int32_t y_
     }
 }
 
+template <class T, class U> struct is_same_type { static constexpr bool value = false; };
+template <class T> struct is_same_type<T, T> { static constexpr bool value = true; };
+
+/// for_each_drawable()'s scan that leaves every triangle to its own loop.
+struct EveryTriangle {};
+
 /// The z-buffer's triangle loop: trivial reject, clip (rare), cull by the sign of the snapped area,
 /// then draw(a, b, c, area, t) for each drawable triangle, in mesh order. Counts culled, clipped and
-/// outside triangles in `st` (culled ones only in the band holding their first row).
-template <class Draw>
+/// outside triangles in `st` (culled ones only in the band holding their first row). scan(t) returns the
+/// next triangle from t on that this loop handles (the Thumb-1 draw loop does the ones before it itself).
+template <class Draw, class Scan>
 __attribute__((always_inline)) inline void for_each_drawable(const View& view, const Mesh& mesh,
                                                              Span<const ScreenVertex> verts, bool cull, const BandBounds& bb,
                                                              bool whole_frame, int32_t band_y0, int32_t band_y1,
-                                                             int32_t height, FrameStats& st, Draw&& draw) {
+                                                             int32_t height, FrameStats& st, Draw&& draw, Scan&& scan) {
     // Loop invariants in locals, captured by value: the lambdas capture st by reference, so GCC would
     // reload them (and the flags behind references) per triangle.
     const Tri* const tris = mesh.tris.data();
@@ -130,23 +138,36 @@ __attribute__((always_inline)) inline void for_each_drawable(const View& view, c
         return true;
     };
     st.triangles_in = static_cast<uint32_t>(tri_count);
-    const Tri* tri_p = tris;
-    for (size_t t = 0; t < tri_count; ++t, ++tri_p) {
-        const Tri& tri = *tri_p;
+    auto one = [&](const Tri& tri, size_t t) __attribute__((always_inline)) {
         const ScreenVertex& a = vp[tri.v[0]];
         const ScreenVertex& b = vp[tri.v[1]];
         const ScreenVertex& c = vp[tri.v[2]];
         if (a.z != 0 && b.z != 0 && c.z != 0) {  // drawable vertices: the common case, no call for culled faces
             const int32_t area = TriangleRaster::signed_area(a, b, c);
             if (keep(a, b, c, area)) draw(a, b, c, area, t);
-            continue;
+            return;
         }
         for_each_clipped(view, mesh, verts, t, st, [&](const ScreenVertex& pa, const ScreenVertex& pb,
                                                              const ScreenVertex& pc) {
             const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
             if (keep(pa, pb, pc, area)) draw(pa, pb, pc, area, t);
         });
+    };
+    if constexpr (is_same_type<Scan, EveryTriangle>::value) {  // walked by pointer
+        const Tri* tri_p = tris;
+        for (size_t t = 0; t < tri_count; ++t, ++tri_p) one(*tri_p, t);
+    } else {
+        for (size_t t = scan(size_t{0}); t < tri_count; t = scan(t + 1)) one(tris[t], t);
     }
+}
+
+/// for_each_drawable() over every triangle.
+template <class Draw>
+__attribute__((always_inline)) inline void for_each_drawable(const View& view, const Mesh& mesh,
+                                                             Span<const ScreenVertex> verts, bool cull, const BandBounds& bb,
+                                                             bool whole_frame, int32_t band_y0, int32_t band_y1,
+                                                             int32_t height, FrameStats& st, Draw&& draw) {
+    for_each_drawable(view, mesh, verts, cull, bb, whole_frame, band_y0, band_y1, height, st, draw, EveryTriangle{});
 }
 
 /// One drawable triangle through TriangleRaster and the depth-tested span (any format, shader, band).
@@ -169,12 +190,12 @@ void draw_raster(const ScreenVertex& a, const ScreenVertex& b, const ScreenVerte
         FlatShader<typename Format::Pixel>{Format::pack(shading.color(mesh, t, tr.front()))}, st.pixels_written);
 }
 
-template <class T, class U> struct is_same_type { static constexpr bool value = false; };
-template <class T> struct is_same_type<T, T> { static constexpr bool value = true; };
-
 /// The flat RGB565 + 16-bit depth path without fragment counting: triangles inside the frame's columns
-/// are set up straight into the row kernel (kernel_triangle.hpp), the others take draw_raster().
-template <class Format>
+/// are set up straight into the row kernel (kernel_triangle.hpp), the others take draw_raster(). On
+/// ARMv6-M, whole frames with headlight normals go through the Thumb-1 draw loop (draw_loop_asm.hpp),
+/// which hands clipped and generic triangles back to this loop; kAsmLoop false keeps it out (the
+/// kernelcheck firmware compares both).
+template <class Format, bool kAsmLoop = true>
 void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
                       const FrameView<Format, uint16_t>& frame, const DrawOptions& opt, FrameStats& st) {
     const BandBounds bb = band_bounds(frame);
@@ -189,9 +210,8 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
     const int32_t stride = frame.stride, y0 = frame.y0, y1 = frame.y1, height = frame.height;
     KernelTriangle kt;
     KernelSetupIo io{&band, 0, &kt};
-    for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st,
-                      [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, size_t t)
-                          __attribute__((always_inline)) {
+    auto draw = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, size_t t)
+                    __attribute__((always_inline)) {
         io.area = area;
         const KernelSetup s = kernel_setup(a, b, c, io);
         if (s == KernelSetup::none) return;
@@ -205,7 +225,21 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
         if constexpr (is_same_type<Format, Rgb565Format>::value) kt.k.color = shading.color565(mesh, t, area < 0);
         else kt.k.color = Format::pack(shading.color(mesh, t, area < 0));
         run_kernel_triangle(kt, depth + static_cast<ptrdiff_t>(kt.row - y0) * stride, y1, target);
-    });
+    };
+#if defined(__ARM_ARCH_6M__)
+    if constexpr (kAsmLoop && is_same_type<Format, Rgb565Format>::value) {
+        if (whole_frame && opt.shade == Shade::headlight && !mesh.normals.empty()) {
+            const Tri* const tris = mesh.tris.data();
+            DrawLoopV6m d = draw_loop_v6m(tris, mesh, verts, shading, opt.cull, io, depth, y0, stride, y1, target);
+            for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st, draw,
+                              [&](size_t t) { return static_cast<size_t>(draw_flat_v6m(tris + t, &d) - tris); });
+            st.triangles_culled += d.culled;
+            st.triangles_drawn += d.drawn;
+            return;
+        }
+    }
+#endif
+    for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st, draw);
 }
 
 }  // namespace detail
