@@ -218,7 +218,8 @@ private:
         if (next_head_ != nullptr) insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
     }
 
-    void piece(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint16_t tri, bool whole) {
+    __attribute__((always_inline)) void piece(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                                              uint16_t tri, bool whole) {
         const int32_t area = TriangleRaster::signed_area(a, b, c);
         if (area == 0 || (opt_.cull && area > 0)) return;
         const bool slot = whole && cs_.free_top != free_base_;
