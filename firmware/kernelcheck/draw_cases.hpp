@@ -2,7 +2,7 @@
 // up to 24 x 24 pixels (random camera, field of view, near and far) and kDrawTriangles triangles over
 // kVertexBatch positions placed around it (mostly on screen, some past the guard band or behind the eye,
 // so some triangles are clipped), with random normals, culled or not. run_draw_cases() draws each case
-// into kernelcheck's buffers with draw_flat_kernel() through `draw` (on ARMv6-M the Thumb-1 draw loop)
+// into kernelcheck's buffers with draw_flat_kernel() through `draw` (on Cortex-M the assembly draw loop)
 // and through `twin` (the C++ loop) and folds the frame and the statistics into one digest per case.
 #pragma once
 #include <hider/raster/zbuffer.hpp>

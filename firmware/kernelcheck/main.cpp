@@ -7,7 +7,8 @@
 //   ARMv6-M the Thumb-1 loop, elsewhere project_common()) and the general per-position path: same
 //   vertices; on ARMv6-M the loop must also refuse no position inside the view volume with w < 2^29.
 // - kernelcheck::kDrawCases random small scenes (draw_cases.hpp) through draw_flat_kernel() with and
-//   without the Thumb-1 draw loop (on ARMv6-M; elsewhere both are the C++ loop): same frame and counts.
+//   without the assembly draw loop (Thumb-1 on ARMv6-M, Thumb-2 on ARMv7-M; on RV32 both are the C++
+//   loop): same frame and counts.
 // - The frame clear (detail::fill, store-multiples on Cortex-M) against a plain loop for every length up
 //   to kFillMax.
 // The chip's digests go to kernelcheck.bin, which the host twin writes from the portable code (ctest

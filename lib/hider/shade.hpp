@@ -43,7 +43,7 @@ public:
         return {scale(opt_.base.r), scale(opt_.base.g), scale(opt_.base.b)};
     }
 
-    /// The headlight's constants (for the Thumb-1 draw loop, raster/draw_loop_asm.hpp): the third row of
+    /// The headlight's constants (for the Cortex-M draw loops, raster/draw_loop_asm.hpp): the third row of
     /// the view rotation in Q14, and the options.
     int32_t view_z(int j) const { return view_z_[j]; }
     const DrawOptions& options() const { return opt_; }

@@ -192,7 +192,7 @@ void draw_raster(const ScreenVertex& a, const ScreenVertex& b, const ScreenVerte
 
 /// The flat RGB565 + 16-bit depth path without fragment counting: triangles inside the frame's columns
 /// are set up straight into the row kernel (kernel_triangle.hpp), the others take draw_raster(). On
-/// ARMv6-M, whole frames with headlight normals go through the Thumb-1 draw loop (draw_loop_asm.hpp),
+/// Cortex-M, whole frames with headlight normals go through the assembly draw loop (draw_loop_asm.hpp),
 /// which hands clipped and generic triangles back to this loop; kAsmLoop false keeps it out (the
 /// kernelcheck firmware compares both).
 template <class Format, bool kAsmLoop = true>
@@ -226,13 +226,18 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
         else kt.k.color = Format::pack(shading.color(mesh, t, area < 0));
         run_kernel_triangle(kt, depth + static_cast<ptrdiff_t>(kt.row - y0) * stride, y1, target);
     };
-#if defined(__ARM_ARCH_6M__)
+#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
     if constexpr (kAsmLoop && is_same_type<Format, Rgb565Format>::value) {
         if (whole_frame && opt.shade == Shade::headlight && !mesh.normals.empty()) {
             const Tri* const tris = mesh.tris.data();
-            DrawLoopV6m d = draw_loop_v6m(tris, mesh, verts, shading, opt.cull, io, depth, y0, stride, y1, target);
-            for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st, draw,
-                              [&](size_t t) { return static_cast<size_t>(draw_flat_v6m(tris + t, &d) - tris); });
+            DrawLoopArm d = draw_loop_arm(tris, mesh, verts, shading, opt.cull, io, depth, y0, stride, y1, target);
+            for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st, draw, [&](size_t t) {
+#if defined(__ARM_ARCH_6M__)
+                return static_cast<size_t>(draw_flat_v6m(tris + t, &d) - tris);
+#else
+                return static_cast<size_t>(draw_flat_v7m(tris + t, &d) - tris);
+#endif
+            });
             st.triangles_culled += d.culled;
             st.triangles_drawn += d.drawn;
             return;
