@@ -73,7 +73,11 @@ TEST_CASE("project_common gives project()'s vertex for every point inside the vi
             // w: around near and far, small, large, or anywhere between
             switch (rng() % 6) {
                 case 0: p.w = view.near_raw + static_cast<int32_t>(rng() % 5) - 2; break;
-                case 1: p.w = view.far_raw - static_cast<int32_t>(rng() % 5) + 2; break;
+                case 1: {  // far + 2 may pass INT32_MAX: clamped in 64 bits (ASan/UBSan build)
+                    const int64_t w = int64_t{view.far_raw} - static_cast<int64_t>(rng() % 5) + 2;
+                    p.w = static_cast<int32_t>(w > INT32_MAX ? INT32_MAX : w);
+                    break;
+                }
                 case 2: p.w = static_cast<int32_t>(rng() % 0x20000u); break;
                 case 3: p.w = (int32_t{1} << 30) + static_cast<int32_t>(rng() % 5) - 2; break;
                 default: p.w = view.near_raw + static_cast<int32_t>(rng() % static_cast<uint32_t>(view.far_raw - view.near_raw + 1));
