@@ -184,7 +184,8 @@ public:
         const uint8_t* const band_cur = cs_.cur;
         uint8_t* const band_nxt = cs_.nxt;
         for (uint16_t t = head_[b];;) {
-            resume_carried(cs_, t, bt_);  // the carried triangles before t, in mesh order
+            if (cs_.cur != cs_.cur_end && pool_[*cs_.cur].tri < t)
+                resume_carried(cs_, t, bt_);  // the carried triangles before t, in mesh order
             if (t == kNoTriangle) break;
             const uint16_t tri = t;
             t = next_[t];
