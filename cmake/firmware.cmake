@@ -26,7 +26,7 @@ set(HIDER_INSNCOUNT_DIR ${PROJECT_SOURCE_DIR}/tools/qemu-insncount CACHE INTERNA
 set(HIDER_INSNCOUNT_PLUGIN ${CMAKE_BINARY_DIR}/tools/qemu-insncount/libinsncount.so CACHE INTERNAL "")
 add_custom_command(OUTPUT ${HIDER_INSNCOUNT_PLUGIN}
   COMMAND ${HIDER_HOST_CC} -O2 -shared -fPIC -Wall -Wextra -o ${HIDER_INSNCOUNT_PLUGIN} ${HIDER_INSNCOUNT_DIR}/insncount.c
-  DEPENDS ${HIDER_INSNCOUNT_DIR}/insncount.c
+  DEPENDS ${HIDER_INSNCOUNT_DIR}/insncount.c ${HIDER_INSNCOUNT_DIR}/arm_cycles.h
   COMMENT "Building QEMU plugin libinsncount.so with the host C compiler" VERBATIM)
 add_custom_target(qemu_insncount ALL DEPENDS ${HIDER_INSNCOUNT_PLUGIN})
 

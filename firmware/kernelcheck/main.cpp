@@ -1,46 +1,140 @@
-// kernelcheck firmware (big machine): kernelcheck::kCases random row-kernel states (cases.hpp) run through
-// run_row_kernel() (the Thumb-2 loop on ARMv7-M) and through run_row_kernel_portable(); every case must
-// give the same buffers and final state. Then the frame clear (detail::fill, store-multiples on Cortex-M)
-// against a plain loop for every length up to kFillMax. The digests go to kernelcheck.bin, which the
-// host twin writes from the portable kernel and the plain loop (ctest kernelcheck.matches_host).
+// kernelcheck firmware: the chip's assembly against its portable twins, on random states.
+// - kernelcheck::kCases kernel states (cases.hpp) through run_kernel_triangle() (Thumb-2, Thumb-1 or RV32
+//   assembly) and run_kernel_triangle_portable(), two calls each: same buffers and final state.
+// - kernelcheck::kSetupCases triangle set-ups (setup_cases.hpp) through kernel_setup() (the Thumb-2 set-up
+//   on ARMv7-M) and kernel_setup_portable(): same outcome and kernel fields for every case.
+// - kernelcheck::kVertexCases batches of positions (vertex_cases.hpp) through project_vertices() (on
+//   ARMv6-M the Thumb-1 loop, elsewhere project_common()) and the general per-position path: same
+//   vertices; on ARMv6-M the loop must also refuse no position inside the view volume with w < 2^29.
+// - kernelcheck::kDrawCases random small scenes (draw_cases.hpp) through draw_flat_kernel() with and
+//   without the assembly draw loop (Thumb-1 on ARMv6-M, Thumb-2 on ARMv7-M; on RV32 both are the C++
+//   loop): same frame and counts.
+// - The frame clear (detail::fill, store-multiples on Cortex-M) against a plain loop for every length up
+//   to kFillMax.
+// The chip's digests go to kernelcheck.bin, which the host twin writes from the portable code (ctest
+// kernelcheck.matches_host).
 #include "common/bench.hpp"
 #include "kernelcheck/cases.hpp"
+#include "kernelcheck/setup_cases.hpp"
+#include "kernelcheck/draw_cases.hpp"
+#include "kernelcheck/vertex_cases.hpp"
 #include "semihost/semihost.hpp"
 
 namespace {
 
+constexpr int kDrawAt = kernelcheck::kCases + kernelcheck::kSetupCases + kernelcheck::kVertexCases;
+constexpr int kWords = kDrawAt + kernelcheck::kDrawCases + 1;  // the last word: the fill digest
 kernelcheck::Buffers g_buffers;
-uint32_t g_fast[kernelcheck::kCases + 1];  // the last word: the fill digest
-uint32_t g_portable[kernelcheck::kCases];
+uint32_t g_digests[kWords];
 
 }  // namespace
 
 int main() {
     namespace sh = hider::semihost;
-    bench_begin();
-    kernelcheck::run_cases([](hider::RowKernel& k) { hider::run_row_kernel(k); }, g_buffers, g_fast);
-    bench_end();
-    kernelcheck::run_cases([](hider::RowKernel& k) { hider::run_row_kernel_portable(k); }, g_buffers, g_portable);
-    for (int c = 0; c < kernelcheck::kCases; ++c) {
-        if (g_fast[c] != g_portable[c]) {
-            sh::print("kernelcheck: run_row_kernel differs from the portable kernel in case ");
-            sh::print_u32(static_cast<uint32_t>(c));
-            sh::print("\n");
-            return 1;
-        }
+    const int kernel_case = kernelcheck::run_cases(
+        [](hider::KernelTriangle& t, uint16_t* zrow, int32_t stop, const hider::KernelTarget& target) {
+            return hider::run_kernel_triangle(t, zrow, stop, target);
+        },
+        [](hider::KernelTriangle& t, uint16_t* zrow, int32_t stop, const hider::KernelTarget& target) {
+            return hider::run_kernel_triangle_portable(t, zrow, stop, target);
+        },
+        g_buffers, g_digests);
+    if (kernel_case >= 0) {
+        sh::print("kernelcheck: run_kernel_triangle differs from the portable kernel in case ");
+        sh::print_u32(static_cast<uint32_t>(kernel_case));
+        sh::print("\n");
+        return 1;
     }
-    g_fast[kernelcheck::kCases] = kernelcheck::fill_digest(
+    const int setup_case = kernelcheck::run_setup_cases(
+        [](const hider::ScreenVertex& a, const hider::ScreenVertex& b, const hider::ScreenVertex& c,
+           hider::KernelSetupIo& io) { return hider::kernel_setup(a, b, c, io); },
+        [](const hider::ScreenVertex& a, const hider::ScreenVertex& b, const hider::ScreenVertex& c,
+           hider::KernelSetupIo& io) { return hider::kernel_setup_portable(a, b, c, io.area, *io.band, *io.out); },
+        g_digests + kernelcheck::kCases);
+    if (setup_case >= 0) {
+        sh::print("kernelcheck: kernel_setup differs from kernel_setup_portable in case ");
+        sh::print_u32(static_cast<uint32_t>(setup_case));
+        sh::print("\n");
+        return 1;
+    }
+    uint32_t refused_inside = 0, accepted = 0;
+    const int vertex_case = kernelcheck::run_vertex_cases(
+        [](const hider::View& v, const hider::Vec3q16* p, hider::ScreenVertex* out) {
+            (void)hider::project_vertices(v, {p, kernelcheck::kVertexBatch}, {out, kernelcheck::kVertexBatch});
+        },
+        kernelcheck::project_each,
+        [&](const kernelcheck::VertexCase& c) {
+#if defined(__ARM_ARCH_6M__)
+            // Walk the Thumb-1 loop itself: every position it stops at must be one it may refuse.
+            static hider::ScreenVertex out[kernelcheck::kVertexBatch];
+            const hider::detail::VertexPrep prep = hider::detail::vertex_prep(c.view);
+            const hider::Vec3q16* const end = c.p + kernelcheck::kVertexBatch;
+            for (const hider::Vec3q16* p = c.p; p != end; ++p) {
+                const hider::Vec3q16* const stop = hider::project_common_v6m(&prep, p, out + (p - c.p), end);
+                accepted += static_cast<uint32_t>(stop - p);
+                if ((p = stop) == end) break;
+                const hider::ViewPoint q = hider::to_view_point(c.view, *p);
+                refused_inside += hider::outcode(c.view, q) == 0 && q.w < (int32_t{1} << 29);
+            }
+#else
+            (void)c;
+            (void)accepted;
+#endif
+        },
+        g_digests + kernelcheck::kCases + kernelcheck::kSetupCases);
+    if (vertex_case >= 0 || refused_inside != 0) {
+        if (vertex_case >= 0) {
+            sh::print("kernelcheck: project_vertices differs from the per-position path in case ");
+            sh::print_u32(static_cast<uint32_t>(vertex_case));
+            sh::print("\n");
+        }
+        if (refused_inside != 0) {
+            sh::print("kernelcheck: the vertex loop refused ");
+            sh::print_u32(refused_inside);
+            sh::print(" positions inside the view volume\n");
+        }
+        return 1;
+    }
+    const int draw_case = kernelcheck::run_draw_cases(
+        [](const hider::View& v, const hider::Mesh& m, const hider::ScreenVertex* verts,
+           const hider::FrameView<hider::Rgb565Format, uint16_t>& f, const hider::DrawOptions& o, hider::FrameStats& st) {
+            hider::detail::draw_flat_kernel<hider::Rgb565Format, true>(v, m, {verts, kernelcheck::kVertexBatch}, f, o, st);
+        },
+        [](const hider::View& v, const hider::Mesh& m, const hider::ScreenVertex* verts,
+           const hider::FrameView<hider::Rgb565Format, uint16_t>& f, const hider::DrawOptions& o, hider::FrameStats& st) {
+            hider::detail::draw_flat_kernel<hider::Rgb565Format, false>(v, m, {verts, kernelcheck::kVertexBatch}, f, o, st);
+        },
+        g_buffers, g_digests + kDrawAt);
+    if (draw_case >= 0) {
+        sh::print("kernelcheck: the draw loop differs from the C++ loop in case ");
+        sh::print_u32(static_cast<uint32_t>(draw_case));
+        sh::print("\n");
+        return 1;
+    }
+    g_digests[kWords - 1] = kernelcheck::fill_digest(
         [](uint16_t* p, uint32_t n, uint16_t v) { hider::detail::fill<uint16_t>(p, n, v); }, g_buffers);
-    if (g_fast[kernelcheck::kCases] != kernelcheck::fill_digest(kernelcheck::fill_plain, g_buffers)) {
+    if (g_digests[kWords - 1] != kernelcheck::fill_digest(kernelcheck::fill_plain, g_buffers)) {
         sh::print("kernelcheck: the frame clear (detail::fill) differs from a plain loop\n");
         return 1;
     }
-    if (!sh::write_file("kernelcheck.bin", g_fast, sizeof g_fast)) {
+    if (!sh::write_file("kernelcheck.bin", g_digests, sizeof g_digests)) {
         sh::print("kernelcheck: cannot write kernelcheck.bin\n");
         return 1;
     }
     sh::print("kernelcheck: ");
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kCases));
-    sh::print(" cases, the target's row kernel equals the portable one; the clear equals a plain loop\n");
+    sh::print(" kernel cases and ");
+    sh::print_u32(static_cast<uint32_t>(kernelcheck::kSetupCases));
+    sh::print(" set-ups equal the portable code, ");
+    sh::print_u32(static_cast<uint32_t>(kernelcheck::kVertexCases * kernelcheck::kVertexBatch));
+    sh::print(" positions the per-position path, ");
+    sh::print_u32(static_cast<uint32_t>(kernelcheck::kDrawCases));
+    sh::print(" scenes the C++ draw loop");
+#if defined(__ARM_ARCH_6M__)
+    sh::print(" (the Thumb-1 loop projected ");
+    sh::print_u32(accepted);
+    sh::print(")");
+#endif
+    sh::print("; the clear equals a plain loop\n");
     return 0;
 }

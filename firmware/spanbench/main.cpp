@@ -1,6 +1,6 @@
 // spanbench firmware (big machine): one call of a z-buffer inner span for RGB565 pixels and uint16_t depth
 // (flat colour) on pixels [0, kPixels) of a row: span_depth_test_paired<false>, or with
-// HIDER_SPANBENCH_KERNEL run_row_kernel() for one row (what draw_zbuffer runs for triangles inside the
+// HIDER_SPANBENCH_KERNEL run_kernel_triangle() for one row (what draw_zbuffer runs for triangles inside the
 // frame's columns), bracketed by bench_begin() /
 // bench_end(). The case (HIDER_SPANBENCH_PIXELS, HIDER_SPANBENCH_PASS) is fixed per ELF by CMake, so
 // the plugin's one region count is one call; hider-bench targets derives instructions per pixel as
@@ -77,20 +77,22 @@ int main() {
     const intptr_t offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(crow) - reinterpret_cast<uintptr_t>(zrow));
     uint32_t written = 0;
     if constexpr (kKernel) {
-        hider::RowKernel k{};  // one row [0, x1); edges that do not move (m = q = 0)
-        k.lpx = 0;
-        k.rpx = x1;
+        hider::KernelTriangle t{};  // one row [0, x1); edges that do not move (m = q = 0); no middle row
+        t.row = 0;
+        t.mid = -1;
+        t.end = 1;
+        hider::RowKernel& k = t.k;
+        k.lx = 0;
+        k.rx = 2 * x1;
+        k.lstep = k.rstep = 2 * kRowPixels;
         k.la = k.ra = 16;
         k.lg = k.rg = -16;  // biased error terms in [-a, 0): no correction
         k.lz = z_q32;
-        k.rows = 1;
-        k.stride_bytes = 2 * kRowPixels;
-        k.zrow = zrow;
-        k.dz = dz_q32;
-        k.color_offset = offset;
+        k.dzdx = dz_q32;
         k.color = shader.color;
+        const hider::KernelTarget target{offset, 2 * kRowPixels};
         bench_begin();
-        hider::run_row_kernel(k);
+        (void)hider::run_kernel_triangle(t, zrow, 1, target);
         bench_end();
     } else {
         const hider::PairedSpan<uint16_t, hider::FlatShader<uint16_t>> span{dz_q32, offset, shader};
@@ -104,7 +106,7 @@ int main() {
         sh::print("spanbench: the row is not what the depth test should give\n");
         return 1;
     }
-    sh::print(kKernel ? "spanbench: run_row_kernel, RGB565 + 16-bit depth, " : "spanbench: span_depth_test_paired<false>, RGB565 + 16-bit depth, ");
+    sh::print(kKernel ? "spanbench: run_kernel_triangle, RGB565 + 16-bit depth, " : "spanbench: span_depth_test_paired<false>, RGB565 + 16-bit depth, ");
     sh::print_u32(static_cast<uint32_t>(kPixels));
     sh::print(kPass ? " px, all pass\n" : " px, none pass\n");
     return 0;

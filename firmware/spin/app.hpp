@@ -72,4 +72,69 @@ int run(Io& io, const Scene& s, const FrameBuffers& buf, uint32_t frames, const 
     return 0;
 }
 
+/// One frame (frame 0) of `s` in three bench pairs: view set-up and projection, clear, draw; written as
+/// "<prefix>_000.ppm". Returns the exit status as run() does.
+template <class Io>
+int run_split(Io& io, const Scene& s, const FrameBuffers& buf, const char* prefix, hider::Span<hider::Tri> turned = {}) {
+    const Frame frame = hider::frame_view<hider::Rgb565Format, uint16_t>(buf.color, buf.depth, s.width, s.height);
+    hider::View view;
+    bench_begin();
+    hider::Status status = frame_view(s, 0, view);
+    if (status == hider::Status::ok) status = hider::project_vertices(view, s.mesh.positions, buf.verts);
+    bench_end();
+    bench_begin();
+    hider::clear(frame, kBackground);
+    bench_end();
+    hider::FrameStats st;
+    bench_begin();
+    if (status == hider::Status::ok) st = hider::draw_zbuffer<false>(view, s.mesh, buf.verts, frame, draw_options());
+    bench_end();
+    if (status != hider::Status::ok || !st.ok()) {
+        io.print("spin: render failed\n");
+        return 1;
+    }
+    char path[64];
+    frame_file_name(path, prefix, 0);
+    if (!write_frame_ppm(io, path, buf.color, s.width, s.height, buf.ppm_row)) {
+        io.print("spin: cannot write ");
+        io.print(path);
+        io.print("\n");
+        return 1;
+    }
+    io.print(path);
+    io.print(": triangles drawn ");
+    io.print_u32(st.triangles_drawn);
+    io.print(", culled ");
+    io.print_u32(st.triangles_culled);
+    io.print("\n");
+    if (turned.size() >= s.mesh.tris.size()) {
+        // A fourth pair: the same draw with every face turned away (each front face's winding reversed),
+        // so every triangle costs what a culled one does.
+        for (size_t t = 0; t < s.mesh.tris.size(); ++t) {
+            hider::Tri tri = s.mesh.tris[t];
+            const hider::ScreenVertex& a = buf.verts[tri.v[0]];
+            const hider::ScreenVertex& b = buf.verts[tri.v[1]];
+            const hider::ScreenVertex& c = buf.verts[tri.v[2]];
+            if (hider::TriangleRaster::signed_area(a, b, c) < 0) {
+                const uint16_t v = tri.v[1];
+                tri.v[1] = tri.v[2];
+                tri.v[2] = v;
+            }
+            turned[t] = tri;
+        }
+        hider::Mesh away = s.mesh;
+        away.tris = {turned.data(), s.mesh.tris.size()};
+        hider::clear(frame, kBackground);
+        bench_begin();
+        st = hider::draw_zbuffer<false>(view, away, buf.verts, frame, draw_options());
+        bench_end();
+        io.print("every face turned away: triangles drawn ");
+        io.print_u32(st.triangles_drawn);
+        io.print(", culled ");
+        io.print_u32(st.triangles_culled);
+        io.print("\n");
+    }
+    return 0;
+}
+
 }  // namespace spin

@@ -1,7 +1,7 @@
 // A BandSink that streams RGB565 rows as a binary PPM (P6, maxval 255) to an output, the way a display
 // driver would take them: each pixel expands to RGB888 by Rgb565Format::unpack (bit replication, as
-// port/host/ppm.hpp's append_rgb888), one row at a time through a caller-owned row buffer. The call
-// order is checked with BandSequenceChecker. Freestanding: firmware and host references share it.
+// port/host/ppm.hpp's append_rgb888), a row or a part of a row at a time through a caller-owned buffer.
+// The call order is checked with BandSequenceChecker. Freestanding: firmware and host references share it.
 #pragma once
 #include <hider/frame.hpp>
 
@@ -16,6 +16,10 @@ public:
     /// Borrows `out` and `row_rgb` (3 bytes per pixel of the widest frame accepted) for its lifetime.
     PpmSink(Output& out, hider::Span<uint8_t> row_rgb)
         : out_(out), row_(row_rgb), checker_(static_cast<uint16_t>(row_rgb.size() / 3)) {}
+    /// Borrows `out` and `chunk_rgb` (3 bytes a pixel, at least one pixel: rows go out in parts of that
+    /// many pixels) for its lifetime; accepts frames up to max_width pixels wide.
+    PpmSink(Output& out, hider::Span<uint8_t> chunk_rgb, uint16_t max_width)
+        : out_(out), row_(chunk_rgb), checker_(max_width) {}
 
     /// The sink to hand to a renderer; valid while this object lives.
     hider::port::BandSink sink() { return {this, &begin_thunk, &write_thunk, &end_thunk}; }
@@ -63,16 +67,21 @@ private:
         const hider::port::BandStatus s = checker_.write_rows(y0, count, rgb565, stride_px);
         if (s != hider::port::BandStatus::ok) return refuse(s);
         const uint16_t width = checker_.width();
+        const uint16_t chunk = static_cast<uint16_t>(hider::min<size_t>(row_.size() / 3, width));
+        if (chunk == 0) return refuse(hider::port::BandStatus::too_large);
         for (uint16_t r = 0; r < count; ++r) {
             const uint16_t* src = rgb565 + size_t{r} * stride_px;
-            uint8_t* dst = row_.data();
-            for (uint16_t x = 0; x < width; ++x, dst += 3) {
-                const hider::Rgb c = hider::Rgb565Format::unpack(src[x]);
-                dst[0] = c.r;
-                dst[1] = c.g;
-                dst[2] = c.b;
+            for (uint16_t x0 = 0; x0 < width; x0 = static_cast<uint16_t>(x0 + chunk)) {
+                const uint16_t n = hider::min<uint16_t>(chunk, static_cast<uint16_t>(width - x0));
+                uint8_t* dst = row_.data();
+                for (uint16_t x = x0; x < x0 + n; ++x, dst += 3) {
+                    const hider::Rgb c = hider::Rgb565Format::unpack(src[x]);
+                    dst[0] = c.r;
+                    dst[1] = c.g;
+                    dst[2] = c.b;
+                }
+                if (!out_.write(row_.data(), size_t{n} * 3)) return refuse(hider::port::BandStatus::not_ready);
             }
-            if (!out_.write(row_.data(), size_t{width} * 3)) return refuse(hider::port::BandStatus::not_ready);
         }
         return true;
     }

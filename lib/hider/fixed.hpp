@@ -179,6 +179,10 @@ struct ReciprocalTable {
 inline constexpr ReciprocalTable kReciprocalTable{};
 }  // namespace detail
 
+/// reciprocal_word()'s table, for assembly that starts the same way (raster/vertices_asm.hpp,
+/// raster/kernel_setup_asm.hpp).
+inline constexpr const uint16_t* kReciprocalTableData = detail::kReciprocalTable.v;
+
 /// floor((2^64 - 1) / d) - 2^32 for d with its top bit set (the reciprocal of Moller and Granlund)
 /// with 32-bit multiplies and no division: a table and one Newton step give 2^48 / d to about 16 bits,
 /// a remainder step with two 32-bit products refines it to a few units, and the exact 64-bit remainder

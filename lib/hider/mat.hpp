@@ -58,15 +58,23 @@ __attribute__((always_inline)) constexpr Q16 row_dot(const Q30 (&row)[3], const 
     return Q16::from_raw(dot3_q30_floor_by_parts(row[0].raw(), row[1].raw(), row[2].raw(), p.x.raw(), p.y.raw(),
                                                  p.z.raw()) + offset.raw());
 #else
+    // floor((sum + t 2^30) / 2^30) = floor(sum / 2^30) + t: the translation after the shift (one 32-bit
+    // add instead of building t 2^30 in 64 bits per point), modulo 2^32 like the 64-bit form.
     const int64_t acc = mul_wide(row[0].raw(), p.x.raw()) + mul_wide(row[1].raw(), p.y.raw()) +
-                        mul_wide(row[2].raw(), p.z.raw()) + int64_t{offset.raw()} * Q30::kOne;
-    return Q16::from_raw(static_cast<int32_t>(acc >> 30));
+                        mul_wide(row[2].raw(), p.z.raw());
+    return Q16::from_raw(static_cast<int32_t>(static_cast<uint32_t>(acc >> 30) + static_cast<uint32_t>(offset.raw())));
 #endif
 }
 }  // namespace detail
 
 /// Applies t to point p (rotation then translation), floored once per component.
 constexpr Vec3q16 apply(const Transform& t, const Vec3q16& p) {
+    return {detail::row_dot(t.rot.m[0], p, t.trans.x), detail::row_dot(t.rot.m[1], p, t.trans.y),
+            detail::row_dot(t.rot.m[2], p, t.trans.z)};
+}
+
+/// apply() forced inline, for a loop over many points that keeps its other work in registers.
+__attribute__((always_inline)) constexpr Vec3q16 apply_inline(const Transform& t, const Vec3q16& p) {
     return {detail::row_dot(t.rot.m[0], p, t.trans.x), detail::row_dot(t.rot.m[1], p, t.trans.y),
             detail::row_dot(t.rot.m[2], p, t.trans.z)};
 }

@@ -38,6 +38,25 @@ public:
         return opt_.shade == Shade::id ? id_color(id) : lit(normal, front);
     }
 
+    /// The headlight's constants (for the Cortex-M draw loops, raster/draw_loop_asm.hpp): the third row of
+    /// the view rotation in Q14, and the options.
+    int32_t view_z(int j) const { return view_z_[j]; }
+    const DrawOptions& options() const { return opt_; }
+
+    /// Rgb565Format::pack(color(mesh, t, front)), the headlight with normals computed in place (the row
+    /// kernel's draw loops call it per drawn triangle).
+    __attribute__((always_inline)) uint16_t color565(const Mesh& mesh, size_t t, bool front) const {
+        if (opt_.shade != Shade::headlight || mesh.normals.empty()) return Rgb565Format::pack(color(mesh, t, front));
+        const Normal14& n = mesh.normals[t];
+        int32_t b_q16 = (view_z_[0] * n.x + view_z_[1] * n.y + view_z_[2] * n.z) >> 12;
+        if (!front) b_q16 = -b_q16;
+        b_q16 = clamp<int32_t>(b_q16, 0, int32_t{1} << 16);
+        const uint32_t r = static_cast<uint32_t>(opt_.base.r * b_q16 + (1 << 15)) >> 16;
+        const uint32_t g = static_cast<uint32_t>(opt_.base.g * b_q16 + (1 << 15)) >> 16;
+        const uint32_t b = static_cast<uint32_t>(opt_.base.b * b_q16 + (1 << 15)) >> 16;
+        return static_cast<uint16_t>(((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3));
+    }
+
 private:
     __attribute__((always_inline)) static Rgb id_color(uint32_t id) {
         return {static_cast<uint8_t>(id >> 16), static_cast<uint8_t>(id >> 8), static_cast<uint8_t>(id)};

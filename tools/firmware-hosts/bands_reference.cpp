@@ -1,11 +1,14 @@
-// Host twin of the bands firmware: writes bands.ppm with the same band renderer and PPM sink, and
-// first checks on the host that band-by-band rendering (several band heights) gives exactly the bytes
-// of spin's full-frame frame 0. Exit 0 ok, 1 on a failure or a mismatch.
+// Host twin of the bands firmware (argument 160) and bands320 (argument 320): writes bands.ppm or
+// bands320.ppm with the same band renderer and PPM sink, after checking on the host that band-by-band
+// rendering (several band heights and carried-slot counts) gives exactly the bytes of the full-frame
+// render of the same scene. Exit 0 ok, 1 on a failure or a mismatch, 2 on a bad argument.
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 #include "bands/bands.hpp"
 #include "common/scenes/torus_160x128.hpp"
+#include "common/scenes/torus_320x240.hpp"
 #include "spin/app.hpp"
 #include "stdio_io.hpp"
 
@@ -13,8 +16,6 @@ extern "C" void bench_begin() {}
 extern "C" void bench_end() {}
 
 namespace {
-
-namespace scene = hider::scenes::torus_160x128;
 
 /// Io that collects the one file written into memory.
 struct MemoryIo {
@@ -30,40 +31,67 @@ struct MemoryIo {
     void print_u32(uint32_t) {}
 };
 
-const spin::Scene kScene{scene::kCamera, scene::kWidth, scene::kHeight, scene::mesh()};
-hider::ScreenVertex g_verts[scene::kVertexCount];
-uint8_t g_row[scene::kWidth * 3];
+/// Band renderer memory for `rows` rows and `carried` slots (what the firmware declares statically).
+struct Memory {
+    std::vector<hider::ScreenVertex> verts;
+    std::vector<uint16_t> color, depth, next, head;
+    std::vector<hider::KernelTriangle> carried;
+    std::vector<uint8_t> slots;
+    int32_t rows;
+    Memory(const spin::Scene& s, int32_t band_rows, size_t carried_slots)
+        : verts(s.mesh.positions.size()), color(static_cast<size_t>(s.width) * band_rows), depth(color.size()),
+          next(s.mesh.tris.size()), head(static_cast<size_t>((s.height + band_rows - 1) / band_rows)),
+          carried(carried_slots), slots(3 * carried_slots), rows(band_rows) {}
+    bands::BandBuffers buffers() {
+        return {{verts.data(), verts.size()}, {color.data(), color.size()}, {depth.data(), depth.size()}, rows,
+                {{next.data(), next.size()}, {head.data(), head.size()}, {carried.data(), carried.size()},
+                 {slots.data(), slots.size()}}};
+    }
+};
 
-std::vector<uint8_t> full_frame_ppm() {
-    static uint16_t color[scene::kWidth * scene::kHeight], depth[scene::kWidth * scene::kHeight];
+std::vector<uint8_t> full_frame_ppm(const spin::Scene& s) {
+    std::vector<uint16_t> color(static_cast<size_t>(s.width) * s.height), depth(color.size());
+    std::vector<hider::ScreenVertex> verts(s.mesh.positions.size());
+    std::vector<uint8_t> row(static_cast<size_t>(s.width) * 3);
     MemoryIo io;
-    if (spin::run(io, kScene, {g_verts, color, depth, g_row}, 1, "frame") != 0) return {};
+    if (spin::run(io, s, {{verts.data(), verts.size()}, color.data(), depth.data(), {row.data(), row.size()}}, 1, "frame") != 0)
+        return {};
     return io.bytes;
 }
 
-std::vector<uint8_t> banded_ppm(int32_t rows) {
-    std::vector<uint16_t> color(static_cast<size_t>(scene::kWidth) * rows), depth(color.size());
-    MemoryIo io;
-    const bands::BandBuffers buf{g_verts, {color.data(), color.size()}, {depth.data(), depth.size()}, rows};
-    if (bands::run(io, kScene, buf, g_row, "bands.ppm") != 0) return {};
-    return io.bytes;
-}
-
-}  // namespace
-
-int main() {
-    const std::vector<uint8_t> full = full_frame_ppm();
+int run(const spin::Scene& s, const char* path, int32_t rows, size_t carried) {
+    const std::vector<uint8_t> full = full_frame_ppm(s);
     if (full.empty()) {
         std::fputs("bands_reference: full-frame render failed\n", stderr);
         return 1;
     }
-    for (int32_t rows : {1, 7, bands::kBandRows, 13, scene::kHeight}) {
-        if (banded_ppm(rows) != full) {
-            std::fprintf(stderr, "bands_reference: bands of %d rows differ from the full frame\n", static_cast<int>(rows));
-            return 1;
+    uint8_t chunk[3 * 32];
+    for (int32_t r : {1, 3, 7, 8, 13, s.height})
+        for (size_t slots : {size_t{0}, size_t{5}, size_t{64}}) {
+            Memory m(s, r, slots);
+            MemoryIo io;
+            if (bands::run(io, s, m.buffers(), chunk, path) != 0 || io.bytes != full) {
+                std::fprintf(stderr, "bands_reference: bands of %d rows with %d slots differ from the full frame\n",
+                             static_cast<int>(r), static_cast<int>(slots));
+                return 1;
+            }
         }
-    }
-    static uint16_t color[scene::kWidth * bands::kBandRows], depth[scene::kWidth * bands::kBandRows];
+    Memory m(s, rows, carried);
     spin::StdioIo io;
-    return bands::run(io, kScene, {g_verts, color, depth, bands::kBandRows}, g_row, "bands.ppm");
+    return bands::run(io, s, m.buffers(), chunk, path);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc == 2 && std::strcmp(argv[1], "160") == 0) {
+        namespace sc = hider::scenes::torus_160x128;
+        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands.ppm", 8, 24);
+    }
+    if (argc == 2 && std::strcmp(argv[1], "320") == 0) {
+        namespace sc = hider::scenes::torus_320x240;
+        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands320.ppm", 3, 43);
+    }
+    std::fputs("usage: bands_reference 160|320\n", stderr);
+    return 2;
 }

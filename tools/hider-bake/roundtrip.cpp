@@ -9,6 +9,7 @@
 #include "common/scene.hpp"
 #include "common/scenes/city_street_160x128.hpp"
 #include "common/scenes/torus_160x128.hpp"
+#include "common/scenes/teapot_320x240.hpp"
 #include "common/scenes/torus_320x240.hpp"
 #include "hider-bake/cli.hpp"
 
@@ -34,6 +35,8 @@ const Baked kBaked[] = {
      scenes::torus_320x240::kCamera, scenes::torus_320x240::mesh()},
     {"city_street_160x128", scenes::city_street_160x128::kWidth, scenes::city_street_160x128::kHeight,
      scenes::city_street_160x128::kCamera, scenes::city_street_160x128::mesh()},
+    {"teapot_320x240", scenes::teapot_320x240::kWidth, scenes::teapot_320x240::kHeight,
+     scenes::teapot_320x240::kCamera, scenes::teapot_320x240::mesh()},
 };
 
 bool same(const Vec3q16& a, const Vec3q16& b) { return a == b; }

@@ -1,47 +1,44 @@
 #!/bin/sh
-# Instruction profile of a firmware run under QEMU: executed instructions per function symbol (the whole
-# run, startup and output included), largest first, with the share of the total.
-# Usage: profile.sh <cm0plus|cm3|rv32imac> <firmware.elf> [big|small] [lines, default 20]
-# Env:   NM (default: the target's nm), CC (to build the plugin, default cc)
-# The firmware's semihosted files land in a temporary directory. Exit status: QEMU's.
+# Where a firmware's bench region spends its instructions: runs it under the insncount plugin with
+# profile= and maps each executed address to its function (nm) or, with LINES=1, to its source line
+# (addr2line; build with -g for useful lines). Prints the top entries by instructions, with the share
+# and, on ARM targets, the modelled cycles (lower bound).
+# Usage: profile.sh <cm0plus|cm3|rv32imac> <firmware.elf> [big|small] [top entries, default 30]
+# Env:   INSNCOUNT_PLUGIN, NM as for run.sh; ADDR2LINE (default: from the preset); LINES=1;
+#        PAIR=<n> profiles only the n-th bench pair (from 0).
 set -eu
 if [ $# -lt 2 ] || [ $# -gt 4 ]; then
-    echo "usage: $0 <cm0plus|cm3|rv32imac> <firmware.elf> [big|small] [lines]" >&2
+    echo "usage: $0 <cm0plus|cm3|rv32imac> <firmware.elf> [big|small] [top]" >&2
     exit 2
 fi
-preset=$1 elf=$(cd "$(dirname "$2")" && pwd)/$(basename "$2") machine=${3:-big} lines=${4:-20}
-semi="-semihosting-config enable=on,target=native"
-case "$preset:$machine" in
-    cm0plus:big | cm3:big | cm3:small) qemu="qemu-system-arm -M mps2-an385" triple=arm-none-eabi ;;
-    cm0plus:small) qemu="qemu-system-arm -M microbit" triple=arm-none-eabi ;;
-    rv32imac:big) qemu="qemu-system-riscv32 -M virt -cpu rv32,f=off,d=off -bios none" triple=riscv64-unknown-elf ;;
-    rv32imac:small) qemu="qemu-system-riscv32 -M sifive_e" triple=riscv64-unknown-elf ;;
-    *) echo "$0: unknown target/machine '$preset' '$machine'" >&2; exit 2 ;;
+preset=$1 elf=$2 machine=${3:-big} top=${4:-30}
+case "$preset" in
+    cm0plus | cm3) triple=arm-none-eabi ;;
+    rv32imac) triple=riscv64-unknown-elf ;;
+    *) echo "$0: unknown target '$preset'" >&2; exit 2 ;;
 esac
-nm_tool=${NM:-$triple-nm}
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-${CC:-cc} -O2 -shared -fPIC -Wall -o "$work/libtbprofile.so" "$(cd "$(dirname "$0")" && pwd)/tbprofile.c"
-status=0
-(cd "$work" && timeout --kill-after=5 600 $qemu -nographic $semi -kernel "$elf" \
-    -plugin "$work/libtbprofile.so,out=$work/blocks.txt" >/dev/null 2>&1) || status=$?
-if [ ! -s "$work/blocks.txt" ]; then
-    echo "$0: QEMU wrote no profile (status $status)" >&2
+elf_abs=$(cd "$(dirname "$elf")" && pwd)/$(basename "$elf")
+(cd "$work" && INSNCOUNT_ARGS="profile=$work/profile.txt${PAIR:+,profile_pair=$PAIR}" sh "$here/run.sh" "$preset" "$elf_abs" "$work/counts.txt" "$machine" >/dev/null 2>&1) || true
+if [ ! -s "$work/profile.txt" ]; then
+    echo "$0: no profile written" >&2
     exit 1
 fi
-# Function symbols in decimal, sorted by address; blocks sorted by address; one merge pass.
-"$nm_tool" -n -S -C --radix=d --defined-only "$elf" | awk 'NF >= 4 && $3 ~ /^[tTwW]$/' >"$work/syms.txt"
-sort -n -k1,1 "$work/blocks.txt" >"$work/sorted.txt"
-awk -v lines="$lines" '
-    NR == FNR { a[n] = $1 + 0; e[n] = $1 + $2; name = $4; for (i = 5; i <= NF; ++i) name = name " " $i; s[n++] = name; next }
-    {
-        pc = $1 + 0; c = $2 * $3; total += c
-        while (k + 1 < n && a[k + 1] <= pc) ++k
-        key = (n > 0 && pc >= a[k] && pc < e[k]) ? s[k] : "(no symbol)"
-        sum[key] += c
-    }
-    END {
-        printf "%d instructions\n", total
-        for (key in sum) printf "%d\t%.1f%%\t%s\n", sum[key], 100 * sum[key] / total, key | "sort -rn | head -n " lines
-    }' "$work/syms.txt" "$work/sorted.txt"
-exit "$status"
+head -1 "$work/counts.txt"
+if [ "${LINES:-0}" = 1 ]; then
+    # address -> file:line, one addr2line call for all addresses
+    awk '{ print "0x" $1 }' "$work/profile.txt" | "${ADDR2LINE:-$triple-addr2line}" -e "$elf_abs" >"$work/lines.txt"
+    paste -d ' ' "$work/profile.txt" "$work/lines.txt" |
+        awk '{ n[$4] += $2; c[$4] += $2 * $3; t += $2 } END { for (k in n) printf "%d %d %.1f%% %s\n", n[k], c[k], 100 * n[k] / t, k }'
+else
+    # address -> function: the last symbol at or below it (nm -n order)
+    "${NM:-$triple-nm}" -n "$elf_abs" | awk '$2 ~ /^[tTwW]$/ { print $1, $3 }' >"$work/syms.txt"
+    # both lists hold 8 lowercase hex digits: string order is address order (any awk)
+    awk 'NR == FNR { a[NR] = $1; s[NR] = $2; m = NR; next }
+         { pc = $1; lo = 1; hi = m
+           while (lo < hi) { mid = int((lo + hi + 1) / 2); if (a[mid] "" <= pc "") lo = mid; else hi = mid - 1 }
+           n[s[lo]] += $2; c[s[lo]] += $2 * $3; t += $2 }
+         END { for (k in n) printf "%d %d %.1f%% %s\n", n[k], c[k], 100 * n[k] / t, k }' "$work/syms.txt" "$work/profile.txt"
+fi | sort -rn | head -n "$top" | awk 'BEGIN { print "instructions cycles(lo) share where" } { print }'

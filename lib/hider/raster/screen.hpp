@@ -29,7 +29,7 @@ inline ScreenBox screen_box(const ScreenVertex& a, const ScreenVertex& b, const 
 
 /// True when no pixel centre of the band lies in the box: the box is outside the band, or a tiny
 /// triangle's box falls between centres. Shifts and compares only.
-inline bool misses_band(const ScreenBox& box, const BandBounds& bb) {
+__attribute__((always_inline)) inline bool misses_band(const ScreenBox& box, const BandBounds& bb) {
     if (box.y_max < bb.y_first || box.y_min > bb.y_last || box.x_max < bb.x_first || box.x_min > bb.x_last) return true;
     // First centre at or after the minimum: centres sit at origin + 16 k.
     const int32_t cx = ((box.x_min - bb.x_first + kSubpixel - 1) >> kSubpixelBits) * kSubpixel + bb.x_first;

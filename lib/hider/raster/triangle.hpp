@@ -5,7 +5,7 @@
 // stepped by dz/dx per pixel and dz/dy per row (Giesen, "Triangle rasterization in practice").
 #pragma once
 #include <hider/raster/edge.hpp>
-#include <hider/raster/row_kernel.hpp>
+#include <hider/raster/plane.hpp>
 #include <hider/raster/screen.hpp>
 
 namespace hider {
@@ -15,7 +15,8 @@ namespace hider {
 class TriangleRaster {
 public:
     /// Twice the signed area in subpixels^2 of (a, b, c); < 0 means counter-clockwise on the image.
-    static constexpr int32_t signed_area(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    __attribute__((always_inline)) static constexpr int32_t signed_area(const ScreenVertex& a, const ScreenVertex& b,
+                                                                        const ScreenVertex& c) {
         return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
     }
 
@@ -46,9 +47,10 @@ public:
     /// Visits every row y in [y_begin, y_end) the triangle touches, in order: rows.begin(y0) once,
     /// then rows(x0, x1, z) per row with the covered pixels [x0, x1) clipped to [0, width) (possibly
     /// empty: x0 >= x1) and z the depth at (x0, y). Returns the number of pixels covered when
-    /// RowFn::kCountFragments, else 0. This is the hot path: a row functor keeps its own row pointers
-    /// and steps them by a stride (no multiply), and triangles that cannot reach left of pixel 0 take
-    /// a loop without the depth-at-column-0 bookkeeping.
+    /// RowFn::kCountFragments, else 0. A row functor keeps its own row pointers and steps them by a
+    /// stride (no multiply), and triangles that cannot reach left of pixel 0 take a loop without the
+    /// depth-at-column-0 bookkeeping. (The z-buffer's flat RGB565 path does not come here: it sets its
+    /// triangles up for the row kernel directly, kernel_triangle.hpp; RowFn::kRowKernel is not read.)
     template <class RowFn>
     uint32_t scan(int32_t y_begin, int32_t y_end, RowFn& rows_fn) const {
         const int32_t y0 = max(row_top_, y_begin), y1 = min(row_bottom_, y_end);
@@ -56,7 +58,6 @@ public:
         const bool left = clip_left_, right = clip_right_;
         if (left) return right ? scan_rows<true, true>(y0, y1, rows_fn) : scan_rows<true, false>(y0, y1, rows_fn);
         if (right) return scan_rows<false, true>(y0, y1, rows_fn);
-        if constexpr (RowFn::kRowKernel) return scan_kernel(y0, y1, rows_fn);
         return scan_rows<false, false>(y0, y1, rows_fn);
     }
 
@@ -129,64 +130,17 @@ private:
 
     /// The depth plane of (v0, v1, v2), clockwise on the image, with area = their signed area (> 0).
     void setup_depth(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int32_t area) {
-        const int32_t dx1 = v1.x - v0.x, dy1 = v1.y - v0.y;
-        const int32_t dx2 = v2.x - v0.x, dy2 = v2.y - v0.y;
-        const uint32_t z0 = v0.z;
-        const int64_t dz1 = int64_t{v1.z} - z0, dz2 = int64_t{v2.z} - z0;
-        // Plane through the vertices: z = z0 + p (x - x0) + q (y - y0); per pixel = 16 p, 16 q.
-        // |dz| < 2^32 and |dx|, |dy| < 2^15 (kCoordLimit): every product fits 47 bits.
-        const int64_t npx = (mul_i33_i16(dz1, dy2) - mul_i33_i16(dz2, dy1)) * kSubpixel;
-        const int64_t nqy = (mul_i33_i16(dz2, dx1) - mul_i33_i16(dz1, dx2)) * kSubpixel;
-        int64_t px = 0, qy = 0;
-        if (kSlow64BitDivide) {  // 64/32 divisions (on ARMv6-M one reciprocal for both)
-            const SharedDivisor32 d(static_cast<uint32_t>(area));
-            px = div_round_prepared(npx, d);
-            qy = div_round_prepared(nqy, d);
-        } else {
-            px = div_round(npx, area);
-            qy = div_round(nqy, area);
-        }
-        dzdx_ = static_cast<uint32_t>(px);
-        dzdy_ = static_cast<uint32_t>(qy);
-        // Reference pixel: the one whose cell holds v0; its centre is within 8 subpixels of v0.
-        ref_px_ = (v0.x - x_origin_ + kSubpixel / 2) >> kSubpixelBits;
-        ref_py_ = (v0.y - y_origin_ + kSubpixel / 2) >> kSubpixelBits;
-        const int32_t ox = ref_px_ * kSubpixel + x_origin_ - v0.x;  // within [-8, 8]
-        const int32_t oy = ref_py_ * kSubpixel + y_origin_ - v0.y;
-        z_ref_ = z0 + static_cast<uint32_t>(div_round_pow2(mul_i64_i16(px, ox) + mul_i64_i16(qy, oy), kSubpixelBits));
+        const DepthPlane p = depth_plane(v0, v1, v2, area, x_origin_, y_origin_);
+        dzdx_ = p.dzdx;
+        dzdy_ = p.dzdy;
+        z_ref_ = p.z_ref;
+        ref_px_ = p.ref_px;
+        ref_py_ = p.ref_py;
     }
 
     /// Depth at pixel (px, py): exact modulo 2^32, equal to what stepping produces.
     __attribute__((always_inline)) uint32_t depth_at(int32_t px, int32_t py) const {
         return z_ref_ + dzdx_ * static_cast<uint32_t>(px - ref_px_) + dzdy_ * static_cast<uint32_t>(py - ref_py_);
-    }
-
-    /// scan() through the row functor's RowKernel (row_kernel.hpp) for triangles inside the frame's
-    /// columns: the walkers fill the kernel's edges, then one kernel run per half of the triangle.
-    /// Same rows, spans and depths as scan_rows<false, false>.
-    template <class RowFn>
-    uint32_t scan_kernel(int32_t y0, int32_t y1, RowFn& rows_fn) const {
-        rows_fn.begin(y0);
-        RowKernel k;
-        rows_fn.fill_kernel(k);
-        k.dzdx = dzdx_;
-        const int32_t y_mid = clamp(row_mid_, y0, y1);
-        const bool long_left = long_left_;
-        set_kernel_edge(k, long_left, walker_inline(0, 2, y0), y0);
-        if (y0 < y_mid) {
-            set_kernel_edge(k, !long_left, walker_inline(0, 1, y0), y0);
-            k.rows = y_mid - y0;
-            run_row_kernel(k);
-            if (y_mid == y1) return 0;
-            // the short side continues along the other short edge
-            set_kernel_edge(k, !long_left, walker_inline(1, 2, y_mid), y_mid);
-            k.rows = y1 - y_mid;
-        } else {
-            set_kernel_edge(k, !long_left, walker_inline(1, 2, y0), y0);
-            k.rows = y1 - y0;
-        }
-        run_row_kernel(k);
-        return 0;
     }
 
     /// The row loop of scan(). kClipLeft: spans may start left of pixel 0, so the depth at column 0 is
@@ -246,25 +200,8 @@ private:
     /// ys_[l]). Both sides share one form: a left edge (run upwards clockwise, top-left rule
     /// inclusive) and a right edge (run downwards, exclusive, its edge function negated and biased by
     /// one) give the same g = dy (x - xu) - dx (y - yu) at pixel centres (edge.hpp).
-    Walker walker(int u, int l, int32_t py) const { return walker_inline(u, l, py); }
-    /// walker() inlined: scan_kernel() writes its fields straight into the kernel state.
-    __attribute__((always_inline)) Walker walker_inline(int u, int l, int32_t py) const {
+    Walker walker(int u, int l, int32_t py) const {
         return edge_walker(xs_[u], ys_[u], xs_[l], ys_[l], py, x_origin_, y_origin_);
-    }
-
-    /// The kernel's left edge (with its depth on row py) and right edge from walkers.
-    __attribute__((always_inline)) void set_kernel_left(RowKernel& k, const Walker& w, int32_t py) const {
-        k.lpx = w.px; k.lg = w.g - w.a; k.la = w.a; k.lm = w.m; k.lq = w.q;
-        k.lz = depth_at(w.px, py);
-        k.ldz = dzdy_ + dzdx_ * static_cast<uint32_t>(w.q);
-    }
-    __attribute__((always_inline)) static void set_kernel_right(RowKernel& k, const Walker& w) {
-        k.rpx = w.px; k.rg = w.g - w.a; k.ra = w.a; k.rm = w.m; k.rq = w.q;
-    }
-    /// Writes walker w (on row py) as the kernel's left edge, with its depth, or as its right edge.
-    __attribute__((always_inline)) void set_kernel_edge(RowKernel& k, bool left, const Walker& w, int32_t py) const {
-        if (left) set_kernel_left(k, w, py);
-        else set_kernel_right(k, w);
     }
 
     // No default initialisers: setup() writes every member, and a per-triangle memset costs real time.

@@ -1,0 +1,36 @@
+// bands320 firmware (small machine, 16 KB RAM budget for data + bss + stack): the torus at 320x240 (spin320's frame)
+// rendered band by band (bands/bands.hpp) into a BandSink that streams rows to bands320.ppm through
+// semihosting. RAM: README.md ("Bands"): vertices, bins, band buffers, carried set-ups, a PPM chunk and
+// the stack (CMakeLists.txt) within the 16 KB.
+#include "bands/bands.hpp"
+#include "bands/sizes.hpp"
+#include "common/scenes/torus_320x240.hpp"
+#include "spin/semihost_io.hpp"
+
+namespace {
+
+// Band height and carried slots (3 and 43 fill the 16 KB; hider-bench builds taller bands on the big
+// machine for README.md's table of band height against RAM and cost).
+#ifndef BANDS320_ROWS
+#define BANDS320_ROWS 3
+#endif
+#ifndef BANDS320_SLOTS
+#define BANDS320_SLOTS 43
+#endif
+
+namespace scene = hider::scenes::torus_320x240;
+using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, BANDS320_ROWS,
+                           BANDS320_SLOTS>;
+Sizes::Storage g;
+
+}  // namespace
+
+int main() {
+    spin::SemihostIo io;
+    const spin::Scene s{scene::kCamera, scene::kWidth, scene::kHeight, scene::mesh()};
+    const int status = bands::run(io, s, g.buffers(), g.ppm_chunk, "bands320.ppm");
+    io.print("bands320: storage ");
+    io.print_u32(static_cast<uint32_t>(sizeof g));
+    io.print(" bytes\n");
+    return status;
+}

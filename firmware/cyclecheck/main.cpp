@@ -1,0 +1,77 @@
+// cyclecheck firmware (ARM targets): hand-written instruction sequences whose cycle counts the processor's
+// Technical Reference Manual gives, each called once between bench_begin() and bench_end(), so the
+// insncount plugin's cycle model (tools/qemu-insncount/arm_cycles.h) reports one region pair per
+// sequence. expected_<model>.txt holds each sequence's cycles worked out from the manual, and
+// check_cycles.sh compares them with the plugin's pairs (each less pair 0, the empty sequence, so the
+// call around it cancels). Sequences keep r4-r11 and sp as they found them.
+#include <stdint.h>
+
+#include "common/bench.hpp"
+
+namespace {
+
+using Sequence = void (*)();
+
+#define HIDER_SEQUENCE(name, body) \
+    __attribute__((naked, noinline)) void name() { __asm__ volatile(".syntax unified\n\t" body ::: "memory"); }
+
+#if defined(__ARM_ARCH_6M__)
+// Cortex-M0+ (ARM DDI 0484C table 3.1); the cycles of each are in expected_m0plus.txt.
+HIDER_SEQUENCE(empty, "bx lr\n")
+HIDER_SEQUENCE(alu, "adds r0, r0, #1\n\tsubs r1, r1, r2\n\tlsls r2, r2, #3\n\teors r3, r3, r0\n\tbx lr\n")
+HIDER_SEQUENCE(multiply, "movs r0, #3\n\tmovs r1, #5\n\tmuls r0, r1, r0\n\tbx lr\n")
+HIDER_SEQUENCE(load_store, "sub sp, sp, #8\n\tmov r1, sp\n\tstr r0, [r1]\n\tstr r0, [r1, #4]\n\tldr r2, [r1]\n\t"
+                           "ldrh r3, [r1, #2]\n\tmovs r0, #1\n\tldrb r3, [r1, r0]\n\tadd sp, sp, #8\n\tbx lr\n")
+HIDER_SEQUENCE(multiple, "sub sp, sp, #16\n\tmov r1, sp\n\tstm r1!, {r0, r2, r3}\n\tmov r1, sp\n\t"
+                         "ldm r1!, {r0, r2, r3}\n\tadd sp, sp, #16\n\tbx lr\n")
+HIDER_SEQUENCE(push_pop, "push {r4-r7}\n\tpop {r4-r7}\n\tbx lr\n")
+HIDER_SEQUENCE(call_return, "push {r4, lr}\n\tbl 1f\n\tpop {r4, pc}\n1:\n\tpush {lr}\n\tpop {pc}\n")
+HIDER_SEQUENCE(branch_not_taken, "movs r0, #0\n\tcmp r0, #1\n\tbeq 1f\n\tnop\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(branch_taken, "movs r0, #0\n\tcmp r0, #0\n\tbeq 1f\n\tnop\n\tnop\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(loop, "movs r0, #5\n1:\n\tsubs r0, r0, #1\n\tbne 1b\n\tbx lr\n")
+HIDER_SEQUENCE(branch, "b 1f\n\tnop\n\tnop\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(branch_register, "adr r0, 1f\n\tadds r0, r0, #1\n\tbx r0\n\t.balign 4\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(move_to_pc, "adr r0, 1f\n\tmov pc, r0\n\t.balign 4\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(system, "mrs r0, msp\n\tdsb\n\tbx lr\n")
+const Sequence kSequences[] = {empty, alu, multiply, load_store, multiple, push_pop, call_return, branch_not_taken,
+                               branch_taken, loop, branch, branch_register, move_to_pc, system};
+#elif defined(__ARM_ARCH_7M__)
+// Cortex-M3 (ARM DDI 0337I table 3-1 and 3.3.1 "Load/store timings"); cycles in expected_m3.txt.
+HIDER_SEQUENCE(empty, "bx lr\n")
+HIDER_SEQUENCE(alu, "adds r0, r0, #1\n\tadd.w r1, r1, r2, lsl #2\n\teor r3, r3, r0\n\tbx lr\n")
+HIDER_SEQUENCE(multiply, "mul r0, r1, r0\n\tmla r0, r1, r2, r0\n\tbx lr\n")
+HIDER_SEQUENCE(load_pair, "sub sp, #16\n\tmov r1, sp\n\tmov r2, sp\n\tnop\n\tldr r0, [r1]\n\tldr r1, [r2]\n\t"
+                          "add sp, #16\n\tbx lr\n")
+HIDER_SEQUENCE(load_triple, "sub sp, #16\n\tmov r1, sp\n\tmov r2, sp\n\tmov r3, sp\n\tmovs r0, #0\n\tmov r12, r0\n\tnop\n\t"
+                            "ldr r0, [r1, r12]\n\tldr r1, [r2]\n\tldr r2, [r3, #4]\n\tadd sp, #16\n\tbx lr\n")
+HIDER_SEQUENCE(stores, "sub sp, #16\n\tmov r1, sp\n\tnop\n\tstr r0, [r1, #4]\n\tmovs r2, #8\n\tnop\n\t"
+                       "str r0, [r1, r2]\n\tadd sp, #16\n\tbx lr\n")
+HIDER_SEQUENCE(address_stall, "sub sp, #8\n\tadd r1, sp, #4\n\tldr r0, [r1]\n\tadd sp, #8\n\tbx lr\n")
+HIDER_SEQUENCE(load_use, "sub sp, #8\n\tmov r1, sp\n\tstr r1, [r1]\n\tldr r2, [r1]\n\tldr r3, [r2]\n\tadd sp, #8\n\tbx lr\n")
+HIDER_SEQUENCE(branch_not_taken, "movs r0, #0\n\tcmp r0, #1\n\tbeq 1f\n\tnop\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(branch_taken, "movs r0, #0\n\tcmp r0, #0\n\tbeq 1f\n\tnop\n\tnop\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(loop, "movs r0, #5\n1:\n\tsubs r0, r0, #1\n\tbne 1b\n\tbx lr\n")
+HIDER_SEQUENCE(divide, "movs r0, #100\n\tmovs r1, #7\n\tudiv r2, r0, r1\n\tbx lr\n")
+HIDER_SEQUENCE(long_multiply, "umull r2, r3, r0, r1\n\tumlal r2, r3, r0, r1\n\tbx lr\n")
+HIDER_SEQUENCE(multiple, "sub sp, #16\n\tmov r1, sp\n\tstm r1, {r0, r2, r3}\n\tldm r1, {r0, r2, r3}\n\tadd sp, #16\n\tbx lr\n")
+HIDER_SEQUENCE(push_pop_return, "push {r4-r7, lr}\n\tpop {r4-r7, pc}\n")
+HIDER_SEQUENCE(if_then, "movs r0, #0\n\tcmp r0, #0\n\tit eq\n\tmoveq r1, r0\n\tbx lr\n")
+HIDER_SEQUENCE(call_return, "push {r4, lr}\n\tbl 1f\n\tpop {r4, pc}\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(dual, "sub sp, #8\n\tstrd r0, r1, [sp]\n\tldrd r2, r3, [sp]\n\tadd sp, #8\n\tbx lr\n")
+const Sequence kSequences[] = {empty,        alu,      multiply,         load_pair,    load_triple, stores,
+                               address_stall, load_use, branch_not_taken, branch_taken, loop,        divide,
+                               long_multiply, multiple, push_pop_return,  if_then,      call_return, dual};
+#else
+const Sequence kSequences[] = {nullptr};  // no cycle model for this target: the firmware is not built
+#endif
+
+}  // namespace
+
+int main() {
+    for (const Sequence s : kSequences) {
+        bench_begin();
+        s();
+        bench_end();
+    }
+    return 0;
+}

@@ -1,0 +1,121 @@
+// Random triangle set-ups shared by the kernelcheck firmware and its host twin: each case is a band of a
+// frame (random size, rows and stride) and three vertices (tiny to huge, inside and past the frame, flat
+// and steep depth, some on the first or last column centre, some spanning the whole guard band in y),
+// set up through `setup` (kernel_setup() on the chip, kernel_setup_portable() on the host). setup_digest() folds the outcome and every field the row kernel will read into one 32-bit
+// digest per case.
+#pragma once
+#include <hider/raster/kernel_triangle.hpp>
+#include <hider/raster/triangle.hpp>
+
+#include "kernelcheck/cases.hpp"
+
+namespace kernelcheck {
+
+constexpr int kSetupCases = 1000;
+constexpr uint32_t kSetupSeed = 0x2545F491u;
+
+/// One set-up: its band and vertices.
+struct SetupCase {
+    hider::KernelBand band;
+    hider::ScreenVertex v[3];
+    int32_t area;
+};
+
+/// The next case; its area is never 0. Three in four lie inside the frame's columns (the set-up's own
+/// work), the rest reach past them or miss the band.
+inline SetupCase make_setup_case(Rng& rng) {
+    SetupCase c{};
+    for (;;) {
+        const int32_t width = rng.range(1, 400), height = rng.range(1, 300);
+        const int32_t r0 = rng.range(0, height - 1), r1 = rng.range(r0 + 1, height);
+        c.band = hider::kernel_band(width, height, r0, r1, 2 * width + 2 * rng.range(0, 3));
+        const hider::KernelBand& b = c.band;
+        const bool inside = (rng.next() & 3u) != 0;
+        // Sizes from a fraction of a pixel to the whole frame (areas past 0xFFFF take the long division).
+        int32_t size = rng.range(1, (rng.next() & 1u) != 0 ? 48 : 8 * (width + height));
+        int32_t cx = 0;
+        if (inside) {
+            size = hider::min(size, (b.x_last - b.x_origin) / 2);
+            cx = rng.range(b.x_origin + size, b.x_last - size);
+        } else {
+            cx = rng.range(-hider::kCoordLimit / 2, hider::kCoordLimit / 2);
+        }
+        const int32_t cy = rng.range(b.y_first - 16 * 8, b.y_last + 16 * 8);
+        const uint32_t z0 = hider::kDepthNear + (rng.next() >> 1);
+        for (hider::ScreenVertex& v : c.v) {
+            v.x = static_cast<int16_t>(hider::clamp(cx + rng.range(-size, size), -hider::kCoordLimit, hider::kCoordLimit));
+            v.y = static_cast<int16_t>(hider::clamp(cy + rng.range(-4 * size, 4 * size), -hider::kCoordLimit,
+                                                    hider::kCoordLimit));
+            switch (rng.next() & 3u) {  // near depths, the whole range (steep planes), or one depth (flat)
+                case 0: v.z = z0 + (rng.next() >> 12); break;
+                case 1: v.z = hider::kDepthNear + rng.next() % (hider::kDepthFar - hider::kDepthNear); break;
+                default: v.z = z0; break;
+            }
+        }
+        // Edge cases: a vertex exactly on the first or last column centre; a triangle reaching far past
+        // the band above and below (depth differences over y spans near 2^15).
+        const uint32_t extra = rng.next();
+        if ((extra & 7u) == 0) {
+            hider::ScreenVertex& v = c.v[(extra >> 3) % 3];
+            v.x = static_cast<int16_t>((extra & 0x100u) != 0 ? b.x_origin : b.x_last);
+        }
+        if (((extra >> 9) & 7u) == 0) {
+            c.v[(extra >> 12) % 3].y = static_cast<int16_t>(-hider::kCoordLimit + static_cast<int32_t>((extra >> 16) & 0xFF));
+            c.v[(extra >> 14) % 3].y = static_cast<int16_t>(hider::kCoordLimit - static_cast<int32_t>((extra >> 24) & 0xFF));
+        }
+        c.area = hider::TriangleRaster::signed_area(c.v[0], c.v[1], c.v[2]);
+        if (c.area != 0) return c;
+    }
+}
+
+/// FNV-1a of a set-up's outcome and the fields the kernel reads (those the outcome defines).
+inline uint32_t setup_digest(hider::KernelSetup s, const hider::KernelTriangle& t) {
+    uint32_t h = 2166136261u;
+    auto add = [&h](uint32_t v) {
+        for (int i = 0; i < 4; ++i) { h ^= (v >> (8 * i)) & 0xFFu; h *= 16777619u; }
+    };
+    add(static_cast<uint32_t>(s));
+    if (s != hider::KernelSetup::kernel) return h;
+    const int32_t rows[] = {t.top, t.row, t.mid, t.end};
+    for (int32_t r : rows) add(static_cast<uint32_t>(r));
+    if (t.row >= t.end) return h;
+    const hider::RowKernel& k = t.k;
+    const uint32_t fields[] = {static_cast<uint32_t>(k.lx),    static_cast<uint32_t>(k.lg), k.lz,
+                               static_cast<uint32_t>(k.rx),    static_cast<uint32_t>(k.rg), static_cast<uint32_t>(k.la),
+                               static_cast<uint32_t>(k.lm),    static_cast<uint32_t>(k.lstep), k.ldz,
+                               static_cast<uint32_t>(k.ra),    static_cast<uint32_t>(k.rm), static_cast<uint32_t>(k.rstep),
+                               k.dzdx, t.next_left ? 1u : 0u};
+    for (uint32_t f : fields) add(f);
+    if (t.row < t.mid && t.mid < t.end) {  // the lower short edge takes over inside the rows
+        const uint32_t next[] = {static_cast<uint32_t>(t.next_x), static_cast<uint32_t>(t.next_g),
+                                 static_cast<uint32_t>(t.next_a), static_cast<uint32_t>(t.next_m),
+                                 static_cast<uint32_t>(t.next_step)};
+        for (uint32_t f : next) add(f);
+        if (t.next_left) {
+            add(t.next_z);
+            add(t.next_dz);
+        }
+    }
+    return h;
+}
+
+/// Digest of every set-up case through `setup` (a function of (a, b, c, KernelSetupIo&) returning a
+/// KernelSetup) into out[kSetupCases], each case also through `twin`; returns the first case whose
+/// digests differ, or -1.
+template <class Setup, class Twin>
+int run_setup_cases(Setup&& setup, Twin&& twin, uint32_t* out) {
+    Rng rng{kSetupSeed};
+    int first_difference = -1;
+    for (int i = 0; i < kSetupCases; ++i) {
+        const SetupCase c = make_setup_case(rng);
+        hider::KernelTriangle t{};
+        hider::KernelSetupIo io{&c.band, c.area, &t};
+        out[i] = setup_digest(setup(c.v[0], c.v[1], c.v[2], io), t);
+        hider::KernelTriangle u{};
+        io.out = &u;
+        if (setup_digest(twin(c.v[0], c.v[1], c.v[2], io), u) != out[i] && first_difference < 0) first_difference = i;
+    }
+    return first_difference;
+}
+
+}  // namespace kernelcheck

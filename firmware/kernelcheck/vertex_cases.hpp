@@ -1,0 +1,116 @@
+// Random vertex batches shared by the kernelcheck firmware and its host twin: each case is a view (random
+// camera, frame size, field of view, near and far, the far plane sometimes past the assembly loop's
+// 2^29 limit) and kVertexBatch positions placed around its view volume (screen positions up to a little
+// past the guard band, depths at the near and far planes, at 2^29, or anywhere between, some behind the
+// eye). run_vertex_cases() projects each batch through `project` (project_vertices() on the chip) and
+// through `twin` (the general per-position path), one digest per case.
+#pragma once
+#include <hider/raster/vertices.hpp>
+
+#include "kernelcheck/cases.hpp"
+
+namespace kernelcheck {
+
+constexpr int kVertexCases = 250;
+constexpr int kVertexBatch = 16;
+constexpr uint32_t kVertexSeed = 0x68E31DA4u;
+
+struct VertexCase {
+    hider::View view;
+    hider::Vec3q16 p[kVertexBatch];
+};
+
+/// A position whose view-space point is about (x, y, -w): the view rotation transposed, clamped to the
+/// world range.
+inline hider::Vec3q16 world_of(const hider::View& v, int64_t x, int64_t y, int64_t w) {
+    const hider::Transform& t = v.to_view;
+    const int64_t q[3] = {x - t.trans.x.raw(), y - t.trans.y.raw(), -w - t.trans.z.raw()};
+    int32_t p[3];
+    for (int j = 0; j < 3; ++j) {
+        int64_t s = 0;
+        for (int i = 0; i < 3; ++i) s += q[i] * t.rot.m[i][j].raw();
+        p[j] = static_cast<int32_t>(hider::clamp<int64_t>(s >> 30, -(hider::kWorldLimitRaw - 1), hider::kWorldLimitRaw - 1));
+    }
+    return {hider::Q16::from_raw(p[0]), hider::Q16::from_raw(p[1]), hider::Q16::from_raw(p[2])};
+}
+
+inline void make_vertex_case(Rng& rng, VertexCase& c) {
+    using hider::Q16;
+    for (;;) {
+        hider::Camera cam;
+        auto coord = [&rng](int32_t limit) { return Q16::from_raw(rng.range(-limit, limit)); };
+        cam.eye = {coord(1 << 26), coord(1 << 26), coord(1 << 26)};
+        cam.target = {coord(1 << 26), coord(1 << 26), coord(1 << 26)};
+        cam.up = (rng.next() & 3u) != 0 ? hider::Vec3q16{Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)}
+                                        : hider::Vec3q16{coord(65536), coord(65536), coord(65536)};
+        cam.fovy = hider::Angle::from_bam(0x01000000u + rng.next() % 0x70000000u);
+        const uint32_t near_bits = rng.next(), near_shift = rng.next() % 32;
+        const int32_t near = hider::kMinNearRaw + static_cast<int32_t>((near_bits >> near_shift) & 0x3FFFFFFu);
+        const uint32_t depth_bits = rng.next(), depth_shift = rng.next() % 32;
+        const uint32_t depth = (depth_bits >> depth_shift) & 0x7FFFFFFFu;
+        cam.near = Q16::from_raw(near);
+        cam.far = Q16::from_raw(static_cast<int32_t>(hider::min<int64_t>(int64_t{near} + 1 + depth, INT32_MAX)));
+        const int32_t width = rng.range(1, 640);
+        const int32_t height = rng.range(1, 480);
+        if (hider::make_view(cam, width, height, c.view) != hider::Status::ok) continue;
+        break;
+    }
+    const hider::View& v = c.view;
+    for (hider::Vec3q16& p : c.p) {
+        int64_t w = 0;
+        switch (rng.next() % 8) {
+            case 0: w = v.near_raw + rng.range(-2, 2); break;
+            case 1: w = v.far_raw + rng.range(-2, 2); break;
+            case 2: w = (int64_t{1} << 29) + rng.range(-2, 2); break;
+            case 3: w = rng.range(-(1 << 20), 1 << 20); break;
+            default: w = v.near_raw + static_cast<int64_t>(rng.next() % static_cast<uint32_t>(v.far_raw - v.near_raw + 1));
+        }
+        auto screen = [&rng, &v, w]() {  // one draw per statement: the same order on every compiler
+            const int32_t limit = hider::kGuardBand + 40;
+            const int64_t at = int64_t{rng.range(-limit, limit)} * 256 * (w < 1 ? 1 : w) / v.k_q8;
+            return at + rng.range(-3, 3);
+        };
+        const int64_t x = screen(), y = screen();
+        p = world_of(v, x, y, w);
+    }
+}
+
+/// FNV-1a of a batch's projected vertices.
+inline uint32_t vertex_digest(const hider::ScreenVertex* s) {
+    uint32_t h = 2166136261u;
+    for (int i = 0; i < kVertexBatch; ++i) {
+        const uint32_t words[] = {static_cast<uint32_t>(static_cast<uint16_t>(s[i].x)) |
+                                      (static_cast<uint32_t>(static_cast<uint16_t>(s[i].y)) << 16),
+                                  s[i].z};
+        for (uint32_t w : words)
+            for (int b = 0; b < 4; ++b) { h ^= (w >> (8 * b)) & 0xFFu; h *= 16777619u; }
+    }
+    return h;
+}
+
+/// The general per-position path (clip codes, then project()): the twin of the assembly loops.
+inline void project_each(const hider::View& v, const hider::Vec3q16* p, hider::ScreenVertex* out) {
+    for (int i = 0; i < kVertexBatch; ++i) hider::detail::project_one(v, hider::to_view_point(v, p[i]), out[i]);
+}
+
+/// Digest of every vertex case through `project` (a function of (view, positions, out)) into
+/// out[kVertexCases], each case also through `twin`; returns the first case whose digests differ, or -1.
+/// `check` sees each case after it ran (the chip counts what its loop refused).
+template <class Project, class Twin, class Check>
+int run_vertex_cases(Project&& project, Twin&& twin, Check&& check, uint32_t* out) {
+    Rng rng{kVertexSeed};
+    int first_difference = -1;
+    static VertexCase c;
+    static hider::ScreenVertex a[kVertexBatch], b[kVertexBatch];
+    for (int i = 0; i < kVertexCases; ++i) {
+        make_vertex_case(rng, c);
+        project(c.view, c.p, a);
+        twin(c.view, c.p, b);
+        out[i] = vertex_digest(a);
+        if (vertex_digest(b) != out[i] && first_difference < 0) first_difference = i;
+        check(c);
+    }
+    return first_difference;
+}
+
+}  // namespace kernelcheck

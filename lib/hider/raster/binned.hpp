@@ -1,0 +1,361 @@
+// Binned band rendering: a whole frame drawn band by band through one band-sized buffer, without
+// walking every triangle again per band. One pass puts each drawable triangle into the list of the band
+// holding its first row (lists linked through a caller array indexed by triangle, built back to front so
+// each list runs in mesh order). Each band then merges, in mesh order, the triangles carried over from
+// the band above with its own list: a flat RGB565 triangle inside the columns is set up once into a
+// carried slot (kernel_triangle.hpp: edges, depth, the next short edge) and resumed by the next band
+// without any division; other triangles, and kernel triangles that find no free slot, are re-linked into
+// the next band's list and set up there again. Triangles are drawn in mesh order in every band, as
+// draw_zbuffer() draws them, so the frame is byte for byte the full-frame one.
+#pragma once
+#include <hider/raster/zbuffer.hpp>
+
+namespace hider {
+
+/// Caller-owned memory of draw_zbuffer_binned() (sizes per mesh and frame; see README.md for the formula).
+struct BinnedScratch {
+    Span<uint16_t> next;             ///< one per mesh triangle: the band lists (mesh of <= 65,535 triangles)
+    Span<uint16_t> head;             ///< one per band: the first triangle whose first row it holds
+    Span<KernelTriangle> carried;    ///< kernel set-ups carried into the next band (<= 255); fewer only costs set-ups
+    Span<uint8_t> slots;             ///< three per carried slot: this band's and the next band's order, free slots
+};
+
+/// What draw_zbuffer_binned() measured besides the frame's statistics.
+struct BinnedStats {
+    uint32_t carried = 0;           ///< band continuations resumed from a carried slot
+    uint32_t set_up_again = 0;      ///< band continuations set up again (not a kernel triangle, or no free slot)
+    uint32_t carried_high_water = 0;  ///< most slots in use at a band boundary (to size `carried`)
+};
+
+namespace detail {
+constexpr uint16_t kNoTriangle = 0xFFFF;  ///< ends a list; above every triangle index
+
+/// First row of the box of a drawable triangle, clamped to the frame.
+inline int32_t first_row_in_frame(int32_t y_min, const BandBounds& bb, int32_t height) {
+    return clamp((y_min - bb.y_origin + kSubpixel - 1) >> kSubpixelBits, int32_t{0}, height - 1);
+}
+
+/// Inserts t into the ascending list starting at head, searching from after `prev` (kNoTriangle: from
+/// the start); returns t, the next insertion's `prev`. Insertions come in ascending order.
+inline uint16_t insert_sorted(uint16_t* next, uint16_t& head, uint16_t prev, uint16_t t) {
+    uint16_t at = prev == kNoTriangle ? head : next[prev];
+    while (at < t) {  // kNoTriangle stops it
+        prev = at;
+        at = next[at];
+    }
+    next[t] = at;
+    if (prev == kNoTriangle) head = t;
+    else next[prev] = t;
+    return t;
+}
+
+/// First row of the drawable pieces of clipped triangle t (height if none); counts its culled pieces,
+/// and it as clipped or outside. Out of line: the clipped polygon's 200 bytes stay off the binning
+/// loop's stack frame.
+__attribute__((noinline)) inline int32_t first_row_clipped(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                                                           size_t t, bool cull, const BandBounds& bb, int32_t height,
+                                                           FrameStats& st) {
+    int32_t first = height;
+    for_each_clipped(view, mesh, verts, t, st, [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) {
+        const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
+        if (area == 0) return;
+        if (cull && area > 0) {
+            ++st.triangles_culled;
+            return;
+        }
+        first = min(first, first_row_in_frame(min<int32_t>(pa.y, min<int32_t>(pb.y, pc.y)), bb, height));
+    });
+    return first;
+}
+
+/// for_each_clipped() out of line, without counting (binning counted): the clipped polygon stays off the
+/// band loop's stack frame.
+template <class Piece>
+__attribute__((noinline)) void for_each_piece(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, size_t t,
+                                              Piece&& piece) {
+    FrameStats counted;
+    for_each_clipped(view, mesh, verts, t, counted, piece);
+}
+
+/// Links every drawable triangle of the mesh (non-zero area, not culled) into the list of the band
+/// holding its first row, back to front so each list runs in mesh order; counts culled, clipped and outside triangles as draw_zbuffer()
+/// does on a whole frame. band_scale = ceil(2^20 / rows): band = first row * band_scale >> 20, exact for
+/// rows of frames up to 1,024.
+inline void bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
+                          const BandBounds& bb, int32_t height, uint32_t band_scale, uint16_t* next, uint16_t* head,
+                          FrameStats& st) {
+    const Tri* const tris = mesh.tris.data();
+    const ScreenVertex* const vp = verts.data();
+    for (size_t i = mesh.tris.size(); i-- > 0;) {
+        const Tri& tri = tris[i];
+        const ScreenVertex& a = vp[tri.v[0]];
+        const ScreenVertex& b = vp[tri.v[1]];
+        const ScreenVertex& c = vp[tri.v[2]];
+        int32_t first = height;  // first row of any drawable piece
+        auto piece = [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) __attribute__((always_inline)) {
+            const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
+            if (area == 0) return;
+            if (cull && area > 0) {
+                ++st.triangles_culled;
+                return;
+            }
+            // A box without a pixel centre of the frame is binned too: its set-up finds nothing to draw.
+            first = min(first, first_row_in_frame(min<int32_t>(pa.y, min<int32_t>(pb.y, pc.y)), bb, height));
+        };
+        if (a.z != 0 && b.z != 0 && c.z != 0) piece(a, b, c);
+        else first = first_row_clipped(view, mesh, verts, i, cull, bb, height, st);
+        if (first == height) continue;
+        const uint32_t band = (static_cast<uint32_t>(first) * band_scale) >> 20;
+        next[i] = head[band];
+        head[band] = static_cast<uint16_t>(i);
+    }
+}
+
+/// The carried set-ups of draw_bands_kernel(): slots in use this band (mesh order) from `cur` to
+/// `cur_end`, the next band's from `nxt` (growing), and a stack of free slots below `free_top`.
+struct CarriedSlots {
+    KernelTriangle* pool;
+    const uint8_t* cur;
+    const uint8_t* cur_end;
+    uint8_t* nxt;
+    uint8_t* free_top;
+};
+
+/// Where a band's kernel rows go: the target, the band's first depth row and its end row.
+struct KernelBandTarget {
+    KernelTarget target;
+    uint16_t* zrow;
+    int32_t row_end;
+};
+
+/// Resumes the carried set-ups whose triangle comes before `limit`: draws their rows of the band (each
+/// is on the band's first row) and moves each to the next band's slots or back to the free ones.
+/// Out of line with few live values, so GCC keeps the loop in registers.
+__attribute__((noinline)) inline void resume_carried(CarriedSlots& cs, uint16_t limit, const KernelBandTarget& bt) {
+    KernelTriangle* const pool = cs.pool;
+    const uint8_t* cur = cs.cur;
+    const uint8_t* const end = cs.cur_end;
+    uint8_t* nxt = cs.nxt;
+    uint8_t* free_top = cs.free_top;
+    for (; cur != end; ++cur) {
+        const uint8_t s = *cur;
+        KernelTriangle& kt = pool[s];
+        if (kt.tri >= limit) break;
+        run_kernel_triangle(kt, bt.zrow, bt.row_end, bt.target);
+        if (kt.row < kt.end) *nxt++ = s;
+        else *free_top++ = s;
+    }
+    cs.cur = cur;
+    cs.nxt = nxt;
+    cs.free_top = free_top;
+}
+
+/// The bands of draw_zbuffer_binned() for flat RGB565 over 16-bit depth: kernel set-ups carried in
+/// slots. A class rather than lambdas: the per-triangle code reaches the band's state through `this`
+/// (GCC rebuilt a closure of sixteen references per triangle).
+class KernelBands {
+public:
+    KernelBands(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                const FrameView<Rgb565Format, uint16_t>& buffers, const DrawOptions& opt, BinnedScratch& scratch,
+                BinnedStats& out, FrameStats& st)
+        : view_(view), mesh_(mesh), verts_(verts), buffers_(buffers), opt_(opt), shading_(view, opt), out_(out), st_(st),
+          next_(scratch.next.data()), head_(scratch.head.data()), pool_(scratch.carried.data()),
+          free_base_(scratch.slots.data() + 2 * scratch.carried.size()),
+          kband_(kernel_band(buffers.width, buffers.height, 0, buffers.height, buffers.stride * 2)),
+          bt_{{static_cast<intptr_t>(reinterpret_cast<uintptr_t>(buffers.color) - reinterpret_cast<uintptr_t>(buffers.depth)),
+               kband_.stride_bytes},
+              buffers.depth, 0},
+          io_{&kband_, 0, &spare_} {
+        const uint8_t capacity = static_cast<uint8_t>(scratch.carried.size());
+        for (uint8_t k = 0; k < capacity; ++k) free_base_[k] = k;
+        cs_ = {pool_, scratch.slots.data(), scratch.slots.data(), scratch.slots.data() + capacity, free_base_ + capacity};
+    }
+
+    /// Draws band b (rows [y0, y1)) after clearing it; false when done() refuses it.
+    template <class BandDone>
+    bool band(size_t b, size_t bands, int32_t y0, int32_t y1, Rgb background, BandDone& done) {
+        band_ = band_view<Rgb565Format, uint16_t>(buffers_.color, buffers_.depth, buffers_.width, buffers_.height, y0, y1);
+        clear(band_, background);
+        band_bb_ = band_bounds(band_);
+        kband_.row_from = y0;
+        bt_.row_end = y1;
+        next_head_ = b + 1 < bands ? &head_[b + 1] : nullptr;
+        insert_prev_ = kNoTriangle;
+        const uint8_t* const band_cur = cs_.cur;
+        uint8_t* const band_nxt = cs_.nxt;
+        for (uint16_t t = head_[b];;) {
+            if (cs_.cur != cs_.cur_end && pool_[*cs_.cur].tri < t)
+                resume_carried(cs_, t, bt_);  // the carried triangles before t, in mesh order
+            if (t == kNoTriangle) break;
+            const uint16_t tri = t;
+            t = next_[t];
+            new_triangle(tri);
+        }
+        out_.carried += static_cast<uint32_t>(cs_.cur - band_cur);
+        out_.carried_high_water = max<uint32_t>(out_.carried_high_water, static_cast<uint32_t>(cs_.nxt - band_nxt));
+        cs_.cur = band_nxt;  // the next band resumes what this one carried
+        cs_.cur_end = cs_.nxt;
+        cs_.nxt = const_cast<uint8_t*>(band_cur);
+        return done(band_);
+    }
+
+private:
+    /// A triangle of this band's list: set up in a free slot (or the spare), its rows drawn; continuing
+    /// into the next band in its slot, or re-linked there when it has none.
+    __attribute__((noinline)) void new_triangle(uint16_t tri) {
+        const Tri& t = mesh_.tris[tri];
+        const ScreenVertex& a = verts_[t.v[0]];
+        const ScreenVertex& b = verts_[t.v[1]];
+        const ScreenVertex& c = verts_[t.v[2]];
+        continues_ = false;
+        if (a.z != 0 && b.z != 0 && c.z != 0) {
+            piece(a, b, c, tri, true);
+        } else {  // clipped pieces are set up again in every band
+            for_each_piece(view_, mesh_, verts_, tri, [this, tri](const ScreenVertex& pa, const ScreenVertex& pb,
+                                                                 const ScreenVertex& pc) { piece(pa, pb, pc, tri, false); });
+        }
+        if (!continues_) return;
+        ++out_.set_up_again;
+        if (next_head_ != nullptr) insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
+    }
+
+    __attribute__((always_inline)) void piece(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                                              uint16_t tri, bool whole) {
+        const int32_t area = TriangleRaster::signed_area(a, b, c);
+        if (area == 0 || (opt_.cull && area > 0)) return;
+        const bool slot = whole && cs_.free_top != free_base_;
+        KernelTriangle& kt = slot ? pool_[cs_.free_top[-1]] : spare_;
+        io_.area = area;
+        io_.out = &kt;
+        const KernelSetup s = kernel_setup(a, b, c, io_);
+        const int32_t y0 = band_.y0, y1 = band_.y1;
+        if (s == KernelSetup::kernel) {
+            const int32_t first = clamp<int32_t>(kt.top, 0, buffers_.height - 1);
+            st_.triangles_drawn += y0 <= first && first < y1;
+            if (kt.row >= kt.end) return;
+            kt.k.color = shading_.color565(mesh_, tri, area < 0);
+            kt.tri = tri;
+            run_kernel_triangle(kt, band_.depth + static_cast<ptrdiff_t>(kt.row - y0) * band_.stride, y1, bt_.target);
+            if (kt.row >= kt.end) return;
+            if (slot) *cs_.nxt++ = *--cs_.free_top;
+            else continues_ = true;
+        } else if (s == KernelSetup::generic) {  // crosses the side columns, or a steep plane
+            draw_raster<false>(a, b, c, area, tri, band_, band_bb_, false, mesh_, shading_, opt_, st_);
+            const int32_t y_max = max<int32_t>(a.y, max<int32_t>(b.y, c.y));
+            continues_ = continues_ || ((y_max - band_bb_.y_origin + kSubpixel - 1) >> kSubpixelBits) > y1;
+        }
+    }
+
+    const View& view_;
+    const Mesh& mesh_;
+    Span<const ScreenVertex> verts_;
+    const FrameView<Rgb565Format, uint16_t>& buffers_;
+    const DrawOptions& opt_;
+    const FaceShading shading_;
+    BinnedStats& out_;
+    FrameStats& st_;
+    uint16_t* const next_;
+    uint16_t* const head_;
+    KernelTriangle* const pool_;
+    uint8_t* const free_base_;
+    CarriedSlots cs_{};
+    KernelBand kband_;
+    KernelBandTarget bt_;
+    KernelTriangle spare_;  // a set-up without a free slot: drawn here, set up again in the next band
+    KernelSetupIo io_;
+    FrameView<Rgb565Format, uint16_t> band_{};
+    BandBounds band_bb_{};
+    uint16_t* next_head_ = nullptr;
+    uint16_t insert_prev_ = kNoTriangle;
+    bool continues_ = false;
+};
+
+/// The bands of draw_zbuffer_binned() for any other format or shading: each band sets up its triangles
+/// and re-links those that continue into the next band.
+template <class Format, class Depth, class BandDone>
+void draw_bands_generic(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                        const FrameView<Format, Depth>& buffers, const DrawOptions& opt, Rgb background,
+                        BinnedScratch& scratch, BandDone& done, BinnedStats& out, FrameStats& st) {
+    const int32_t rows = buffers.y1, width = buffers.width, height = buffers.height;
+    const size_t bands = static_cast<size_t>((height + rows - 1) / rows);
+    uint16_t* const next = scratch.next.data();
+    uint16_t* const head = scratch.head.data();
+    const FaceShading shading(view, opt);
+    for (size_t b = 0; b < bands; ++b) {
+        const int32_t y0 = static_cast<int32_t>(b) * rows, y1 = min(height, y0 + rows);
+        const FrameView<Format, Depth> band = band_view<Format, Depth>(buffers.color, buffers.depth, width, height, y0, y1);
+        clear(band, background);
+        const BandBounds band_bb = band_bounds(band);
+        uint16_t last = kNoTriangle;
+        uint16_t& next_head = b + 1 < bands ? head[b + 1] : last;
+        uint16_t insert_prev = kNoTriangle;
+        for (uint16_t t = head[b]; t != kNoTriangle;) {
+            const uint16_t tri = t;
+            t = next[t];
+            bool continues = false;
+            for_each_piece(view, mesh, verts, tri, [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) {
+                const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
+                if (area == 0 || (opt.cull && area > 0)) return;
+                draw_raster<false>(pa, pb, pc, area, tri, band, band_bb, false, mesh, shading, opt, st);
+                const int32_t y_max = max<int32_t>(pa.y, max<int32_t>(pb.y, pc.y));
+                continues = continues || ((y_max - band_bb.y_origin + kSubpixel - 1) >> kSubpixelBits) > y1;
+            });
+            if (!continues) continue;
+            ++out.set_up_again;
+            if (b + 1 < bands) insert_prev = insert_sorted(next, next_head, insert_prev, tri);
+        }
+        if (!done(band)) {
+            st.status = Status::invalid_argument;
+            return;
+        }
+    }
+}
+}  // namespace detail
+
+/// Draws `mesh` band by band: for each band of `buffers.y1` rows (buffers: a view of rows [0, y1) whose
+/// memory is reused for every band), clears it to `background`, draws every triangle's rows in it and
+/// calls done(band), a FrameView of the band's rows; done() returns false to stop the frame. Same
+/// bytes as clear() + draw_zbuffer() on the whole frame; statistics as the whole frame's. `bs`, if
+/// given, receives the carried-slot figures. Errors: invalid_argument (unusable buffers, a mesh of more
+/// than 65,535 triangles, scratch too small: next < triangles, head < bands, slots < 3 x carried, more
+/// than 255 carried slots, or done() returned false). Borrows everything for the call.
+template <class Format, class Depth, class BandDone>
+FrameStats draw_zbuffer_binned(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                               const FrameView<Format, Depth>& buffers, const DrawOptions& opt, Rgb background,
+                               BinnedScratch& scratch, BandDone&& done, BinnedStats* bs = nullptr) {
+    FrameStats st;
+    const int32_t rows = buffers.y1, height = buffers.height;
+    const size_t tri_count = mesh.tris.size();
+    const size_t bands = buffers.valid() ? static_cast<size_t>((height + rows - 1) / rows) : 0;
+    if (!buffers.valid() || buffers.y0 != 0 || buffers.depth == nullptr || buffers.width != view.width ||
+        height != view.height || verts.size() < mesh.positions.size() || tri_count > detail::kNoTriangle ||
+        scratch.next.size() < tri_count || scratch.head.size() < bands || scratch.carried.size() > 255 ||
+        scratch.slots.size() < 3 * scratch.carried.size()) {
+        st.status = Status::invalid_argument;
+        return st;
+    }
+    for (size_t b = 0; b < bands; ++b) scratch.head[b] = detail::kNoTriangle;
+    st.triangles_in = static_cast<uint32_t>(tri_count);
+    const BandBounds bb = band_bounds(band_view<Format, Depth>(nullptr, nullptr, buffers.width, height, 0, height));
+    const uint32_t band_scale = ((uint32_t{1} << 20) + static_cast<uint32_t>(rows) - 1) / static_cast<uint32_t>(rows);
+    detail::bin_triangles(view, mesh, verts, opt.cull, bb, height, band_scale, scratch.next.data(), scratch.head.data(), st);
+    BinnedStats local;
+    BinnedStats& out = bs != nullptr ? *bs : local;
+    if constexpr (detail::is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2) {
+        if (opt.shade != Shade::depth) {
+            detail::KernelBands kb(view, mesh, verts, buffers, opt, scratch, out, st);
+            for (size_t b = 0; b < bands; ++b) {
+                const int32_t y0 = static_cast<int32_t>(b) * rows;
+                if (!kb.band(b, bands, y0, min(height, y0 + rows), background, done)) {
+                    st.status = Status::invalid_argument;
+                    break;
+                }
+            }
+            return st;
+        }
+    }
+    detail::draw_bands_generic(view, mesh, verts, buffers, opt, background, scratch, done, out, st);
+    return st;
+}
+
+}  // namespace hider

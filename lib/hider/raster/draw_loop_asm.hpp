@@ -1,0 +1,368 @@
+// The z-buffer's triangle loop for the row kernel on Cortex-M (Thumb-1 on ARMv6-M, Thumb-2 on ARMv7-M):
+// per mesh triangle the drawable test, the snapped area and the cull, then for the drawn ones the chip's
+// kernel set-up, the headlight colour (FaceShading::color565()) and its run_kernel_triangle. GCC kept
+// the loop's state on the stack (about 60 instructions a culled face and 120 around each drawn one's
+// calls on the M0+); here the triangle, the context and the vertex array stay in registers. Triangles
+// with a vertex outside a clip plane and those the set-up calls generic go back to the C++ loop
+// (zbuffer.hpp), which does exactly what it did before.
+// firmware/kernelcheck draws random meshes both ways and compares the frames and statistics.
+#pragma once
+#include <hider/raster/kernel_triangle.hpp>
+#include <hider/shade.hpp>
+
+namespace hider {
+
+namespace detail {
+/// The Cortex-M draw loops' constants and counters (the layout is their contract).
+struct DrawLoopArm {
+    const Tri* end;              ///< 0
+    const ScreenVertex* verts;   ///< 4
+    uint32_t cull;               ///< 8
+    uint32_t culled;             ///< 12, counted up
+    uint32_t drawn;              ///< 16, counted up (kernel set-ups only: whole frames)
+    KernelSetupIo* io;           ///< 20 (io->out is the triangle record)
+    intptr_t normals_offset;     ///< 24: bytes from a Tri to its Normal14 (both 6 bytes)
+    int32_t unused;              ///< 28
+    int32_t view_z[3];           ///< 32, 36, 40
+    uint32_t base_r, base_g, base_b;  ///< 44, 48, 52
+    uint16_t* depth;             ///< 56
+    int32_t y0;                  ///< 60
+    int32_t stride_bytes;        ///< 64
+    int32_t y1;                  ///< 68
+    const KernelTarget* target;  ///< 72
+};
+static_assert(sizeof(void*) != 4 || (offsetof(DrawLoopArm, view_z) == 32 && offsetof(DrawLoopArm, target) == 72),
+              "draw loop layout");
+static_assert(sizeof(Tri) == 6 && sizeof(Normal14) == 6, "a triangle's normal sits a fixed offset from it");
+
+inline DrawLoopArm draw_loop_arm(const Tri* tris, const Mesh& mesh, Span<const ScreenVertex> verts,
+                                 const FaceShading& shading, bool cull, KernelSetupIo& io, uint16_t* depth, int32_t y0,
+                                 int32_t stride, int32_t y1, const KernelTarget& target) {
+    DrawLoopArm d{};
+    d.end = tris + mesh.tris.size();
+    d.verts = verts.data();
+    d.cull = cull ? 1u : 0u;
+    d.io = &io;
+    d.normals_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(mesh.normals.data()) -
+                                             reinterpret_cast<uintptr_t>(tris));
+    for (int j = 0; j < 3; ++j) d.view_z[j] = shading.view_z(j);
+    d.base_r = shading.options().base.r;
+    d.base_g = shading.options().base.g;
+    d.base_b = shading.options().base.b;
+    d.depth = depth;
+    d.y0 = y0;
+    d.stride_bytes = stride * static_cast<int32_t>(sizeof(uint16_t));
+    d.y1 = y1;
+    d.target = &target;
+    return d;
+}
+}  // namespace detail
+
+#if defined(__ARM_ARCH_6M__)
+/// Draws triangles from p on until one it hands back (a vertex outside a clip plane, or a generic
+/// set-up) or the end; returns that triangle (d->end when none). Culled faces and kernel set-ups are
+/// counted into d. Registers: r4 the triangle, r6 d, r8 the end, r9 the vertices; on the stack the three
+/// vertex pointers and the area.
+__attribute__((naked, noinline)) inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "push   {r4-r7, lr}\n\t"
+        "mov    r4, r8\n\t"
+        "mov    r5, r9\n\t"
+        "push   {r4, r5}\n\t"
+        "sub    sp, #16\n\t"
+        "movs   r4, r0\n\t"
+        "movs   r6, r1\n\t"
+        "ldr    r0, [r6, #0]\n\t"
+        "mov    r8, r0\n\t"
+        "ldr    r0, [r6, #4]\n\t"
+        "mov    r9, r0\n"
+        "1:\n\t"
+        "cmp    r4, r8\n\t"
+        "beq    89f\n\t"
+        "ldrh   r0, [r4]\n\t"
+        "ldrh   r1, [r4, #2]\n\t"
+        "ldrh   r2, [r4, #4]\n\t"
+        "mov    r3, r9\n\t"
+        "lsls   r0, r0, #3\n\t"
+        "adds   r0, r0, r3\n\t"
+        "lsls   r1, r1, #3\n\t"
+        "adds   r1, r1, r3\n\t"
+        "lsls   r2, r2, #3\n\t"
+        "adds   r2, r2, r3\n\t"
+        "ldr    r3, [r0, #4]\n\t"
+        "cmp    r3, #0\n\t"
+        "beq    89f\n\t"                        // a vertex outside a clip plane: back to C++
+        "ldr    r3, [r1, #4]\n\t"
+        "cmp    r3, #0\n\t"
+        "beq    89f\n\t"
+        "ldr    r3, [r2, #4]\n\t"
+        "cmp    r3, #0\n\t"
+        "beq    89f\n\t"
+        "str    r0, [sp, #0]\n\t"
+        "str    r1, [sp, #4]\n\t"
+        "str    r2, [sp, #8]\n\t"
+        "ldr    r0, [r0]\n\t"                   // x | y << 16 of each
+        "ldr    r1, [r1]\n\t"
+        "ldr    r2, [r2]\n\t"
+        "sxth   r3, r0\n\t"                     // ax
+        "sxth   r7, r1\n\t"
+        "subs   r7, r7, r3\n\t"                 // bx - ax
+        "asrs   r1, r1, #16\n\t"
+        "asrs   r0, r0, #16\n\t"                // ay
+        "subs   r1, r1, r0\n\t"                 // by - ay
+        "asrs   r5, r2, #16\n\t"
+        "subs   r5, r5, r0\n\t"                 // cy - ay
+        "sxth   r2, r2\n\t"
+        "subs   r2, r2, r3\n\t"                 // cx - ax
+        "muls   r7, r5, r7\n\t"
+        "muls   r2, r1, r2\n\t"
+        "subs   r7, r7, r2\n\t"                 // signed_area(a, b, c)
+        "beq    8f\n\t"                         // zero: nothing
+        "bmi    2f\n\t"                         // counter-clockwise: drawn
+        "ldr    r0, [r6, #8]\n\t"
+        "cmp    r0, #0\n\t"
+        "beq    2f\n\t"                         // not culling: drawn
+        "ldr    r0, [r6, #12]\n\t"
+        "adds   r0, r0, #1\n\t"
+        "str    r0, [r6, #12]\n"                // culled
+        "8:\n\t"
+        "adds   r4, r4, #6\n\t"
+        "b      1b\n"
+        "89:\n\t"
+        "b      90f\n"
+        "2:\n\t"
+        "str    r7, [sp, #12]\n\t"
+        "ldr    r3, [r6, #20]\n\t"              // io
+        "str    r7, [r3, #4]\n\t"               // io->area
+        "ldr    r0, [sp, #0]\n\t"
+        "ldr    r1, [sp, #4]\n\t"
+        "ldr    r2, [sp, #8]\n\t"
+        "bl     %c[setup]\n\t"
+        "cmp    r0, #1\n\t"
+        "beq    3f\n\t"
+        "cmp    r0, #0\n\t"
+        "beq    8b\n\t"                         // none
+        "b      90f\n"                          // generic: back to C++
+        "3:\n\t"
+        "ldr    r0, [r6, #16]\n\t"
+        "adds   r0, r0, #1\n\t"
+        "str    r0, [r6, #16]\n\t"              // drawn
+        "ldr    r3, [r6, #20]\n\t"
+        "ldr    r5, [r3, #8]\n\t"               // the triangle record
+        "ldrh   r0, [r5, #58]\n\t"
+        "sxth   r0, r0\n\t"                     // row
+        "ldrh   r1, [r5, #62]\n\t"
+        "sxth   r1, r1\n\t"                     // end
+        "cmp    r0, r1\n\t"
+        "bge    8b\n\t"                         // no row
+        // FaceShading::color565(): b = N.z (Q16) from the view rotation's third row, -N.z for a back
+        // face (area > 0), clamped to [0, 2^16]; channel (base b + 2^15) >> 16, packed RGB565.
+        "ldr    r1, [r6, #24]\n\t"
+        "adds   r1, r1, r4\n\t"                 // the triangle's normal
+        "ldrh   r2, [r1]\n\t"
+        "sxth   r2, r2\n\t"
+        "ldr    r3, [r6, #32]\n\t"
+        "muls   r2, r3, r2\n\t"
+        "ldrh   r7, [r1, #2]\n\t"
+        "sxth   r7, r7\n\t"
+        "ldr    r3, [r6, #36]\n\t"
+        "muls   r7, r3, r7\n\t"
+        "adds   r2, r2, r7\n\t"
+        "ldrh   r7, [r1, #4]\n\t"
+        "sxth   r7, r7\n\t"
+        "ldr    r3, [r6, #40]\n\t"
+        "muls   r7, r3, r7\n\t"
+        "adds   r2, r2, r7\n\t"
+        "asrs   r2, r2, #12\n\t"
+        "ldr    r3, [sp, #12]\n\t"
+        "cmp    r3, #0\n\t"
+        "blt    4f\n\t"
+        "negs   r2, r2\n"
+        "4:\n\t"
+        "cmp    r2, #0\n\t"
+        "bge    5f\n\t"
+        "movs   r2, #0\n"
+        "5:\n\t"
+        "movs   r3, #1\n\t"
+        "lsls   r3, r3, #16\n\t"
+        "cmp    r2, r3\n\t"
+        "ble    6f\n\t"
+        "movs   r2, r3\n"
+        "6:\n\t"
+        "movs   r3, #1\n\t"
+        "lsls   r3, r3, #15\n\t"
+        "ldr    r1, [r6, #44]\n\t"
+        "muls   r1, r2, r1\n\t"
+        "adds   r1, r1, r3\n\t"
+        "lsrs   r1, r1, #19\n\t"
+        "lsls   r1, r1, #11\n\t"                // red
+        "ldr    r7, [r6, #48]\n\t"
+        "muls   r7, r2, r7\n\t"
+        "adds   r7, r7, r3\n\t"
+        "lsrs   r7, r7, #18\n\t"
+        "lsls   r7, r7, #5\n\t"
+        "orrs   r1, r7\n\t"                     // green
+        "ldr    r7, [r6, #52]\n\t"
+        "muls   r7, r2, r7\n\t"
+        "adds   r7, r7, r3\n\t"
+        "lsrs   r7, r7, #19\n\t"
+        "orrs   r1, r7\n\t"                     // blue
+        "str    r1, [r5, #52]\n\t"              // k.color
+        "ldr    r1, [r6, #60]\n\t"
+        "subs   r0, r0, r1\n\t"
+        "ldr    r1, [r6, #64]\n\t"
+        "muls   r0, r1, r0\n\t"
+        "ldr    r1, [r6, #56]\n\t"
+        "adds   r1, r1, r0\n\t"                 // the depth row of `row`
+        "movs   r0, r5\n\t"
+        "ldr    r2, [r6, #68]\n\t"
+        "ldr    r3, [r6, #72]\n\t"
+        "bl     %c[kernel]\n\t"
+        "b      8b\n"
+        "90:\n\t"
+        "movs   r0, r4\n\t"
+        "add    sp, #16\n\t"
+        "pop    {r4, r5}\n\t"
+        "mov    r8, r4\n\t"
+        "mov    r9, r5\n\t"
+        "pop    {r4-r7, pc}\n"
+        :
+        : [setup] "i"(kernel_setup_v6m), [kernel] "i"(run_kernel_triangle_v6m));
+}
+#endif
+
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+/// The same loop in Thumb-2 around kernel_setup_v7m() and run_kernel_triangle_v7m(). Registers: r4 the
+/// triangle, r5 d, r6 the end, r7 the vertices, r8 the cull flag, r9 d->io, r10 the area, r11 the faces
+/// culled in this call; on the stack the three vertex pointers.
+__attribute__((naked, noinline)) inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "push   {r4-r11, lr}\n\t"
+        "sub    sp, #12\n\t"
+        "mov    r4, r0\n\t"
+        "mov    r5, r1\n\t"
+        "ldr    r6, [r5, #0]\n\t"
+        "ldr    r7, [r5, #4]\n\t"
+        "ldr    r8, [r5, #8]\n\t"
+        "ldr    r9, [r5, #20]\n\t"
+        "movs   r11, #0\n"
+        "1:\n\t"
+        "cmp    r4, r6\n\t"
+        "beq    90f\n\t"
+        "ldrh   r0, [r4]\n\t"
+        "ldrh   r1, [r4, #2]\n\t"
+        "ldrh   r2, [r4, #4]\n\t"
+        "add    r0, r7, r0, lsl #3\n\t"
+        "add    r1, r7, r1, lsl #3\n\t"
+        "add    r2, r7, r2, lsl #3\n\t"
+        "ldr    r3, [r0, #4]\n\t"
+        "ldr    r12, [r1, #4]\n\t"
+        "ldr    lr, [r2, #4]\n\t"
+        "cmp    r3, #0\n\t"
+        "it     ne\n\t"
+        "cmpne  r12, #0\n\t"
+        "it     ne\n\t"
+        "cmpne  lr, #0\n\t"
+        "beq    90f\n\t"                        // a vertex outside a clip plane: back to C++
+        "stm    sp, {r0, r1, r2}\n\t"
+        "ldr    r0, [r0]\n\t"                   // x | y << 16 of each
+        "ldr    r1, [r1]\n\t"
+        "ldr    r2, [r2]\n\t"
+        "sxth   r3, r0\n\t"                     // ax
+        "sxth   r12, r1\n\t"
+        "sub    r12, r12, r3\n\t"               // bx - ax
+        "sxth   lr, r2\n\t"
+        "sub    lr, lr, r3\n\t"                 // cx - ax
+        "asr    r0, r0, #16\n\t"                // ay
+        "rsb    r1, r0, r1, asr #16\n\t"        // by - ay
+        "rsb    r2, r0, r2, asr #16\n\t"        // cy - ay
+        "mul    r10, r12, r2\n\t"
+        "mls    r10, lr, r1, r10\n\t"           // signed_area(a, b, c)
+        "cmp    r10, #0\n\t"
+        "beq    8f\n\t"                         // zero: nothing
+        "bmi    2f\n\t"                         // counter-clockwise: drawn
+        "cmp    r8, #0\n\t"
+        "beq    2f\n\t"                         // not culling: drawn
+        "adds   r11, r11, #1\n"                  // culled
+        "8:\n\t"
+        "adds   r4, r4, #6\n\t"
+        "b      1b\n"
+        "2:\n\t"
+        "str    r10, [r9, #4]\n\t"              // io->area
+        "ldm    sp, {r0, r1, r2}\n\t"
+        "mov    r3, r9\n\t"
+        "bl     %c[setup]\n\t"
+        "cmp    r0, #1\n\t"
+        "beq    3f\n\t"
+        "cmp    r0, #0\n\t"
+        "beq    8b\n\t"                         // none
+        "b      90f\n"                           // generic: back to C++
+        "3:\n\t"
+        "ldr    r0, [r5, #16]\n\t"
+        "adds   r0, r0, #1\n\t"
+        "str    r0, [r5, #16]\n\t"              // drawn
+        "ldr    r12, [r9, #8]\n\t"              // the triangle record
+        "ldrsh  r0, [r12, #58]\n\t"             // row
+        "ldrsh  r1, [r12, #62]\n\t"             // end
+        "cmp    r0, r1\n\t"
+        "bge    8b\n\t"                         // no row
+        // FaceShading::color565(), as in draw_flat_v6m.
+        "ldr    r1, [r5, #24]\n\t"
+        "add    r1, r1, r4\n\t"                 // the triangle's normal
+        "ldrsh  r2, [r1]\n\t"
+        "ldr    r3, [r5, #32]\n\t"
+        "mul    r2, r3, r2\n\t"
+        "ldrsh  lr, [r1, #2]\n\t"
+        "ldr    r3, [r5, #36]\n\t"
+        "mla    r2, r3, lr, r2\n\t"
+        "ldrsh  lr, [r1, #4]\n\t"
+        "ldr    r3, [r5, #40]\n\t"
+        "mla    r2, r3, lr, r2\n\t"
+        "asr    r2, r2, #12\n\t"
+        "cmp    r10, #0\n\t"
+        "it     ge\n\t"
+        "rsbge  r2, r2, #0\n\t"                 // a back face: -N.z
+        "cmp    r2, #0\n\t"
+        "it     lt\n\t"
+        "movlt  r2, #0\n\t"
+        "cmp    r2, #65536\n\t"
+        "it     gt\n\t"
+        "movgt  r2, #65536\n\t"
+        "mov    r3, #32768\n\t"
+        "ldr    r1, [r5, #44]\n\t"
+        "mla    r1, r2, r1, r3\n\t"
+        "lsr    r1, r1, #19\n\t"
+        "lsl    r1, r1, #11\n\t"                // red
+        "ldr    lr, [r5, #48]\n\t"
+        "mla    lr, r2, lr, r3\n\t"
+        "lsr    lr, lr, #18\n\t"
+        "orr    r1, r1, lr, lsl #5\n\t"         // green
+        "ldr    lr, [r5, #52]\n\t"
+        "mla    lr, r2, lr, r3\n\t"
+        "orr    r1, r1, lr, lsr #19\n\t"        // blue
+        "str    r1, [r12, #52]\n\t"             // k.color
+        "ldr    r1, [r5, #60]\n\t"
+        "sub    r0, r0, r1\n\t"
+        "ldr    r1, [r5, #64]\n\t"
+        "ldr    r2, [r5, #56]\n\t"
+        "mla    r1, r0, r1, r2\n\t"             // the depth row of `row`
+        "mov    r0, r12\n\t"
+        "ldr    r2, [r5, #68]\n\t"
+        "ldr    r3, [r5, #72]\n\t"
+        "bl     %c[kernel]\n\t"
+        "b      8b\n"
+        "90:\n\t"
+        "ldr    r0, [r5, #12]\n\t"
+        "add    r0, r0, r11\n\t"
+        "str    r0, [r5, #12]\n\t"              // culled
+        "mov    r0, r4\n\t"
+        "add    sp, #12\n\t"
+        "pop    {r4-r11, pc}\n"
+        :
+        : [setup] "i"(kernel_setup_v7m), [kernel] "i"(run_kernel_triangle_v7m));
+}
+#endif
+
+}  // namespace hider

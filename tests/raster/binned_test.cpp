@@ -1,0 +1,201 @@
+// The binned band renderer against the whole frame: draw_zbuffer_binned() through one band-sized buffer
+// must give exactly clear() + draw_zbuffer() on the whole frame, with the same statistics, for every
+// shipped model, pixel format, depth size and shading, any band height and any number of carried slots
+// (none, too few, plenty); and it refuses what it cannot do.
+#include <hider/raster/binned.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <doctest/doctest.h>
+
+#include "support/scene_util.hpp"
+
+using namespace hider;
+
+namespace {
+
+constexpr Rgb kBackground{7, 9, 11};
+
+template <class Pixel>
+bool same_bytes(const std::vector<Pixel>& a, const std::vector<Pixel>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Pixel)) == 0;
+}
+
+struct Projected {
+    View view;
+    std::vector<ScreenVertex> verts;
+    DrawOptions opt;
+};
+
+Projected project(const tool::Scene& s, bool cull, Shade shade) {
+    Projected p;
+    REQUIRE(make_view(s.camera, s.width, s.height, p.view) == Status::ok);
+    const Mesh mesh = s.mesh();
+    p.verts.resize(mesh.positions.size());
+    p.opt.cull = cull;
+    p.opt.shade = shade;
+    REQUIRE(project_vertices(p.view, mesh.positions, {p.verts.data(), p.verts.size()}, &p.opt.depth_range) == Status::ok);
+    return p;
+}
+
+template <class Format, class Depth>
+std::vector<typename Format::Pixel> whole_frame(const tool::Scene& s, const Projected& p, FrameStats& st) {
+    std::vector<typename Format::Pixel> color(static_cast<size_t>(s.width) * s.height);
+    std::vector<Depth> depth(color.size());
+    const auto frame = frame_view<Format, Depth>(color.data(), depth.data(), s.width, s.height);
+    clear(frame, kBackground);
+    st = draw_zbuffer<false>(p.view, s.mesh(), {p.verts.data(), p.verts.size()}, frame, p.opt);
+    return color;
+}
+
+/// Scratch sized for the mesh, with `slots` carried set-ups.
+struct Scratch {
+    std::vector<uint16_t> next, head;
+    std::vector<KernelTriangle> carried;
+    std::vector<uint8_t> order;
+    BinnedScratch view;
+    Scratch(size_t tris, size_t bands, size_t slots)
+        : next(tris), head(bands), carried(slots), order(3 * slots),
+          view{{next.data(), next.size()}, {head.data(), head.size()}, {carried.data(), carried.size()},
+               {order.data(), order.size()}} {}
+};
+
+template <class Format, class Depth>
+std::vector<typename Format::Pixel> binned(const tool::Scene& s, const Projected& p, int32_t rows, size_t slots,
+                                           FrameStats& st, BinnedStats& bs) {
+    std::vector<typename Format::Pixel> color(static_cast<size_t>(s.width) * rows), out;
+    std::vector<Depth> depth(color.size());
+    const auto buffers = band_view<Format, Depth>(color.data(), depth.data(), s.width, s.height, 0, rows);
+    Scratch scratch(s.tris.size(), static_cast<size_t>((s.height + rows - 1) / rows), slots);
+    int32_t next_row = 0;
+    st = draw_zbuffer_binned(p.view, s.mesh(), {p.verts.data(), p.verts.size()}, buffers, p.opt, kBackground, scratch.view,
+                             [&](const FrameView<Format, Depth>& band) {
+                                 CHECK(band.y0 == next_row);
+                                 next_row = band.y1;
+                                 out.insert(out.end(), band.color, band.color + static_cast<size_t>(band.rows()) * s.width);
+                                 return true;
+                             }, &bs);
+    CHECK(next_row == s.height);
+    return out;
+}
+
+template <class Format, class Depth>
+void check_model(const std::string& name, const tool::Scene& s, bool cull, Shade shade) {
+    const Projected p = project(s, cull, shade);
+    FrameStats full_st;
+    const auto full = whole_frame<Format, Depth>(s, p, full_st);
+    REQUIRE(full_st.ok());
+    for (int32_t rows : {1, 3, 8, 61, s.height})
+        for (size_t slots : {size_t{0}, size_t{2}, size_t{255}}) {
+            CAPTURE(name);
+            CAPTURE(rows);
+            CAPTURE(slots);
+            FrameStats st;
+            BinnedStats bs;
+            const auto got = binned<Format, Depth>(s, p, rows, slots, st, bs);
+            CHECK(st.ok());
+            CHECK(same_bytes(got, full));
+            CHECK(st.triangles_in == full_st.triangles_in);
+            CHECK(st.triangles_drawn == full_st.triangles_drawn);
+            CHECK(st.triangles_culled == full_st.triangles_culled);
+            CHECK(st.triangles_clipped == full_st.triangles_clipped);
+            CHECK(st.triangles_outside == full_st.triangles_outside);
+            CHECK(bs.carried_high_water <= slots);
+            if (slots == 0) CHECK(bs.carried == 0);
+        }
+}
+
+tool::CameraArgs torus_view() {
+    tool::CameraArgs cam;
+    cam.eye = tool::Vec3d{0, 0, -2.5};
+    cam.target = tool::Vec3d{0, 0, 0};
+    cam.fov_deg = 73.7398;
+    cam.near = 0.25;
+    return cam;
+}
+
+}  // namespace
+
+TEST_CASE("binned bands give exactly the whole frame on every shipped model, format and slot count") {
+    std::vector<std::string> models;
+    for (const auto& e : std::filesystem::directory_iterator(std::string(HIDER_TEST_DATA) + "/models"))
+        if (e.path().extension() == ".obj") models.push_back(e.path().filename().string());
+    std::sort(models.begin(), models.end());
+    REQUIRE(models.size() >= 9);
+    for (const std::string& name : models) {
+        const tool::Scene s = test::load_model(name, name == "torus.obj" ? torus_view() : tool::CameraArgs{});
+        if (s.tris.size() > 65535) continue;  // refused: see the next test
+        check_model<Rgb565Format, uint16_t>(name, s, true, Shade::headlight);
+        check_model<Rgb565Format, uint16_t>(name, s, false, Shade::id);
+        check_model<Rgb888Format, uint32_t>(name, s, true, Shade::headlight);
+        check_model<Grey8Format, uint16_t>(name, s, false, Shade::depth);
+    }
+}
+
+TEST_CASE("binned bands carry set-ups across bands, and set them up again when the slots run out") {
+    const tool::Scene s = test::load_model("torus.obj", torus_view());
+    const Projected p = project(s, true, Shade::headlight);
+    FrameStats st;
+    BinnedStats plenty, none, few;
+    (void)binned<Rgb565Format, uint16_t>(s, p, 4, 255, st, plenty);
+    (void)binned<Rgb565Format, uint16_t>(s, p, 4, 0, st, none);
+    (void)binned<Rgb565Format, uint16_t>(s, p, 4, 8, st, few);
+    const uint32_t continuations = plenty.carried + plenty.set_up_again;
+    CHECK(plenty.carried > 1000);      // about 12 rows a triangle in 4-row bands
+    CHECK(plenty.set_up_again < 10);   // only the few triangles the kernel set-up leaves to TriangleRaster
+    CHECK(plenty.carried_high_water > 8);
+    CHECK(none.carried == 0);
+    CHECK(none.set_up_again == continuations);  // every continuation set up again
+    CHECK(few.carried_high_water == 8);
+    CHECK(few.carried + few.set_up_again == continuations);
+    CHECK(few.set_up_again > plenty.set_up_again);
+}
+
+TEST_CASE("draw_zbuffer_binned refuses scratch too small, big meshes and a sink that stops") {
+    const tool::Scene s = test::load_model("torus.obj", torus_view());
+    const Projected p = project(s, true, Shade::headlight);
+    std::vector<uint16_t> color(static_cast<size_t>(s.width) * 8), depth(color.size());
+    const auto buffers = band_view<Rgb565Format, uint16_t>(color.data(), depth.data(), s.width, s.height, 0, 8);
+    const Mesh mesh = s.mesh();
+    int calls = 0;
+    auto count = [&](const FrameView<Rgb565Format, uint16_t>&) { return ++calls < 3; };
+    auto draw = [&](Scratch& sc) {
+        return draw_zbuffer_binned(p.view, mesh, {p.verts.data(), p.verts.size()}, buffers, p.opt, kBackground, sc.view, count);
+    };
+    SUBCASE("next shorter than the triangles") {
+        Scratch sc(s.tris.size() - 1, 30, 4);
+        CHECK(draw(sc).status == Status::invalid_argument);
+        CHECK(calls == 0);
+    }
+    SUBCASE("head shorter than the bands") {
+        Scratch sc(s.tris.size(), 29, 4);
+        CHECK(draw(sc).status == Status::invalid_argument);
+    }
+    SUBCASE("slots fewer than three per carried set-up") {
+        Scratch sc(s.tris.size(), 30, 4);
+        sc.view.slots = {sc.order.data(), 11};
+        CHECK(draw(sc).status == Status::invalid_argument);
+    }
+    SUBCASE("more than 255 carried slots") {
+        Scratch sc(s.tris.size(), 30, 256);
+        CHECK(draw(sc).status == Status::invalid_argument);
+    }
+    SUBCASE("a sink that stops after its third band") {
+        Scratch sc(s.tris.size(), 30, 4);
+        CHECK(draw(sc).status == Status::invalid_argument);
+        CHECK(calls == 3);
+    }
+    SUBCASE("a mesh of more than 65,535 triangles") {
+        const tool::Scene bunny = test::load_model("stanford-bunny.obj");
+        REQUIRE(bunny.tris.size() > 65535);
+        const Projected bp = project(bunny, true, Shade::headlight);
+        Scratch sc(bunny.tris.size(), 30, 4);
+        const auto bb = band_view<Rgb565Format, uint16_t>(color.data(), depth.data(), bunny.width, bunny.height, 0, 8);
+        CHECK(draw_zbuffer_binned(bp.view, bunny.mesh(), {bp.verts.data(), bp.verts.size()}, bb, bp.opt, kBackground,
+                                  sc.view, count).status == Status::invalid_argument);
+    }
+}
