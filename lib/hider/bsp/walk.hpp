@@ -47,9 +47,22 @@ inline int eye_side(const BspTree& tree, const BspNode& n, const Vec3q16& eye) {
     return s.sign();
 }
 
-/// floor(a / b) and ceil(a / b) for b > 0 (int64).
+/// floor(a / b) for b > 0 (int64).
 inline int64_t floor_div64(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-inline int64_t ceil_div64(int64_t a, int64_t b) { return -floor_div64(-a, b); }
+
+/// floor(num / (256 w)) for 0 < w, |num| < 2^63, as floor(floor(num / 256) / w): for w < 2^32 by one
+/// 64/32-bit division (udiv64_32), a quotient past 32 bits given as +-2^32 (the callers clamp to the
+/// guard band, far inside that).
+inline int64_t floor_over_256w(int64_t num, int64_t w) {
+    if (w >= (int64_t{1} << 32)) return floor_div64(num, 256 * w);
+    const int64_t a = num >> 8;  // floor(num / 256)
+    const uint64_t ua = a < 0 ? static_cast<uint64_t>(-(a + 1)) : static_cast<uint64_t>(a);  // a < 0: -floor(ua / w) - 1
+    const uint32_t uw = static_cast<uint32_t>(w);
+    if ((ua >> 32) >= uw) return a < 0 ? -(int64_t{1} << 32) : (int64_t{1} << 32);
+    uint32_t rem = 0;
+    const int64_t q = udiv64_32(ua, uw, rem);
+    return a < 0 ? -q - 1 : q;
+}
 
 /// Where a subtree's box lies against a band: outside it (skip), reaching the near plane (its projection
 /// is unbounded), or in front of the eye with a pixel rectangle computed on request.
@@ -121,8 +134,8 @@ inline PixelRect subtree_rect(const View& view, const SubtreeBox& b, const BandB
     const int64_t xl = b.cx - b.ex, xh = b.cx + b.ex, yl = b.cy - b.ey, yh = b.cy + b.ey;
     const int64_t k = view.k_q8;
     // Extremes at the nearest or farthest w by the coordinate's sign.
-    auto lo_over = [&](int64_t v) { return floor_div64(v * k, 256 * (v >= 0 ? w_far : w_near)); };
-    auto hi_over = [&](int64_t v) { return ceil_div64(v * k, 256 * (v >= 0 ? w_near : w_far)); };
+    auto lo_over = [&](int64_t v) { return floor_over_256w(v * k, v >= 0 ? w_far : w_near); };
+    auto hi_over = [&](int64_t v) { return -floor_over_256w(-v * k, v >= 0 ? w_near : w_far); };  // the ceiling
     ScreenBox box{static_cast<int32_t>(clamp<int64_t>(lo_over(xl) - 1, -kCoordLimit, kCoordLimit)),
                   static_cast<int32_t>(clamp<int64_t>(hi_over(xh) + 1, -kCoordLimit, kCoordLimit)),
                   static_cast<int32_t>(clamp<int64_t>(-hi_over(yh) - 1, -kCoordLimit, kCoordLimit)),

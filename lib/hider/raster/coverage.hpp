@@ -54,7 +54,8 @@ public:
     /// Writes shade(z) to the uncovered pixels of [x0, x1) on row y (z stepped by dz per pixel) and
     /// marks them covered; returns how many it wrote. Precondition: 0 <= x0, x1 <= width, y in the band.
     template <class Pixel, class Shader>
-    uint32_t paint_span(Pixel* crow, int32_t y, int32_t x0, int32_t x1, uint32_t z, uint32_t dz, const Shader& shade) {
+    uint32_t paint_span(Pixel* crow, int32_t y, int32_t x0, int32_t x1, uint32_t z, uint32_t dz, const Shader& shader) {
+        const Shader shade = shader;  // a local copy: the pixel stores cannot alias it, so a flat colour stays in a register
         uint32_t* cov = words_ + static_cast<ptrdiff_t>(y - y0_) * wpr_;
         uint32_t written = 0;
         int32_t x = x0;

@@ -158,25 +158,20 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
 /// ScreenVertex (or outside mark) for the same view. For walks that project only what they draw.
 inline void project_vertex(const View& view, const PreparedTransform& to_view, const Vec3q16& position, ScreenVertex& out) {
     const ViewPoint p = to_view_point(to_view, position);
-    const ScaledXY xy = scaled_xy(view, p);
-    const uint8_t code = outcode(view, p, xy);
-    if (code != 0) {
-        out.mark_outside(code);
-        return;
+    if constexpr (kSlow64BitDivide && kHardwareDivide32) {  // the common case as project_vertices() takes it
+        if (detail::project_common(view, p, out)) return;
     }
-    const ScreenVertex s = project(view, p, xy);
-    out.x = s.x;
-    out.y = s.y;
-    out.z = s.z;
+    detail::project_one(view, p, out);
 }
 
 /// Marks every vertex as not projected yet (x = y = z = 0, which project_vertex() never gives), for a
 /// walk that projects on first use (draw_bsp()): once per frame, before the first band.
 inline void mark_unprojected(Span<ScreenVertex> verts) {
-    for (ScreenVertex& v : verts) {
-        v.x = 0;
-        v.y = 0;
-        v.z = 0;
+    ScreenVertex* v = verts.data();
+    for (ScreenVertex* const end = v + verts.size(); v != end; ++v) {
+        v->x = 0;
+        v->y = 0;
+        v->z = 0;
     }
 }
 
