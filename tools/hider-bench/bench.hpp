@@ -48,6 +48,7 @@ int raytrace_command(const Args& args);      ///< hider-bench raytrace ... (ray.
 int raytrace_run_command(const Args& args);  ///< internal: the demo's rows, one measured call each
 int raycast_command(const Args& args);       ///< hider-bench raycast ... (ray.cpp)
 int raycast_run_command(const Args& args);   ///< internal: a ray-cast frame, or sampled rays (BVH / brute force)
+int bsp_command(const Args& args);           ///< hider-bench bsp ... (bsp.cpp)
 
 /// Directory of the benchmark models: HIDER_BENCH_MODELS_DIR (the source tree's tests/data/models).
 std::string default_models_dir();
@@ -141,6 +142,19 @@ struct ProcessResult {
 /// given files. On a spawn or wait failure returns false with `error` set.
 bool run_process(const Args& argv, const std::string& cwd, const Args& env, const std::string& stdout_file,
                  const std::string& stderr_file, ProcessResult& result, std::string& error);
+
+/// The .obj files of a models directory, sorted by name; exits when there are none.
+std::vector<std::string> model_files(const std::string& dir);
+
+/// The insncount plugin's counts of one firmware run (tools/qemu-insncount/run.sh).
+struct TargetCount {
+    uint64_t region = 0, pairs = 0, max = 0;  ///< bench_begin..bench_end summed, pairs, the largest pair
+};
+
+/// Runs `elf` (relative to build tree `tree` of `preset`) on `machine` (big|small) under QEMU with the
+/// plugin of that tree. False when the ELF is not there; exits with a message when the run fails.
+bool firmware_count(const std::filesystem::path& tree, const std::string& preset, const std::string& elf,
+                    const std::string& machine, TargetCount& c);
 
 /// What one callgrind run produced.
 struct CallgrindRun {

@@ -37,6 +37,9 @@ const char* kUsage =
     "       hider-bench raytrace [--valgrind PATH] [--build-root DIR] [--scene FILE.txt]\n"
     "         instructions per pixel (mean, worst row) of the ray-traced demo scene: host (callgrind) and\n"
     "         firmware/raytrace of each cross build tree under QEMU\n"
+    "       hider-bench bsp [--models DIR] [--build-root DIR]\n"
+    "         the BSP compiler on every model and the city at two heuristic settings, the walks' statistics,\n"
+    "         and firmware/bsp's instruction counts under QEMU for each cross build tree\n"
     "       hider-bench raycast [--models DIR] [--valgrind PATH]\n"
     "         callgrind Ir per ray of mesh ray casting (torus, bunny), BVH against brute force\n"
     "exit status: 0 ok, 2 error, 77 valgrind (targets: every cross build tree) not found\n";
@@ -129,6 +132,7 @@ int main(int argc, char** argv) {
     if (command == "raytrace-run") return raytrace_run_command(args);
     if (command == "raycast") return raycast_command(args);
     if (command == "raycast-run") return raycast_run_command(args);
+    if (command == "bsp") return bsp_command(args);
     if (command == "-h" || command == "--help") {
         std::cout << kUsage;
         return 0;

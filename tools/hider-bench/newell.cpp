@@ -26,18 +26,6 @@ const std::vector<std::string> kSoups = {"dense-1-150", "dense-1-300", "dense-1-
 /// scene its own camera.
 Args camera_for(const std::string& file) { return file == "torus.obj" ? torus_view("320x240") : Args{}; }
 
-std::vector<std::string> model_files(const std::string& dir) {
-    std::vector<std::string> files;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-        if (entry.is_regular_file() && entry.path().extension() == ".obj")
-            files.push_back(entry.path().filename().string());
-    if (ec) fail(dir + ": cannot list models: " + ec.message());
-    std::sort(files.begin(), files.end());
-    if (files.empty()) fail(dir + ": no .obj models");
-    return files;
-}
-
 /// "key value" pairs of the line newell-run prints (starting with "newell ").
 std::map<std::string, uint64_t> parse_newell_line(const std::string& out) {
     std::map<std::string, uint64_t> v;
@@ -186,6 +174,18 @@ int newell_command(const Args& args) {
         }
     }
     return 0;
+}
+
+std::vector<std::string> model_files(const std::string& dir) {
+    std::vector<std::string> files;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+        if (entry.is_regular_file() && entry.path().extension() == ".obj")
+            files.push_back(entry.path().filename().string());
+    if (ec) fail(dir + ": cannot list models: " + ec.message());
+    std::sort(files.begin(), files.end());
+    if (files.empty()) fail(dir + ": no .obj models");
+    return files;
 }
 
 }  // namespace hider::tool::bench

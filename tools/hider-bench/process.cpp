@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -96,6 +97,41 @@ bool run_process(const Args& argv, const std::string& cwd, const Args& env, cons
     }
     result.exited = WIFEXITED(status);
     result.status = result.exited ? WEXITSTATUS(status) : 0;
+    return true;
+}
+
+}  // namespace hider::tool::bench
+
+namespace hider::tool::bench {
+
+bool firmware_count(const std::filesystem::path& tree, const std::string& preset, const std::string& elf_rel,
+                    const std::string& machine, TargetCount& c) {
+    namespace fs = std::filesystem;
+    const fs::path elf = tree / elf_rel;
+    if (!fs::is_regular_file(elf)) return false;
+    const TempDir tmp;
+    const fs::path counts = tmp.path() / "counts.txt";
+    Args env;
+    std::ifstream cache(tree / "CMakeCache.txt");
+    for (std::string line; std::getline(cache, line);) {
+        if (line.rfind("HIDER_INSNCOUNT_PLUGIN:", 0) == 0) {
+            const std::string plugin = line.substr(line.find('=') + 1);
+            if (fs::is_regular_file(plugin)) env.push_back("INSNCOUNT_PLUGIN=" + plugin);
+        } else if (line.rfind("CMAKE_NM:", 0) == 0) {
+            env.push_back("NM=" + line.substr(line.find('=') + 1));
+        }
+    }
+    ProcessResult result;
+    std::string error;
+    const Args argv = {"sh", (source_root() / "tools/qemu-insncount/run.sh").string(), preset, elf.string(), counts.string(), machine};
+    if (!run_process(argv, tmp.path().string(), env, (tmp.path() / "o").string(), (tmp.path() / "e").string(), result, error))
+        fail(error);
+    if (!result.exited || result.status != 0)
+        fail(elf.string() + ": run under QEMU failed (" + result.describe() + "):\n" + read_text(tmp.path() / "e"));
+    unsigned long long total = 0, region = 0, pairs = 0, max = 0;
+    if (std::sscanf(read_text(counts).c_str(), "insncount total=%llu region=%llu pairs=%llu max=%llu", &total, &region, &pairs, &max) != 4)
+        fail(elf.string() + ": no counts from the insncount plugin");
+    c = {region, pairs, max};
     return true;
 }
 

@@ -57,38 +57,9 @@ std::vector<uint64_t> callgrind_per_call(const std::string& valgrind, const std:
     return counts;
 }
 
-struct TargetCount {
-    uint64_t region = 0, pairs = 0, max = 0;
-};
-
-/// Runs firmware/raytrace/raytrace.elf of build tree `tree` under QEMU with the insncount plugin.
+/// firmware/raytrace/raytrace.elf of build tree `tree` on the small machine.
 bool target_count(const fs::path& tree, const std::string& preset, TargetCount& c) {
-    const fs::path elf = tree / "firmware/raytrace/raytrace.elf";
-    if (!fs::is_regular_file(elf)) return false;
-    const TempDir tmp;
-    const fs::path counts = tmp.path() / "counts.txt";
-    Args env;
-    std::ifstream cache(tree / "CMakeCache.txt");
-    for (std::string line; std::getline(cache, line);) {
-        if (line.rfind("HIDER_INSNCOUNT_PLUGIN:", 0) == 0) {
-            const std::string plugin = line.substr(line.find('=') + 1);
-            if (fs::is_regular_file(plugin)) env.push_back("INSNCOUNT_PLUGIN=" + plugin);
-        } else if (line.rfind("CMAKE_NM:", 0) == 0) {
-            env.push_back("NM=" + line.substr(line.find('=') + 1));
-        }
-    }
-    ProcessResult result;
-    std::string error;
-    const Args argv = {"sh", (source_root() / "tools/qemu-insncount/run.sh").string(), preset, elf.string(), counts.string(), "small"};
-    if (!run_process(argv, tmp.path().string(), env, (tmp.path() / "o").string(), (tmp.path() / "e").string(), result, error))
-        fail(error);
-    if (!result.exited || result.status != 0)
-        fail(elf.string() + ": run under QEMU failed (" + result.describe() + "):\n" + read_text(tmp.path() / "e"));
-    unsigned long long total = 0, region = 0, pairs = 0, max = 0;
-    if (std::sscanf(read_text(counts).c_str(), "insncount total=%llu region=%llu pairs=%llu max=%llu", &total, &region, &pairs, &max) != 4)
-        fail(elf.string() + ": no counts from the insncount plugin");
-    c = {region, pairs, max};
-    return true;
+    return firmware_count(tree, preset, "firmware/raytrace/raytrace.elf", "small", c);
 }
 
 RayScene load_demo(const std::string& path) {
