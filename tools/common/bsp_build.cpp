@@ -506,9 +506,10 @@ std::vector<uint8_t> bsp_blob(const BspBuilt& tree, const BspFit& fit) {
     h.vertex_count = static_cast<uint32_t>(tree.vertices.size());
     h.max_depth = tree.max_depth;
     h.total_size = static_cast<uint32_t>(l.total);
-    h.checksum = fnv1a(blob.data() + sizeof(BspHeader), blob.size() - sizeof(BspHeader));
     for (int i = 0; i < 3; ++i) h.centre[i] = to_scaled(fit.centre[i]);
     h.scale = to_scaled(fit.scale);
+    std::memcpy(blob.data(), &h, sizeof h);
+    h.checksum = bsp_checksum(blob.data(), blob.size());  // over the header too, so after it is in place
     std::memcpy(blob.data(), &h, sizeof h);
     return blob;
 }
