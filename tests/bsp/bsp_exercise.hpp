@@ -4,6 +4,10 @@
 // (tests/fuzz/bsp_load_fuzz.cpp), so an input one of them finds replays in the other. Every buffer is a
 // std::vector of exactly the size lib/ is promised, so under ASan a read or write past it is caught.
 #pragma once
+// walk.hpp uses for_each_clipped and project_vertices without including their headers (left to the
+// project lead, who is editing walk.hpp); included here so the fuzzer, which includes nothing else, builds.
+#include <hider/raster/clip.hpp>
+#include <hider/raster/vertices.hpp>
 #include <hider/bsp/walk.hpp>
 
 #include <cstring>
