@@ -7,7 +7,7 @@
 // only forward (the tree has no cycle).
 //
 // Byte layout (all little-endian, the blob 8-byte aligned):
-//   header    64 B  magic "HBSP", version, sizes, counts, max depth, checksum, the world transform; the
+//   header    64 B  magic "HBSP", version, sizes, counts, the tree's depth, checksum, world transform; the
 //                   checksum covers every byte of the blob but its own four (bsp_checksum)
 //   nodes     64 B each, in preorder with the front child first: node 0 is the root (absent when
 //             node_count == 0), a node's front child (if any) follows it, its back child follows the
@@ -53,7 +53,7 @@ struct __attribute__((may_alias)) BspHeader {
     uint16_t version;
     uint16_t header_size;   ///< sizeof(BspHeader)
     uint32_t node_count, triangle_count, vertex_count;
-    uint32_t max_depth;     ///< nodes on the longest root-to-leaf path
+    uint32_t max_depth;     ///< nodes on the longest root-to-leaf path, exactly (bsp_load checks it)
     uint32_t total_size;    ///< bytes of the whole blob
     uint32_t checksum;      ///< bsp_checksum(): FNV-1a of the whole blob but this field
     BspScaled centre[3];    ///< world = (model - centre) * scale
