@@ -523,9 +523,12 @@ std::vector<uint8_t> bsp_blob(const BspBuilt& tree, const BspFit& fit) {
     const BspLayout l = bsp_layout(static_cast<uint32_t>(tree.nodes.size()), static_cast<uint32_t>(tree.triangles.size()),
                                    static_cast<uint32_t>(tree.vertices.size()));
     std::vector<uint8_t> blob(l.total, 0);
-    std::memcpy(blob.data() + l.nodes, tree.nodes.data(), tree.nodes.size() * sizeof(BspNode));
-    std::memcpy(blob.data() + l.triangles, tree.triangles.data(), tree.triangles.size() * sizeof(BspTriangle));
-    std::memcpy(blob.data() + l.vertices, tree.vertices.data(), tree.vertices.size() * sizeof(BspVertex));
+    // (memcpy from an empty vector's null data() is undefined even for 0 bytes: an empty tree.)
+    if (!tree.nodes.empty()) std::memcpy(blob.data() + l.nodes, tree.nodes.data(), tree.nodes.size() * sizeof(BspNode));
+    if (!tree.triangles.empty())
+        std::memcpy(blob.data() + l.triangles, tree.triangles.data(), tree.triangles.size() * sizeof(BspTriangle));
+    if (!tree.vertices.empty())
+        std::memcpy(blob.data() + l.vertices, tree.vertices.data(), tree.vertices.size() * sizeof(BspVertex));
     BspHeader h{};
     h.magic = kBspMagic;
     h.version = kBspVersion;
