@@ -3,14 +3,15 @@
 #   host: compiler, CMake, Ninja (enough to render the demo)
 #   web:  host + clang 14 for wasm32-wasi (wasi-libc, libc++ and compiler-rt for wasm32, lld) and python3:
 #         builds and serves the web playground (scripts/demo.sh --web)
-#   all:  host + web + doctest, valgrind, the ARM and RISC-V cross compilers, QEMU and Chromium (every test)
+#   all:  host + web + doctest, valgrind, clang's x86-64 runtimes (libFuzzer, ASan, UBSan: the BSP fuzzer),
+#         the ARM and RISC-V cross compilers, QEMU and Chromium (every test)
 set -euo pipefail
 want=(g++ cmake ninja-build)
 web=(clang-14 lld-14 wasi-libc libc++-14-dev-wasm32 libc++abi-14-dev-wasm32 libclang-rt-14-dev-wasm32 python3)
 case "${1:-all}" in
   host) ;;
   web) want+=("${web[@]}") ;;
-  all) want+=("${web[@]}" doctest-dev valgrind gcc-arm-none-eabi gcc-riscv64-unknown-elf qemu-system-arm
+  all) want+=("${web[@]}" doctest-dev valgrind libclang-rt-14-dev gcc-arm-none-eabi gcc-riscv64-unknown-elf qemu-system-arm
               qemu-system-misc chromium) ;;
   *) echo "usage: install-deps.sh host|web|all" >&2; exit 2 ;;
 esac

@@ -212,6 +212,11 @@ private:
         const size_t n = p.v.size();
         std::vector<int> s(n);
         for (size_t i = 0; i < n; ++i) s[i] = side_of(pl, p.v[i]);
+        // Three or more corners "on" the plane (within rounding) of a polygon that still straddles it: the
+        // plane is nearly the polygon's own, and those corners span an area, which both parts would hold.
+        // Cut at the exact sides then, so the parts do not overlap.
+        if (std::count(s.begin(), s.end(), 0) >= 3)
+            for (size_t i = 0; i < n; ++i) s[i] = sign(side(pl, verts_[p.v[i]]));
         const uint32_t cut_line = new_support();
         struct Out {
             uint32_t v;
@@ -294,32 +299,27 @@ private:
         }
     }
 
-    /// Position of v along support s (its first two points give origin and direction).
-    double along(uint32_t s, uint32_t v) const {
-        const std::vector<uint32_t>& pts = supports_[s].points;
-        const P& o = verts_[pts[0]];
-        const P& d1 = verts_[pts.size() > 1 ? pts[1] : pts[0]];
-        double dir[3], dd = 0, t = 0;
-        for (int k = 0; k < 3; ++k) {
-            dir[k] = static_cast<double>(d1[k]) - o[k];
-            dd += dir[k] * dir[k];
-            t += (static_cast<double>(verts_[v][k]) - o[k]) * dir[k];
-        }
-        return dd == 0 ? 0 : t / dd;
-    }
-
     /// Every point made on an edge's line between its ends joins the edge, in order along it.
     std::vector<uint32_t> closed_loop(const Poly& p) {
         std::vector<uint32_t> loop;
         for (size_t i = 0; i < p.v.size(); ++i) {
             const uint32_t a = p.v[i], b = p.v[(i + 1) % p.v.size()], s = p.sup[i];
             loop.push_back(a);
-            const double ta = along(s, a), tb = along(s, b);
-            std::vector<std::pair<double, uint32_t>> inner;
+            // Order along the edge itself, exactly: (q - a) . (b - a) in (0, |b - a|^2). A direction taken from
+            // two of the support's points could be two rounded cut points a few grid steps apart, pointing
+            // anywhere, and misorder the points (a self-crossing loop, overlapping pieces).
+            const P& pa = verts_[a];
+            const P& pb = verts_[b];
+            const int64_t d[3] = {int64_t{pb[0]} - pa[0], int64_t{pb[1]} - pa[1], int64_t{pb[2]} - pa[2]};
+            const int64_t len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            std::vector<std::pair<int64_t, uint32_t>> inner;
             for (uint32_t q : supports_[s].points) {
-                if (q == a || q == b) continue;
-                const double tq = along(s, q);
-                if ((tq > ta && tq < tb) || (tq < ta && tq > tb)) inner.push_back({tb > ta ? tq : -tq, q});
+                // A corner of the polygon itself is never inserted (near an edge of a thin polygon it may
+                // project inside another edge): the loop visits each point once.
+                if (std::find(p.v.begin(), p.v.end(), q) != p.v.end()) continue;
+                const P& pq = verts_[q];
+                const int64_t t = (int64_t{pq[0]} - pa[0]) * d[0] + (int64_t{pq[1]} - pa[1]) * d[1] + (int64_t{pq[2]} - pa[2]) * d[2];
+                if (t > 0 && t < len2) inner.push_back({t, q});
             }
             std::sort(inner.begin(), inner.end());
             for (const auto& e : inner) loop.push_back(e.second);
@@ -329,8 +329,7 @@ private:
     }
 
     /// Twice the area vector of triangle (a, b, c), exact.
-    std::array<I128, 3> area(uint32_t a, uint32_t b, uint32_t c) const {
-        const P &pa = verts_[a], &pb = verts_[b], &pc = verts_[c];
+    static std::array<I128, 3> area(const P& pa, const P& pb, const P& pc) {
         const int64_t e1[3] = {int64_t{pb[0]} - pa[0], int64_t{pb[1]} - pa[1], int64_t{pb[2]} - pa[2]};
         const int64_t e2[3] = {int64_t{pc[0]} - pa[0], int64_t{pc[1]} - pa[1], int64_t{pc[2]} - pa[2]};
         return {I128(e1[1]) * e2[2] - I128(e1[2]) * e2[1], I128(e1[2]) * e2[0] - I128(e1[0]) * e2[2],
@@ -338,13 +337,15 @@ private:
     }
 
     /// Triangles of a closed loop: a fan from a corner whose triangles all have area, else from a new
-    /// vertex at the centroid, else (a loop too thin for either) the plain fan.
+    /// vertex at the centroid, else (a loop made slightly concave by rounded cut points) by clipping ears.
+    /// Every triangle then faces the loop's way, so the pieces cover the loop once and keep its area.
     void triangulate(const std::vector<uint32_t>& loop, const Plane& pl, std::vector<std::array<uint32_t, 3>>& out) {
         const size_t n = loop.size();
-        auto facing = [&](uint32_t a, uint32_t b, uint32_t c) {
+        auto facing_p = [&](const P& a, const P& b, const P& c) {
             const auto ar = area(a, b, c);
             return ar[0] * pl.n[0] + ar[1] * pl.n[1] + ar[2] * pl.n[2];
         };
+        auto facing = [&](uint32_t a, uint32_t b, uint32_t c) { return facing_p(verts_[a], verts_[b], verts_[c]); };
         I128 total = 0;  // orientation of the loop along the node's normal
         for (size_t i = 1; i + 1 < n; ++i) total += facing(loop[0], loop[i], loop[i + 1]);
         const int orient = total > 0 ? 1 : -1;
@@ -361,14 +362,42 @@ private:
             for (uint32_t v : loop) sum += verts_[v][d];
             c[d] = static_cast<int32_t>(std::llround(sum / static_cast<double>(n)));
         }
-        const uint32_t cv = vertex(c);
         bool good = true;
-        for (size_t i = 0; i < n && good; ++i) good = sign(facing(cv, loop[i], loop[(i + 1) % n])) == orient;
-        if (good) {
+        for (size_t i = 0; i < n && good; ++i) good = sign(facing_p(c, verts_[loop[i]], verts_[loop[(i + 1) % n]])) == orient;
+        if (good) {  // the vertex is made only when used
+            const uint32_t cv = vertex(c);
             for (size_t i = 0; i < n; ++i) out.push_back({cv, loop[i], loop[(i + 1) % n]});
             return;
         }
-        for (size_t i = 1; i + 1 < n; ++i) out.push_back({loop[0], loop[i], loop[i + 1]});
+        clip_ears(loop, orient, facing, out);
+    }
+
+    /// Ear clipping with exact orientations (projected along the plane's normal): an ear is a corner
+    /// turning the loop's way whose triangle holds no other loop point, not even on its border (a
+    /// T-junction point there would leave a crack). A rest with no ear (collinear or self-touching after
+    /// rounding) is fanned as it is.
+    template <class Facing>
+    void clip_ears(std::vector<uint32_t> rest, int orient, const Facing& facing, std::vector<std::array<uint32_t, 3>>& out) {
+        auto holds = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t q) {
+            return sign(facing(a, b, q)) != -orient && sign(facing(b, c, q)) != -orient && sign(facing(c, a, q)) != -orient;
+        };
+        while (rest.size() > 3) {
+            const size_t m = rest.size();
+            bool clipped = false;
+            for (size_t i = 0; i < m && !clipped; ++i) {
+                const uint32_t a = rest[(i + m - 1) % m], b = rest[i], c = rest[(i + 1) % m];
+                if (sign(facing(a, b, c)) != orient) continue;
+                bool empty = true;
+                for (uint32_t q : rest)
+                    if (q != a && q != b && q != c && holds(a, b, c, q)) empty = false;
+                if (!empty) continue;
+                out.push_back({a, b, c});
+                rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(i));
+                clipped = true;
+            }
+            if (!clipped) break;
+        }
+        for (size_t i = 1; i + 1 < rest.size(); ++i) out.push_back({rest[0], rest[i], rest[i + 1]});
     }
 
     bool finish(BspBuilt& out, std::string& error) {
@@ -494,9 +523,12 @@ std::vector<uint8_t> bsp_blob(const BspBuilt& tree, const BspFit& fit) {
     const BspLayout l = bsp_layout(static_cast<uint32_t>(tree.nodes.size()), static_cast<uint32_t>(tree.triangles.size()),
                                    static_cast<uint32_t>(tree.vertices.size()));
     std::vector<uint8_t> blob(l.total, 0);
-    std::memcpy(blob.data() + l.nodes, tree.nodes.data(), tree.nodes.size() * sizeof(BspNode));
-    std::memcpy(blob.data() + l.triangles, tree.triangles.data(), tree.triangles.size() * sizeof(BspTriangle));
-    std::memcpy(blob.data() + l.vertices, tree.vertices.data(), tree.vertices.size() * sizeof(BspVertex));
+    // (memcpy from an empty vector's null data() is undefined even for 0 bytes: an empty tree.)
+    if (!tree.nodes.empty()) std::memcpy(blob.data() + l.nodes, tree.nodes.data(), tree.nodes.size() * sizeof(BspNode));
+    if (!tree.triangles.empty())
+        std::memcpy(blob.data() + l.triangles, tree.triangles.data(), tree.triangles.size() * sizeof(BspTriangle));
+    if (!tree.vertices.empty())
+        std::memcpy(blob.data() + l.vertices, tree.vertices.data(), tree.vertices.size() * sizeof(BspVertex));
     BspHeader h{};
     h.magic = kBspMagic;
     h.version = kBspVersion;
@@ -506,9 +538,10 @@ std::vector<uint8_t> bsp_blob(const BspBuilt& tree, const BspFit& fit) {
     h.vertex_count = static_cast<uint32_t>(tree.vertices.size());
     h.max_depth = tree.max_depth;
     h.total_size = static_cast<uint32_t>(l.total);
-    h.checksum = fnv1a(blob.data() + sizeof(BspHeader), blob.size() - sizeof(BspHeader));
     for (int i = 0; i < 3; ++i) h.centre[i] = to_scaled(fit.centre[i]);
     h.scale = to_scaled(fit.scale);
+    std::memcpy(blob.data(), &h, sizeof h);
+    h.checksum = bsp_checksum(blob.data(), blob.size());  // over the header too, so after it is in place
     std::memcpy(blob.data(), &h, sizeof h);
     return blob;
 }

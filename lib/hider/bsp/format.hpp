@@ -7,8 +7,11 @@
 // only forward (the tree has no cycle).
 //
 // Byte layout (all little-endian, the blob 8-byte aligned):
-//   header    64 B  magic "HBSP", version, sizes, counts, max depth, checksum, the world transform
-//   nodes     64 B each, node 0 is the root (absent when node_count == 0)
+//   header    64 B  magic "HBSP", version, sizes, counts, the tree's depth, checksum, world transform; the
+//                   checksum covers every byte of the blob but its own four (bsp_checksum)
+//   nodes     64 B each, in preorder with the front child first: node 0 is the root (absent when
+//             node_count == 0), a node's front child (if any) follows it, its back child follows the
+//             front subtree
 //     0  int64 n[3]          plane normal (x, y, z), exact; side(p) = n . (p - vertex[origin])
 //    24  uint32 origin       a vertex on the plane
 //    28  uint32 child[2]     front (side > 0) and back subtree, kBspNone when empty
@@ -29,7 +32,7 @@ namespace hider {
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the BSP blob is little-endian and read in place");
 
 constexpr uint32_t kBspMagic = 0x50534248u;  ///< "HBSP" as bytes
-constexpr uint16_t kBspVersion = 1;
+constexpr uint16_t kBspVersion = 2;  ///< 2: the checksum covers the header, nodes in preorder
 constexpr uint32_t kBspNone = 0xFFFFFFFFu;   ///< no child
 constexpr int kBspBoxShift = 12;             ///< node boxes in units of 2^12 raw Q16 (1/16 world unit)
 /// |coordinate| of a BSP vertex stays below this (2048 world units): the int16 boxes then hold every
@@ -50,9 +53,9 @@ struct __attribute__((may_alias)) BspHeader {
     uint16_t version;
     uint16_t header_size;   ///< sizeof(BspHeader)
     uint32_t node_count, triangle_count, vertex_count;
-    uint32_t max_depth;     ///< nodes on the longest root-to-leaf path
+    uint32_t max_depth;     ///< nodes on the longest root-to-leaf path, exactly (bsp_load checks it)
     uint32_t total_size;    ///< bytes of the whole blob
-    uint32_t checksum;      ///< FNV-1a of every byte after the header
+    uint32_t checksum;      ///< bsp_checksum(): FNV-1a of the whole blob but this field
     BspScaled centre[3];    ///< world = (model - centre) * scale
     BspScaled scale;
 };
@@ -85,6 +88,15 @@ constexpr uint32_t kFnvBasis = 0x811C9DC5u;
 constexpr uint32_t fnv1a(const uint8_t* p, size_t n, uint32_t hash = kFnvBasis) {
     for (size_t i = 0; i < n; ++i) hash = (hash ^ p[i]) * 0x01000193u;
     return hash;
+}
+
+/// The checksum of a blob of `size` >= sizeof(BspHeader) bytes: FNV-1a of every byte except the checksum
+/// field, so the header's depth and world transform are covered as well as the arrays.
+constexpr size_t kBspChecksumOffset = 28;
+static_assert(offsetof(BspHeader, checksum) == kBspChecksumOffset, "BSP header layout");
+constexpr uint32_t bsp_checksum(const uint8_t* blob, size_t size) {
+    constexpr size_t after = kBspChecksumOffset + sizeof(uint32_t);
+    return fnv1a(blob + after, size - after, fnv1a(blob, kBspChecksumOffset));
 }
 
 /// Byte offsets of the arrays in a blob with these counts (and its total size).

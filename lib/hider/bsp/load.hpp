@@ -1,5 +1,7 @@
 // Validating a BSP blob (format.hpp) once, so the walks can trust every index: magic, version, sizes,
-// checksum, each index in range, children only forward (no cycle), the depth within the caller's stack.
+// checksum, each index in range, children only forward (no cycle), the nodes in preorder from the root
+// (so every node has one parent: a tree, not a DAG), the depth as the header says and within the
+// caller's stack.
 // Nothing is copied: the tree reads the blob in place (flash on a device).
 #pragma once
 #include <hider/bsp/format.hpp>
@@ -35,7 +37,7 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
     const uint64_t total = uint64_t{sizeof(BspHeader)} + uint64_t{h.node_count} * sizeof(BspNode) +
                            uint64_t{h.triangle_count} * sizeof(BspTriangle) + uint64_t{h.vertex_count} * sizeof(BspVertex);
     if (total != h.total_size || total != blob.size() || h.node_count >= 0x40000000u) return Status::bad_data;  // walks tag indices with two bits
-    if (fnv1a(blob.data() + sizeof(BspHeader), blob.size() - sizeof(BspHeader)) != h.checksum) return Status::bad_data;
+    if (bsp_checksum(blob.data(), blob.size()) != h.checksum) return Status::bad_data;
     const BspLayout l = bsp_layout(h.node_count, h.triangle_count, h.vertex_count);
     const BspNode* nodes = reinterpret_cast<const BspNode*>(blob.data() + l.nodes);
     const BspTriangle* tris = reinterpret_cast<const BspTriangle*>(blob.data() + l.triangles);
@@ -62,13 +64,16 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
         for (int32_t e : c)
             if (e <= -kBspWorldLimitRaw || e >= kBspWorldLimitRaw) return Status::out_of_range;
     }
-    // Depth: a preorder walk keeping (node, depth) pairs of pending back children in the caller's stack.
+    // Shape and depth: a preorder walk (front child first) keeping (node, depth) pairs of pending back
+    // children in the caller's stack. The nodes must be stored in exactly that order, so the k-th node
+    // met is node k: no node is met twice (two parents, a DAG: rejected at its second visit, however
+    // many paths lead to it) and, with every node met, none is unreachable.
     uint32_t depth = 0;
     if (h.node_count != 0) {
         size_t top = 0;
         uint32_t node = 0, level = 1, visits = 0;
         for (;;) {
-            if (++visits > h.node_count) return Status::bad_data;  // a node with two parents: not a tree
+            if (node != visits++) return Status::bad_data;  // not in preorder: not a tree, or stored otherwise
             depth = max(depth, level);
             if (level > h.max_depth) return Status::bad_data;
             if (bsp_stack_entries(level) > stack.size()) return Status::capacity_exceeded;
@@ -87,7 +92,9 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
             level = stack[--top];
             node = stack[--top];
         }
+        if (visits != h.node_count) return Status::bad_data;  // nodes no parent points to
     }
+    if (depth != h.max_depth) return Status::bad_data;  // the header's depth is the tree's, not a bound
     out.header = &h;
     out.nodes = {nodes, h.node_count};
     out.triangles = {tris, h.triangle_count};

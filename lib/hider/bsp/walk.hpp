@@ -10,6 +10,7 @@
 #include <hider/bsp/load.hpp>
 #include <hider/int128.hpp>
 #include <hider/raster/paint.hpp>
+#include <hider/raster/clip.hpp>
 #include <hider/raster/vertices.hpp>
 
 namespace hider {
