@@ -92,8 +92,17 @@ TEST_CASE("bsp and bsp-front match the z-buffer from inside the city, with the e
 
 TEST_CASE("bsp and bsp-front match the z-buffer on every test model" * doctest::test_suite("slow")) {
     for (const char* name : {"torus.obj", "teapot.obj", "suzanne.obj", "spot.obj", "cow.obj", "fandisk.obj", "beetle.obj",
-                             "woody.obj", "stanford-bunny.obj"})
+                             "woody.obj", "stanford-bunny.obj"}) {
+#if defined(__SANITIZE_ADDRESS__)
+        // The bunny's 190,000-triangle tree takes most of this test; under ASan that is over ten minutes of
+        // CI. The plain host build checks it; here the other models exercise the same code.
+        if (std::string(name) == "stanford-bunny.obj") {
+            MESSAGE("stanford-bunny.obj: checked by the host build, not under ASan");
+            continue;
+        }
+#endif
         check(name, test::load_model(name), false);
+    }
 }
 
 namespace {
