@@ -164,13 +164,13 @@ inline void project_vertex(const View& view, const PreparedTransform& to_view, c
     detail::project_one(view, p, out);
 }
 
-/// Marks every vertex as not projected yet (x = y = z = 0, which project_vertex() never gives), for a
-/// walk that projects on first use (draw_bsp()): once per frame, before the first band.
+/// Marks every vertex as not projected yet (x = z = 0, which project_vertex() never gives: a drawable
+/// vertex has z != 0, an outside one x != 0), for a walk that projects on first use (draw_bsp()): once
+/// per frame, before the first band.
 inline void mark_unprojected(Span<ScreenVertex> verts) {
     ScreenVertex* v = verts.data();
     for (ScreenVertex* const end = v + verts.size(); v != end; ++v) {
         v->x = 0;
-        v->y = 0;
         v->z = 0;
     }
 }
