@@ -636,10 +636,10 @@ TEST_CASE("--help lists the algorithm names") {
     for (const char* algo : {"zbuffer", "painter", "newell", "reverse", "raycast"}) CHECK(contains(r.out, algo));
 }
 
-TEST_CASE("--stats counts every triangle in exactly one bucket for the sorted algorithms") {
+TEST_CASE("--stats counts every triangle in exactly one bucket for the z-buffer and the sorted algorithms") {
     // The benchmark view: 444 front faces, 554 back faces and 2 that cover no pixel centre.
     const std::string torus = std::string(HIDER_TEST_DATA) + "/models/torus.obj";
-    for (const char* algo : {"painter", "newell", "reverse"}) {
+    for (const char* algo : {"zbuffer", "painter", "newell", "reverse"}) {
         const Run r = render(torus, {"--eye", "0,0,-2.5", "--target", "0,0,0", "--fov", "73.7398", "--near", "0.25", "--algo",
                                      algo, "--stats"});
         INFO(algo, " stdout: ", r.out);
@@ -657,6 +657,24 @@ TEST_CASE("--stats counts every triangle in exactly one bucket for the sorted al
     CHECK(degenerate == 1);  // f 1 2 4 is a line
     CHECK(culled == 1);      // f 3 2 1 runs clockwise
     CHECK(drawn + culled + degenerate + outside == in);
+    // The z-buffer, whole frame and in bands, on that scene and on the city seen from the street (clipped
+    // triangles, triangles between pixel centres): the buckets add up to the triangles in.
+    const std::string city = std::string(HIDER_TEST_DATA) + "/scenes/city-1-16-16-street.obj";
+    for (const std::string& m : {model, city})
+        for (const char* band : {"240", "7"}) {
+            Args args = {"--algo", "zbuffer", "--stats", "--band", band};
+            if (m == city)
+                for (const char* a : {"--eye", "12.25,0.3,25.1", "--target", "12.25,0.5,0", "--near", "0.5", "--far", "200"}) args.push_back(a);
+            else
+                for (const char* a : {"--eye", "0.3,0.3,3", "--target", "0.3,0.3,0", "--near", "0.5"}) args.push_back(a);
+            const Run z = render(m, args);
+            INFO(m, " band ", band, " stdout: ", z.out, " stderr: ", z.err);
+            REQUIRE(z.code == 0);
+            REQUIRE(std::sscanf(z.out.c_str(), "triangles %u drawn %u culled %u degenerate %u outside %u clipped %u", &in, &drawn,
+                                &culled, &degenerate, &outside, &clipped) == 6);
+            CHECK(drawn + culled + degenerate + outside == in);
+            CHECK(drawn > 0);
+        }
 }
 
 // ---- BSP trees: hider-bsp's .hbsp/.hpp output, and hider-render drawing a tree from a blob or an OBJ ----

@@ -190,6 +190,24 @@ bool render_with(const Scene& scene, const RenderOptions& opt, RenderResult& out
             for (int x = 0; x < scene.width; ++x) out.pixels_covered += band.depth_row(y)[x] != DepthTraits<Depth>::kClear;
         port::append_rgb888(band, out.rgb);
     }
+    // draw_zbuffer counts the triangles (or clipped pieces) it sets up and culls, not those of zero area
+    // or with no pixel centre: the buckets come from build_polys, which puts each mesh triangle in exactly
+    // one (as for the sorted algorithms). Without clipping the z-buffer's own counts must agree.
+    std::vector<ScreenPoly> scratch(mesh.tris.size() * 7);  // a clipped triangle gives up to 7 pieces
+    BoundedList<ScreenPoly> polys(scratch.data(), scratch.size());
+    FrameStats buckets;
+    build_polys(view, mesh, {verts.data(), verts.size()}, opt.cull, polys, buckets);
+    if (out.stats.triangles_clipped == 0 &&
+        (buckets.triangles_culled != out.stats.triangles_culled || buckets.triangles_drawn != out.stats.triangles_drawn)) {
+        error = "internal: the z-buffer's triangle counts differ from build_polys' (drawn " +
+                std::to_string(out.stats.triangles_drawn) + " / " + std::to_string(buckets.triangles_drawn) + ", culled " +
+                std::to_string(out.stats.triangles_culled) + " / " + std::to_string(buckets.triangles_culled) + ")";
+        return false;
+    }
+    out.stats.triangles_drawn = buckets.triangles_drawn;
+    out.stats.triangles_culled = buckets.triangles_culled;
+    out.stats.triangles_degenerate = buckets.triangles_degenerate;
+    out.stats.triangles_outside = buckets.triangles_outside;
     return true;
 }
 
