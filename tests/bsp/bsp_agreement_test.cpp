@@ -94,10 +94,12 @@ TEST_CASE("bsp and bsp-front match the z-buffer on every test model" * doctest::
     for (const char* name : {"torus.obj", "teapot.obj", "suzanne.obj", "spot.obj", "cow.obj", "fandisk.obj", "beetle.obj",
                              "woody.obj", "stanford-bunny.obj"}) {
 #if defined(__SANITIZE_ADDRESS__)
-        // The bunny's 190,000-triangle tree takes most of this test; under ASan that is over ten minutes of
-        // CI. The plain host build checks it; here the other models exercise the same code.
-        if (std::string(name) == "stanford-bunny.obj") {
-            MESSAGE("stanford-bunny.obj: checked by the host build, not under ASan");
+        // The large trees (bunny 190,000 triangles, fandisk, cow, spot, teapot 15,000-30,000) take over ten
+        // minutes of CI under ASan. The plain host build checks them; here the smaller models exercise the
+        // same code.
+        const std::string n = name;
+        if (n == "stanford-bunny.obj" || n == "fandisk.obj" || n == "cow.obj" || n == "spot.obj" || n == "teapot.obj") {
+            MESSAGE(n << ": checked by the host build, not under ASan");
             continue;
         }
 #endif

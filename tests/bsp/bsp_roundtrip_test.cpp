@@ -256,7 +256,13 @@ TEST_CASE("BSP round trip: random soups, slivers and crossing sticks keep every 
 }
 
 TEST_CASE("BSP round trip: the shared models keep every face's area" * doctest::test_suite("slow")) {
-    for (const char* name : {"torus.obj", "suzanne.obj", "teapot.obj", "fandisk.obj"}) check_obj(std::string("models/") + name);
+    for (const char* name : {"torus.obj", "suzanne.obj", "teapot.obj", "fandisk.obj"}) {
+#if defined(__SANITIZE_ADDRESS__)
+        // Under ASan the two large trees take minutes of CI; the plain host build checks them.
+        if (std::string(name) == "teapot.obj" || std::string(name) == "fandisk.obj") continue;
+#endif
+        check_obj(std::string("models/") + name);
+    }
 }
 
 TEST_CASE("BSP round trip: a second heuristic setting (all balance, few candidates) also keeps the areas") {
