@@ -11,6 +11,7 @@
 #include <hider/raster/zbuffer.hpp>
 
 #include "common/bench.hpp"
+#include "common/bits.hpp"
 #include "display/sink.hpp"
 #include "spin/ppm_sink.hpp"
 
@@ -70,14 +71,6 @@ struct Result {
 
 namespace detail {
 
-/// Set bits of words[0..n) (no builtin: a libgcc call on some targets).
-inline uint32_t bits_set(const uint32_t* words, size_t n) {
-    uint32_t count = 0;
-    for (size_t i = 0; i < n; ++i)
-        for (uint32_t w = words[i]; w != 0; w &= w - 1) ++count;
-    return count;
-}
-
 /// Clears and draws rows [y0, y1) (inside the measured region); for front to back then checks that the
 /// pixels written are exactly the coverage bits set (outside it).
 inline hider::FrameStats draw_band(const Scene& s, Algo algo, const hider::BspTree& tree, const Buffers& buf,
@@ -99,7 +92,7 @@ inline hider::FrameStats draw_band(const Scene& s, Algo algo, const hider::BspTr
     }
     bench_end();
     if (algo == Algo::front_to_back) {
-        const uint32_t set = bits_set(buf.coverage.data(), static_cast<size_t>(hider::coverage_words(s.width)) * (y1 - y0));
+        const uint32_t set = ::bits_set(buf.coverage.data(), static_cast<size_t>(hider::coverage_words(s.width)) * (y1 - y0));
         r.covered += set;
         if (set != st.pixels_written) ++r.coverage_mismatches;
     }

@@ -8,6 +8,7 @@
 #include <hider/sort/reverse.hpp>
 
 #include "common/bench.hpp"
+#include "common/bits.hpp"
 #include "display/sink.hpp"
 #include "spin/ppm_sink.hpp"
 #include "spin/render.hpp"
@@ -88,14 +89,6 @@ struct Result {
 
 namespace detail {
 
-/// Set bits of words[0..n) (no builtin: a libgcc call on some targets).
-inline uint32_t bits_set(const uint32_t* words, size_t n) {
-    uint32_t count = 0;
-    for (size_t i = 0; i < n; ++i)
-        for (uint32_t w = words[i]; w != 0; w &= w - 1) ++count;
-    return count;
-}
-
 /// View, projection, screen triangles and the painting order of `algo` into polys/cuts/order.
 inline hider::Status build_order(const spin::Scene& s, Algo algo, const Buffers& buf, hider::View& view,
                                  hider::BoundedList<hider::ScreenPoly>& polys, hider::BoundedList<hider::PieceCut>& cuts,
@@ -135,7 +128,7 @@ inline hider::FrameStats paint_band(const spin::Scene& s, Algo algo, const Buffe
                                      : hider::paint_in_order<true>(view, s.mesh, p, c, o, band, draw_options());
     bench_end();
     if (algo == Algo::reverse) {
-        const uint32_t set = bits_set(buf.coverage.data(), static_cast<size_t>(hider::coverage_words(s.width)) * band.rows());
+        const uint32_t set = ::bits_set(buf.coverage.data(), static_cast<size_t>(hider::coverage_words(s.width)) * band.rows());
         r.covered += set;
         if (set != st.pixels_written) ++r.coverage_mismatches;
     }

@@ -1,4 +1,4 @@
-// The waterfall example, for firmware and host alike: a spectrum-style waterfall. Each frame a new
+// The waterfall example, for firmware and host alike: a spectrum-style waterfall. Each frame a fresh
 // spectrum (128 bins, uint8) enters at the front and the older ones move back; the last 64 are kept in
 // a ring of rows (8 KB) and plotted as a floating-horizon surface with lib/hider/horizon: 128x64 1-bit
 // (an OLED's page layout) whole, and 160x128 RGB565 coloured by height, 8-row bands through a BandSink.
@@ -64,7 +64,7 @@ struct History {
     uint8_t rows[kCurves][kSamples];
     int32_t first;
 
-    /// Overwrites the oldest row with a new spectrum, which becomes curve kCurves - 1 (the front).
+    /// Overwrites the oldest row with the next spectrum, which becomes curve kCurves - 1 (the front).
     void push(Spectrum& s) {
         s.next(rows[first]);
         first = first + 1 == kCurves ? 0 : first + 1;
@@ -147,7 +147,7 @@ private:
 
 /// What a program's bench_begin()/bench_end() pairs bracket each frame.
 enum class Measure : uint8_t {
-    frame,       ///< clear + plot (the new spectrum excluded)
+    frame,       ///< clear + plot (the incoming spectrum excluded)
     projection,  ///< the projection of every curve alone (then the frame is plotted unmeasured)
 };
 

@@ -10,37 +10,14 @@
 
 #include "bsp/scenes.hpp"
 #include "common/scenes/torus_160x128.hpp"
-#include "stdio_io.hpp"
+#include "capture_io.hpp"
 
 extern "C" void bench_begin() {}
 extern "C" void bench_end() {}
 
 namespace {
 
-/// Io that keeps the bytes of the one file written; with `disk` also writes it through stdio.
-struct CaptureIo {
-    bool disk = false;
-    bool quiet = false;
-    spin::StdioIo file;
-    std::vector<uint8_t> bytes;
-
-    bool open(const char* path) {
-        bytes.clear();
-        return !disk || file.open(path);
-    }
-    bool write(const void* data, size_t size) {
-        const auto* p = static_cast<const uint8_t*>(data);
-        bytes.insert(bytes.end(), p, p + size);
-        return !disk || file.write(data, size);
-    }
-    bool close() { return !disk || file.close(); }
-    void print(const char* text) {
-        if (!quiet) file.print(text);
-    }
-    void print_u32(uint32_t v) {
-        if (!quiet) file.print_u32(v);
-    }
-};
+using spin::CaptureIo;
 
 bspfw::TorusStorage g_torus;
 bspfw::CityStorage g_city;
@@ -62,17 +39,8 @@ std::vector<uint8_t> render(const bspfw::Scene& s, bspfw::Algo algo, bspfw::Buff
     return io.bytes;
 }
 
-/// Pixels (3-byte groups after the common header) that differ between two PPMs of equal size.
-int32_t pixel_mismatches(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, int32_t pixels) {
-    if (a.size() != b.size() || a.size() < static_cast<size_t>(pixels) * 3) return pixels;
-    const size_t header = a.size() - static_cast<size_t>(pixels) * 3;
-    int32_t n = 0;
-    for (size_t i = header; i < a.size(); i += 3) n += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
-    return n;
-}
-
 bool agrees(const char* what, const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, int32_t pixels) {
-    const int32_t diff = pixel_mismatches(a, b, pixels);
+    const int32_t diff = spin::pixel_mismatches(a, b, pixels);
     const bool ok = int64_t{pixels - diff} * 1000 >= int64_t{pixels} * 999;
     std::printf("%s: %d of %d pixels differ (%.3f%% equal)%s\n", what, static_cast<int>(diff), static_cast<int>(pixels),
                 100.0 * (pixels - diff) / pixels, ok ? ", >= 99.9%: ok" : ", below 99.9%: FAIL");

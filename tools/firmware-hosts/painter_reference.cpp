@@ -9,37 +9,14 @@
 
 #include "painter/torus.hpp"
 #include "spin/app.hpp"
-#include "stdio_io.hpp"
+#include "capture_io.hpp"
 
 extern "C" void bench_begin() {}
 extern "C" void bench_end() {}
 
 namespace {
 
-/// Io that keeps the bytes of the one file written; with `disk` also writes it through stdio.
-struct CaptureIo {
-    bool disk = false;
-    bool quiet = false;
-    spin::StdioIo file;
-    std::vector<uint8_t> bytes;
-
-    bool open(const char* path) {
-        bytes.clear();
-        return !disk || file.open(path);
-    }
-    bool write(const void* data, size_t size) {
-        const auto* p = static_cast<const uint8_t*>(data);
-        bytes.insert(bytes.end(), p, p + size);
-        return !disk || file.write(data, size);
-    }
-    bool close() { return !disk || file.close(); }
-    void print(const char* text) {
-        if (!quiet) file.print(text);
-    }
-    void print_u32(uint32_t v) {
-        if (!quiet) file.print_u32(v);
-    }
-};
+using spin::CaptureIo;
 
 painter::TorusStorage g_storage;
 const spin::Scene kScene = painter::torus_scene();
@@ -79,15 +56,6 @@ std::vector<uint8_t> zbuffer_ppm(const char* path) {
     return io.bytes;
 }
 
-/// Pixels (3-byte groups after the common header) that differ between two PPMs of equal size.
-int32_t pixel_mismatches(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
-    if (a.size() != b.size() || a.size() < static_cast<size_t>(kPixels) * 3) return kPixels;
-    const size_t header = a.size() - static_cast<size_t>(kPixels) * 3;
-    int32_t n = 0;
-    for (size_t i = header; i < a.size(); i += 3) n += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
-    return n;
-}
-
 }  // namespace
 
 int main() {
@@ -110,14 +78,14 @@ int main() {
     }
     bool ok = true;
     for (int k = 0; k < 3; ++k) {
-        const int32_t diff = pixel_mismatches(banded[k], zbuffer);
+        const int32_t diff = spin::pixel_mismatches(banded[k], zbuffer, kPixels);
         const bool must_agree = algos[k] != painter::Algo::painter;  // the plain painter's errors are expected
         const bool agrees = int64_t{kPixels - diff} * 1000 >= int64_t{kPixels} * 999;
         std::printf("%s vs z-buffer: %d of %d pixels differ (%.3f%% equal)%s; vs 16-bit z-buffer: %d\n",
                     painter::output_name(algos[k]), static_cast<int>(diff), static_cast<int>(kPixels),
                     100.0 * (kPixels - diff) / kPixels,
                     must_agree ? (agrees ? ", >= 99.9%: ok" : ", below 99.9%: FAIL") : "",
-                    static_cast<int>(pixel_mismatches(banded[k], zbuffer16)));
+                    static_cast<int>(spin::pixel_mismatches(banded[k], zbuffer16, kPixels)));
         ok = ok && (agrees || !must_agree);
     }
     return ok ? 0 : 1;

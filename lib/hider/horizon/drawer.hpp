@@ -50,7 +50,7 @@ public:
     /// kByValue only: a column's colour is ramp(value of its topmost point).
     void set_ramp(const ValueRamp& r) { ramp_ = r; }
 
-    /// Starts a new piece at p (the pending column of the previous piece is finished first).
+    /// Starts another piece at p (the pending column of the previous piece is finished first).
     void move_to(PlotPoint p, int32_t value = 0) {
         finish();
         col_ = p.x >> kPointFracBits;

@@ -33,7 +33,7 @@ inline Status make_horizon(Span<int16_t> upper, Span<int16_t> lower, int32_t wid
     return Status::ok;
 }
 
-/// Forgets every curve drawn (a new plot, or a new pass that nothing before can hide).
+/// Forgets every curve drawn (another plot, or a pass that nothing before can hide).
 inline void reset(const Horizon& h) {
     for (int32_t c = 0; c < h.width; ++c) {
         h.upper[c] = INT16_MAX;

@@ -263,7 +263,7 @@ private:
     }
 
     /// Puts the two pieces of polygon `id` in its place: the far one in its slot, the near one in a
-    /// new slot, both back in the grid and the heap.
+    /// fresh slot, both back in the grid and the heap.
     void replace(uint32_t id, const ScreenPoly& far, const ScreenPoly& near, const PieceCut& far_cut, const PieceCut& near_cut,
                  bool in_heap) {
         grid_.remove(id, polys_[id]);
@@ -279,7 +279,7 @@ private:
         (void)added;
         const uint32_t other = static_cast<uint32_t>(polys_.size() - 1);
         ++ns_.splits;
-        ++chain_;  // the pieces start a new chain of moves
+        ++chain_;  // the pieces start a fresh chain of moves
         chain_len_ = 0;
         grid_.insert(id, polys_[id], polys_.data());
         grid_.insert(other, polys_[other], polys_.data());

@@ -242,7 +242,7 @@ enum class CutResult : uint8_t {
 };
 
 /// Cuts polygon p by plane pl (the plane of mesh triangle plane_tri) into far and near pieces, each
-/// keeping p's triangle, tri and flags, with one new cut record in far_cut / near_cut. The caller
+/// keeping p's triangle, tri and flags, with one more cut record in far_cut / near_cut. The caller
 /// stores the records in the pool `cuts` holds p's chain in and sets far.cut / near.cut to their indices.
 inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, const ScreenPlane& pl, uint32_t plane_tri,
                              ScreenPoly& far, ScreenPoly& near, PieceCut& far_cut, PieceCut& near_cut) {
