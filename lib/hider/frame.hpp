@@ -147,57 +147,64 @@ __attribute__((naked, noinline)) inline void fill_words_v6m(AliasWord*, AliasWor
 }
 #endif
 
-/// Sets n elements at p to v. 16-bit elements go out as 32-bit words, eight per loop iteration: the
-/// clear is a large share of a small frame's cost (two buffers of W x H elements).
+}  // namespace detail
+
+/// Stores `word` to the n 32-bit words at p (4-byte aligned; any object type: the stores may alias it),
+/// with store-multiples where the CPU has them: clears and per-frame marks are a visible share of a
+/// small frame's cost.
+inline void fill_words(void* p, size_t n, uint32_t word) {
+    detail::AliasWord* w = static_cast<detail::AliasWord*>(p);
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    // Cortex-M3/M4: eight 12-register store-multiples per 96 words (GCC -Os emits one str per word;
+    // two 10-register ones per 20 words measured 8,000 instructions more a torus frame).
+    if (size_t blocks = n / 96) {
+        detail::fill_words_v7m(w, w + blocks * 96, word);
+        w += blocks * 96;
+        n -= blocks * 96;
+    }
+#elif defined(__arm__) && defined(__thumb__)
+    // Cortex-M0/M0+: eight 7-register store-multiples per 56 words (GCC -Os emits one str per word; two
+    // 6-register ones per 12 words measured 11,900 instructions more a torus frame).
+    if (size_t blocks = n / 56) {
+        detail::fill_words_v6m(w, w + blocks * 56, word);
+        w += blocks * 56;
+        n -= blocks * 56;
+    }
+#elif defined(__riscv) && __riscv_xlen == 32
+    // RV32 has no store-multiple: 64 stores and one pointer step per 256 bytes (GCC's loop below takes
+    // 11 instructions per 8 words; 32 stores a step measured 2,400 instructions more a torus frame).
+    if (size_t blocks = n / 64) {
+        detail::AliasWord* const end = w + blocks * 64;
+        __asm__ volatile("1:\n\t"
+                         ".irp off, 0, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52, 56, 60, 64, 68, 72, 76, "
+                         "80, 84, 88, 92, 96, 100, 104, 108, 112, 116, 120, 124, 128, 132, 136, 140, 144, 148, 152, "
+                         "156, 160, 164, 168, 172, 176, 180, 184, 188, 192, 196, 200, 204, 208, 212, 216, 220, 224, "
+                         "228, 232, 236, 240, 244, 248, 252\n\t"
+                         "sw %2, \\off(%0)\n\t"
+                         ".endr\n\t"
+                         "addi %0, %0, 256\n\tbne %0, %1, 1b"
+                         : "+r"(w)
+                         : "r"(end), "r"(word)
+                         : "memory");
+        n -= blocks * 64;
+    }
+#endif
+    for (; n >= 8; n -= 8, w += 8) {
+        w[0] = word; w[1] = word; w[2] = word; w[3] = word;
+        w[4] = word; w[5] = word; w[6] = word; w[7] = word;
+    }
+    for (; n != 0; --n) *w++ = word;
+}
+
+namespace detail {
+/// Sets n elements at p to v. 16-bit elements go out as 32-bit words (fill_words()).
 template <class T>
 void fill(T* p, size_t n, T v) {
     if constexpr (sizeof(T) == 2) {
         if (n != 0 && (reinterpret_cast<uintptr_t>(p) & 2u) != 0) { *p++ = v; --n; }
         uint16_t bits;
         __builtin_memcpy(&bits, &v, 2);
-        const uint32_t word = bits * 0x00010001u;
-        AliasWord* w = reinterpret_cast<AliasWord*>(p);
-        size_t words = n / 2;
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-        // Cortex-M3/M4: eight 12-register store-multiples per 96 words (GCC -Os emits one str per word;
-        // two 10-register ones per 20 words measured 8,000 instructions more a torus frame).
-        if (size_t blocks = words / 96) {
-            fill_words_v7m(w, w + blocks * 96, word);
-            w += blocks * 96;
-            words -= blocks * 96;
-        }
-#elif defined(__arm__) && defined(__thumb__)
-        // Cortex-M0/M0+: eight 7-register store-multiples per 56 words (GCC -Os emits one str per word; two
-        // 6-register ones per 12 words measured 11,900 instructions more a torus frame).
-        if (size_t blocks = words / 56) {
-            fill_words_v6m(w, w + blocks * 56, word);
-            w += blocks * 56;
-            words -= blocks * 56;
-        }
-#elif defined(__riscv) && __riscv_xlen == 32
-        // RV32 has no store-multiple: 64 stores and one pointer step per 256 bytes (GCC's loop below takes
-        // 11 instructions per 8 words; 32 stores a step measured 2,400 instructions more a torus frame).
-        if (size_t blocks = words / 64) {
-            AliasWord* const end = w + blocks * 64;
-            __asm__ volatile("1:\n\t"
-                             ".irp off, 0, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52, 56, 60, 64, 68, 72, 76, "
-                             "80, 84, 88, 92, 96, 100, 104, 108, 112, 116, 120, 124, 128, 132, 136, 140, 144, 148, 152, "
-                             "156, 160, 164, 168, 172, 176, 180, 184, 188, 192, 196, 200, 204, 208, 212, 216, 220, 224, "
-                             "228, 232, 236, 240, 244, 248, 252\n\t"
-                             "sw %2, \\off(%0)\n\t"
-                             ".endr\n\t"
-                             "addi %0, %0, 256\n\tbne %0, %1, 1b"
-                             : "+r"(w)
-                             : "r"(end), "r"(word)
-                             : "memory");
-            words -= blocks * 64;
-        }
-#endif
-        for (; words >= 8; words -= 8, w += 8) {
-            w[0] = word; w[1] = word; w[2] = word; w[3] = word;
-            w[4] = word; w[5] = word; w[6] = word; w[7] = word;
-        }
-        for (; words != 0; --words) *w++ = word;
+        fill_words(p, n / 2, bits * 0x00010001u);
         if ((n & 1) != 0) p[n - 1] = v;
     } else {
         for (; n != 0; --n) *p++ = v;

@@ -48,21 +48,30 @@ inline int eye_side(const BspTree& tree, const BspNode& n, const Vec3q16& eye) {
     return s.sign();
 }
 
-/// floor(a / b) for b > 0 (int64).
-inline int64_t floor_div64(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+/// Bounds on p / w for 0 <= p < 2^63 and 0 < w < 2^63 by one 32/32-bit division of both shifted right
+/// until p fits 31 bits: kUp gives at least p / w, else at most it (and at least 0). Near the quotient
+/// when w keeps many bits after the shift (the relative error is about 2^s / w); past 2^31, 2^32.
+template <bool kUp>
+inline int64_t bound_div(uint64_t p, uint64_t w) {
+    const uint32_t high = static_cast<uint32_t>(p >> 31);
+    const int s = high == 0 ? 0 : 32 - clz32(high);  // p >> s < 2^31
+    const uint32_t ps = static_cast<uint32_t>(p >> s) + (kUp ? 1u : 0u);
+    const uint64_t ws64 = (w >> s) + (kUp ? 0u : 1u);
+    if (ws64 > 0xFFFFFFFFu) return kUp ? 1 : 0;  // p / w < 1/2
+    const uint32_t ws = static_cast<uint32_t>(ws64);
+    if (ws == 0) return int64_t{1} << 32;
+    const uint32_t q = ps / ws;
+    return kUp && q * ws != ps ? int64_t{q} + 1 : int64_t{q};
+}
 
-/// floor(num / (256 w)) for 0 < w, |num| < 2^63, as floor(floor(num / 256) / w): for w < 2^32 by one
-/// 64/32-bit division (udiv64_32), a quotient past 32 bits given as +-2^32 (the callers clamp to the
-/// guard band, far inside that).
-inline int64_t floor_over_256w(int64_t num, int64_t w) {
-    if (w >= (int64_t{1} << 32)) return floor_div64(num, 256 * w);
-    const int64_t a = num >> 8;  // floor(num / 256)
-    const uint64_t ua = a < 0 ? static_cast<uint64_t>(-(a + 1)) : static_cast<uint64_t>(a);  // a < 0: -floor(ua / w) - 1
-    const uint32_t uw = static_cast<uint32_t>(w);
-    if ((ua >> 32) >= uw) return a < 0 ? -(int64_t{1} << 32) : (int64_t{1} << 32);
-    uint32_t rem = 0;
-    const int64_t q = udiv64_32(ua, uw, rem);
-    return a < 0 ? -q - 1 : q;
+/// A value at most num / (256 w) (kUp false) or at least it (kUp true), for 0 < w < 2^63 and
+/// |num| < 2^62: num / 256 lies in [t, t + 1) with t = floor(num / 256), and bound_div() bounds t / w
+/// from below or (t + 1) / w from above, so the pixel rectangle built from them is never too small.
+template <bool kUp>
+inline int64_t bound_over_256w(int64_t num, int64_t w) {
+    const int64_t t = (num >> 8) + (kUp ? 1 : 0);
+    const uint64_t uw = static_cast<uint64_t>(w);
+    return t >= 0 ? bound_div<kUp>(static_cast<uint64_t>(t), uw) : -bound_div<!kUp>(static_cast<uint64_t>(-t), uw);
 }
 
 /// Where a subtree's box lies against a band: outside it (skip), reaching the near plane (its projection
@@ -134,9 +143,9 @@ inline PixelRect subtree_rect(const View& view, const SubtreeBox& b, const BandB
     const int64_t w_near = b.cw - b.ew, w_far = b.cw + b.ew;
     const int64_t xl = b.cx - b.ex, xh = b.cx + b.ex, yl = b.cy - b.ey, yh = b.cy + b.ey;
     const int64_t k = view.k_q8;
-    // Extremes at the nearest or farthest w by the coordinate's sign.
-    auto lo_over = [&](int64_t v) { return floor_over_256w(v * k, v >= 0 ? w_far : w_near); };
-    auto hi_over = [&](int64_t v) { return -floor_over_256w(-v * k, v >= 0 ? w_near : w_far); };  // the ceiling
+    // Extremes at the nearest or farthest w by the coordinate's sign, bounded outwards.
+    auto lo_over = [&](int64_t v) { return bound_over_256w<false>(v * k, v >= 0 ? w_far : w_near); };
+    auto hi_over = [&](int64_t v) { return bound_over_256w<true>(v * k, v >= 0 ? w_near : w_far); };
     ScreenBox box{static_cast<int32_t>(clamp<int64_t>(lo_over(xl) - 1, -kCoordLimit, kCoordLimit)),
                   static_cast<int32_t>(clamp<int64_t>(hi_over(xh) + 1, -kCoordLimit, kCoordLimit)),
                   static_cast<int32_t>(clamp<int64_t>(-hi_over(yh) - 1, -kCoordLimit, kCoordLimit)),
