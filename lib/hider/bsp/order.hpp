@@ -46,8 +46,9 @@ inline bool box_inside(const View& view, const SubtreeBox& b, const BandBounds& 
            box_min(k, y_hi, cy, ey) >= 0;  // subtree_box()'s four planes
 }
 
-/// Projects what node n's drawable triangles need and returns their rows in [0, height) as [y0, y1)
-/// (empty when none can cover a pixel centre); counts culled and wholly outside triangles in st.
+/// Projects what node n's drawable triangles need and returns the rows [y0, y1) their pixel centres can
+/// lie on (not clamped to the frame; empty when there are none); counts culled and wholly outside
+/// triangles in st.
 inline void node_rows(const View& view, const PreparedTransform& to_view, const BspTree& tree, const BspNode& n, bool eye_front,
                       Span<ScreenVertex> verts, const DrawOptions& opt, const BandBounds& bb, int32_t& y0, int32_t& y1,
                       FrameStats& st) {
@@ -71,11 +72,11 @@ inline void node_rows(const View& view, const PreparedTransform& to_view, const 
             y1 = view.height;
             continue;
         }
-        const ScreenBox box = screen_box(a, b, c);
-        if (misses_band(box, bb)) continue;
-        // Rows whose centres lie in the box (as pixel_rect() counts them).
-        y0 = min(y0, max<int32_t>(0, (box.y_min - bb.y_origin + kSubpixel - 1) >> kSubpixelBits));
-        y1 = max(y1, min<int32_t>(view.height, ((box.y_max - bb.y_origin) >> kSubpixelBits) + 1));
+        // Rows whose centres lie between the lowest and highest vertex (as pixel_rect() counts them); a
+        // triangle left or right of the frame is rejected later, by its set-up.
+        const int32_t y_min = min<int32_t>(a.y, min<int32_t>(b.y, c.y)), y_max = max<int32_t>(a.y, max<int32_t>(b.y, c.y));
+        y0 = min(y0, (y_min - bb.y_origin + kSubpixel - 1) >> kSubpixelBits);
+        y1 = max(y1, ((y_max - bb.y_origin) >> kSubpixelBits) + 1);
     }
 }
 
@@ -131,6 +132,8 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
         }
         int32_t y0 = 0, y1 = 0;
         detail::node_rows(view, to_view, tree, n, (entry & kBspListFront) != 0, verts, opt, bb, y0, y1, st);
+        y0 = max<int32_t>(y0, 0);
+        y1 = min(y1, view.height);
         if (y0 < y1 && !list.push_back({entry & ~kDraw, static_cast<int16_t>(y0), static_cast<int16_t>(y1)}))
             st.status = Status::capacity_exceeded;
     }
@@ -166,10 +169,10 @@ FrameStats draw_bsp_list(const View& view, const BspTree& tree, Span<const Scree
             const bool back = (tri.face & kBspFaceBack) != 0;
             const bool front = eye_front != back;  // the eye is on the triangle's own front side
             if (opt.cull && !front) continue;      // counted by order_bsp()
-            if ((verts[tri.v[0]].outside() & verts[tri.v[1]].outside() & verts[tri.v[2]].outside()) != 0) continue;  // likewise
+            const ScreenVertex &va = verts[tri.v[0]], &vb = verts[tri.v[1]], &vc = verts[tri.v[2]];
+            if ((va.outside() & vb.outside() & vc.outside()) != 0) continue;  // likewise
             const uint32_t face = tri.face & kBspFaceMask;
-            for_each_clipped(view, tree.vertices, verts, tri.v[0], tri.v[1], tri.v[2], st,
-                             [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+            auto draw = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
                                  TriangleRaster tr;
                                  const int32_t area = TriangleRaster::signed_area(a, b, c);
                                  if (area == 0) return;
@@ -186,7 +189,9 @@ FrameStats draw_bsp_list(const View& view, const BspTree& tree, Span<const Scree
                                      opt, shading, face, normal, front, [&](const auto& shader) { return paint_rows(tr, y0, y1, frame, shader); });
                                  st.fragments += fragments;
                                  st.pixels_written += fragments;
-                             });
+                             };
+            if ((va.outside() | vb.outside() | vc.outside()) == 0) draw(va, vb, vc);  // for_each_clipped()'s common case
+            else for_each_clipped(view, tree.vertices, verts, tri.v[0], tri.v[1], tri.v[2], st, draw);
         }
     }
     return st;
