@@ -1,11 +1,13 @@
 // The BSP examples, for firmware and host alike: a tree baked into flash by hider-bsp
 // (firmware/common/scenes/bsp_*.hpp), checked once by bsp_load(), then drawn without a depth buffer:
 // back to front (draw_bsp, or order_bsp once per frame and draw_bsp_list per band) or front to back with
-// coverage bits (draw_bsp_front), band by band, each band streamed through spin::PpmSink. The z-buffer run draws the scene's mesh (hider-bake) the usual way,
-// so the host can compare the two and the instruction counts show what the tree saves.
-// Measured region (bench_begin..bench_end): view set-up and projection (for a tree: marking its vertices
-// unprojected, since the walks project a vertex when a triangle first needs it; for the list, its walk),
-// then each band's clear and draw; bsp_load() and the sink are outside it.
+// coverage bits (draw_bsp_front), band by band, each band streamed through spin::PpmSink. The z-buffer
+// run draws the scene's mesh (hider-bake) the usual way, so the host can compare the two and the
+// instruction counts show what the tree saves.
+// Measured region (bench_begin..bench_end): view set-up and projection (for a tree walked per band:
+// marking its vertices unprojected, since the walks project a vertex when a triangle first needs it; for
+// the list: all of them, then its walk), then each band's clear and draw; bsp_load() and the sink are
+// outside it.
 #pragma once
 #include <hider/bsp/order.hpp>
 #include <hider/raster/zbuffer.hpp>

@@ -173,23 +173,23 @@ FrameStats draw_bsp_list(const View& view, const BspTree& tree, Span<const Scree
             if ((va.outside() & vb.outside() & vc.outside()) != 0) continue;  // likewise
             const uint32_t face = tri.face & kBspFaceMask;
             auto draw = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-                                 TriangleRaster tr;
-                                 const int32_t area = TriangleRaster::signed_area(a, b, c);
-                                 if (area == 0) return;
-                                 if (!(flat ? tr.setup_flat(a, b, c, area, frame.width, frame.height, bb)
-                                            : tr.setup(a, b, c, area, frame.width, frame.height, bb)))
-                                     return;
-                                 const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
-                                 if (y0 >= y1) return;
-                                 ++st.triangles_drawn;
-                                 const Normal14 normal{static_cast<int16_t>(back ? -n.normal[0] : n.normal[0]),
-                                                       static_cast<int16_t>(back ? -n.normal[1] : n.normal[1]),
-                                                       static_cast<int16_t>(back ? -n.normal[2] : n.normal[2])};
-                                 const uint32_t fragments = with_face_shader<Format>(
-                                     opt, shading, face, normal, front, [&](const auto& shader) { return paint_rows(tr, y0, y1, frame, shader); });
-                                 st.fragments += fragments;
-                                 st.pixels_written += fragments;
-                             };
+                TriangleRaster tr;
+                const int32_t area = TriangleRaster::signed_area(a, b, c);
+                if (area == 0) return;
+                if (!(flat ? tr.setup_flat(a, b, c, area, frame.width, frame.height, bb)
+                           : tr.setup(a, b, c, area, frame.width, frame.height, bb)))
+                    return;
+                const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
+                if (y0 >= y1) return;
+                ++st.triangles_drawn;
+                const Normal14 normal{static_cast<int16_t>(back ? -n.normal[0] : n.normal[0]),
+                                      static_cast<int16_t>(back ? -n.normal[1] : n.normal[1]),
+                                      static_cast<int16_t>(back ? -n.normal[2] : n.normal[2])};
+                const uint32_t fragments = with_face_shader<Format>(opt, shading, face, normal, front,
+                                                                    [&](const auto& shader) { return paint_rows(tr, y0, y1, frame, shader); });
+                st.fragments += fragments;
+                st.pixels_written += fragments;
+            };
             if ((va.outside() | vb.outside() | vc.outside()) == 0) draw(va, vb, vc);  // for_each_clipped()'s common case
             else for_each_clipped(view, tree.vertices, verts, tri.v[0], tri.v[1], tri.v[2], st, draw);
         }
