@@ -1,13 +1,15 @@
 // The BSP examples, for firmware and host alike: a tree baked into flash by hider-bsp
 // (firmware/common/scenes/bsp_*.hpp), checked once by bsp_load(), then drawn without a depth buffer:
-// back to front (draw_bsp) or front to back with coverage bits (draw_bsp_front), band by band, each band
-// streamed through spin::PpmSink. The z-buffer run draws the scene's mesh (hider-bake) the usual way,
-// so the host can compare the two and the instruction counts show what the tree saves.
-// Measured region (bench_begin..bench_end): view set-up and projection (for a tree: marking its vertices
-// unprojected, since the walks project a vertex when a triangle first needs it), then each band's clear
-// and draw; bsp_load() and the sink are outside it.
+// back to front (draw_bsp, or order_bsp once per frame and draw_bsp_list per band) or front to back with
+// coverage bits (draw_bsp_front), band by band, each band streamed through spin::PpmSink. The z-buffer
+// run draws the scene's mesh (hider-bake) the usual way, so the host can compare the two and the
+// instruction counts show what the tree saves.
+// Measured region (bench_begin..bench_end): view set-up and projection (for a tree walked per band:
+// marking its vertices unprojected, since the walks project a vertex when a triangle first needs it; for
+// the list: all of them, then its walk), then each band's clear and draw; bsp_load() and the sink are
+// outside it.
 #pragma once
-#include <hider/bsp/walk.hpp>
+#include <hider/bsp/order.hpp>
 #include <hider/raster/zbuffer.hpp>
 
 #include "common/bench.hpp"
@@ -20,6 +22,7 @@ namespace bspfw {
 /// What draws the frame.
 enum class Algo : uint8_t {
     back_to_front,  ///< draw_bsp: far subtree, the node, near subtree; every pixel painted over
+    listed,         ///< the same order from one walk a frame (order_bsp), each band drawn from the list
     front_to_back,  ///< draw_bsp_front: each pixel written once, covered subtrees skipped
     zbuffer,        ///< the scene's mesh through draw_zbuffer (16-bit depth band)
 };
@@ -43,22 +46,24 @@ struct Buffers {
     hider::Span<uint16_t> color;             ///< width * rows RGB565
     hider::Span<uint16_t> depth;             ///< width * rows (Algo::zbuffer only)
     hider::Span<uint32_t> coverage;          ///< coverage_words(width) * rows (Algo::front_to_back only)
+    hider::Span<hider::BspDrawEntry> list;   ///< order_bsp's list (Algo::listed only): up to one per node
     hider::Span<uint8_t> ppm_row;            ///< 3 * width
     int32_t rows;                            ///< rows per band
 };
 
 /// Storage for kVertices vertices, a tree kDepth nodes deep and kRows-row bands kWidth wide; the depth
-/// and coverage arrays only when the algorithm needs them.
-template <size_t kVertices, uint32_t kDepth, int32_t kWidth, int32_t kRows, bool kDepthBand, bool kCoverage>
+/// and coverage arrays only when the algorithm needs them, a draw list of kList entries (Algo::listed).
+template <size_t kVertices, uint32_t kDepth, int32_t kWidth, int32_t kRows, bool kDepthBand, bool kCoverage, size_t kList = 1>
 struct Storage {
     hider::ScreenVertex verts[kVertices];
     uint32_t stack[hider::bsp_stack_entries(kDepth)];
     uint16_t color[kWidth * kRows];
     uint16_t depth[kDepthBand ? kWidth * kRows : 1];
     uint32_t coverage[kCoverage ? hider::coverage_words(kWidth) * kRows : 1];
+    hider::BspDrawEntry list[kList];
     uint8_t ppm_row[kWidth * 3];
 
-    Buffers buffers() { return {verts, stack, color, depth, coverage, ppm_row, kRows}; }
+    Buffers buffers() { return {verts, stack, color, depth, coverage, list, ppm_row, kRows}; }
 };
 
 /// What one render did: the bands' statistics summed, and for front to back the coverage check.
@@ -69,14 +74,21 @@ struct Result {
     bool sink_ok = true;               ///< every sink call accepted
 };
 
+/// The options every example draws with: the defaults, culling as the scene says.
+inline hider::DrawOptions opt_of(const Scene& s) {
+    hider::DrawOptions opt;
+    opt.cull = s.cull;
+    return opt;
+}
+
 namespace detail {
 
 /// Clears and draws rows [y0, y1) (inside the measured region); for front to back then checks that the
 /// pixels written are exactly the coverage bits set (outside it).
 inline hider::FrameStats draw_band(const Scene& s, Algo algo, const hider::BspTree& tree, const Buffers& buf,
-                                   const hider::View& view, int32_t y0, int32_t y1, Result& r) {
-    hider::DrawOptions opt;
-    opt.cull = s.cull;
+                                   const hider::View& view, hider::Span<const hider::BspDrawEntry> list, int32_t y0,
+                                   int32_t y1, Result& r) {
+    const hider::DrawOptions opt = opt_of(s);
     hider::FrameStats st;
     bench_begin();
     if (algo == Algo::zbuffer) {
@@ -87,8 +99,12 @@ inline hider::FrameStats draw_band(const Scene& s, Algo algo, const hider::BspTr
     } else {
         const auto band = hider::band_view<hider::Rgb565Format, uint16_t>(buf.color.data(), nullptr, s.width, s.height, y0, y1);
         hider::clear(band, kBackground);
-        st = algo == Algo::front_to_back ? hider::draw_bsp_front(view, s.camera.eye, tree, buf.verts, band, opt, buf.stack, buf.coverage)
-                                         : hider::draw_bsp(view, s.camera.eye, tree, buf.verts, band, opt, buf.stack);
+        if (algo == Algo::listed)
+            st = hider::draw_bsp_list(view, tree, {buf.verts.data(), buf.verts.size()}, list, band, opt);
+        else
+            st = algo == Algo::front_to_back
+                     ? hider::draw_bsp_front(view, s.camera.eye, tree, buf.verts, band, opt, buf.stack, buf.coverage)
+                     : hider::draw_bsp(view, s.camera.eye, tree, buf.verts, band, opt, buf.stack);
     }
     bench_end();
     if (algo == Algo::front_to_back) {
@@ -119,11 +135,14 @@ inline Result render_in_bands(const Scene& s, Algo algo, const Buffers& buf, con
     }
     const hider::Span<const hider::Vec3q16> positions = algo == Algo::zbuffer ? s.mesh.positions : tree.vertices;
     hider::View view;
+    hider::BoundedList<hider::BspDrawEntry> list(buf.list.data(), buf.list.size());
     bench_begin();
     r.stats.status = hider::make_view(s.camera, s.width, s.height, view);
     if (r.stats.ok()) {
-        if (algo == Algo::zbuffer) {
+        if (algo == Algo::zbuffer || algo == Algo::listed) {  // the list's walk draws nearly every vertex
             r.stats.status = hider::project_vertices(view, positions, buf.verts);
+            if (r.stats.ok() && algo == Algo::listed)
+                r.stats.merge(hider::order_bsp(view, s.camera.eye, tree, buf.verts, opt_of(s), buf.stack, list));
         } else if (buf.verts.size() < positions.size()) {
             r.stats.status = hider::Status::invalid_argument;
         } else {
@@ -135,7 +154,7 @@ inline Result render_in_bands(const Scene& s, Algo algo, const Buffers& buf, con
     r.sink_ok = sink.begin_frame(sink.user, static_cast<uint16_t>(s.width), static_cast<uint16_t>(s.height));
     for (int32_t y0 = 0; y0 < s.height && r.sink_ok && r.stats.ok(); y0 += buf.rows) {
         const int32_t y1 = hider::min(s.height, y0 + buf.rows);
-        r.stats.merge(detail::draw_band(s, algo, tree, buf, view, y0, y1, r));
+        r.stats.merge(detail::draw_band(s, algo, tree, buf, view, {list.data(), list.size()}, y0, y1, r));
         r.sink_ok = sink.write_rows(sink.user, static_cast<uint16_t>(y0), static_cast<uint16_t>(y1 - y0), buf.color.data(),
                                     static_cast<uint32_t>(s.width));
     }

@@ -1,5 +1,6 @@
 // bsp_torus firmware (big machine): the torus tree baked by hider-bsp, 160x128 without back-face culling,
-// drawn back to front (draw_bsp) in 16-row bands with no depth buffer, streamed to bsp_torus.ppm.
+// drawn back to front in 16-row bands with no depth buffer (the tree walked once a frame by order_bsp,
+// each band drawn from its list by draw_bsp_list), streamed to bsp_torus.ppm.
 // Host twin: tools/firmware-hosts/bsp_reference.cpp.
 #include "bsp/scenes.hpp"
 #include "spin/semihost_io.hpp"
@@ -12,5 +13,5 @@ bspfw::TorusStorage g_storage;
 
 int main() {
     spin::SemihostIo io;
-    return bspfw::run(io, bspfw::torus_scene(), bspfw::Algo::back_to_front, g_storage.buffers(), "bsp_torus.ppm");
+    return bspfw::run(io, bspfw::torus_scene(), bspfw::Algo::listed, g_storage.buffers(), "bsp_torus.ppm");
 }

@@ -1,7 +1,10 @@
 // Triangle traversal: the top-left fill rule on tiny ASCII rasters, exact coverage of shared edges
-// (fans, random meshes, woody seen head-on), and depth stepping that equals the closed-form plane.
+// (fans, random meshes, woody seen head-on), depth stepping that equals the closed-form plane, and the
+// depth-free set-up covering exactly what the full one covers.
+#include <hider/frame.hpp>
 #include <hider/raster/triangle.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -192,6 +195,51 @@ TEST_CASE("depth stepped along rows equals the closed-form plane at every pixel,
                 CHECK(z <= hi + uint32_t{(w + h) / 2 + 2});
             }
     }
+}
+
+TEST_CASE("setup_flat covers the same rows and spans as setup in every band, with depth 0 throughout") {
+    std::mt19937 rng(78);
+    int drawn = 0, missed = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const int w = 48, h = 40;
+        auto rnd = [&](double lo, double hi) { return lo + (hi - lo) * (rng() / 4294967296.0); };
+        const double size = trial % 3 == 0 ? 60 : 4;  // large triangles reaching past the frame, and sub-pixel-ish ones
+        const double x = rnd(-10, 58), y = rnd(-10, 50);
+        const ScreenVertex a = pv(x + rnd(-size, size), y + rnd(-size, size), w, h, kDepthNear + rng() % (kDepthFar - kDepthNear));
+        const ScreenVertex b = pv(x + rnd(-size, size), y + rnd(-size, size), w, h, kDepthNear + rng() % (kDepthFar - kDepthNear));
+        const ScreenVertex c = pv(x + rnd(-size, size), y + rnd(-size, size), w, h, kDepthNear + rng() % (kDepthFar - kDepthNear));
+        const int32_t area = TriangleRaster::signed_area(a, b, c);
+        for (int y0 = 0; y0 < h; y0 += 13) {
+            FrameView<Grey8Format> band;
+            band.width = w;
+            band.height = h;
+            band.y0 = y0;
+            band.y1 = std::min(h, y0 + 13);
+            const BandBounds bb = band_bounds(band);
+            TriangleRaster full{}, flat{};  // value-initialised: GCC cannot see that setup() wrote them
+            const bool ok = full.setup(a, b, c, area, w, h, bb), ok_flat = flat.setup_flat(a, b, c, area, w, h, bb);
+            CHECK(ok_flat == ok);
+            if (!ok || !ok_flat) { ++missed; continue; }
+            ++drawn;
+            CHECK(flat.first_row() == full.first_row());
+            CHECK(flat.end_row() == full.end_row());
+            CHECK(flat.front() == full.front());
+            CHECK(flat.dzdx() == 0);
+            std::vector<int32_t> spans_full, spans_flat;
+            const int32_t r0 = std::max(band.y0, full.first_row()), r1 = std::min(band.y1, full.end_row());
+            const uint32_t n_full = full.spans(r0, r1, [&](int32_t yy, int32_t x0, int32_t x1, uint32_t) {
+                spans_full.insert(spans_full.end(), {yy, x0, x1});
+            });
+            const uint32_t n_flat = flat.spans(r0, r1, [&](int32_t yy, int32_t x0, int32_t x1, uint32_t z) {
+                spans_flat.insert(spans_flat.end(), {yy, x0, x1});
+                CHECK(z == 0);
+            });
+            CHECK(n_flat == n_full);
+            CHECK(spans_flat == spans_full);
+        }
+    }
+    CHECK(drawn > 1000);  // both kinds of outcome were exercised
+    CHECK(missed > 100);
 }
 
 TEST_CASE("woody seen head-on: every pixel inside the outline is covered exactly once") {

@@ -1,7 +1,7 @@
 // Host twin of bsp_torus, bsp_city and bsp_city_zbuffer: the same scenes, storage and band renderer
 // (bsp/app.hpp) compiled for the host, writing bsp_torus.ppm, bsp_city.ppm and bsp_city_zbuffer.ppm into
-// the current directory. Then checks on the host: the torus in one 128-row band and the city in 8-row
-// bands give the same bytes as the firmware's bands; the trees agree with a z-buffer render of their
+// the current directory. Then checks on the host: the torus in one 128-row band, the torus walked in each
+// band (draw_bsp) and the city in 8-row bands give the same bytes as the firmware's bands; the trees agree with a z-buffer render of their
 // source mesh on >= 99.9% of the pixels (the torus against the baked torus mesh without culling, 32-bit
 // depth; the city against bsp_city_zbuffer); front to back wrote each pixel once (checked per band by
 // run()). Prints the counts. Exit 0 ok, 1 on a failure.
@@ -58,12 +58,14 @@ bool same(const char* what, const std::vector<uint8_t>& a, const std::vector<uin
 int main() {
     namespace bf = bspfw;
     const bf::Scene torus = bf::torus_scene(), city = bf::city_scene(), city_mesh = bf::city_mesh_scene();
-    const auto torus_ppm = render(torus, bf::Algo::back_to_front, g_torus.buffers(), bf::kTorusRows, "bsp_torus.ppm", true);
+    const auto torus_ppm = render(torus, bf::Algo::listed, g_torus.buffers(), bf::kTorusRows, "bsp_torus.ppm", true);
     const auto city_ppm = render(city, bf::Algo::front_to_back, g_city.buffers(), city.height, "bsp_city.ppm", true);
     const auto city_z_ppm = render(city_mesh, bf::Algo::zbuffer, g_city_z.buffers(), city.height, "bsp_city_zbuffer.ppm", true);
     if (torus_ppm.empty() || city_ppm.empty() || city_z_ppm.empty()) return 1;
     bool ok = same("bsp_torus in one band and in 16-row bands",
-                   render(torus, bf::Algo::back_to_front, g_torus.buffers(), torus.height, "", false), torus_ppm);
+                   render(torus, bf::Algo::listed, g_torus.buffers(), torus.height, "", false), torus_ppm);
+    ok = same("bsp_torus from its draw list and walked in each band",
+              render(torus, bf::Algo::back_to_front, g_torus.buffers(), bf::kTorusRows, "", false), torus_ppm) && ok;
     ok = same("bsp_city in 8-row bands and in one band", render(city, bf::Algo::front_to_back, g_city.buffers(), 8, "", false),
               city_ppm) && ok;
     ok = same("bsp_city back to front and front to back", render(city, bf::Algo::back_to_front, g_city.buffers(), 8, "", false),

@@ -117,7 +117,7 @@ int bsp_command(const Args& args) {
     walk_row("city-1-16-16 from the street", city_path(), kCityView, false);
 
     std::printf("\nfirmware/bsp under QEMU (instructions from bench_begin to bench_end, -Os; the tree loaded once outside):\n"
-                "bsp_torus (back to front, 16-row bands, no culling) against painter_plain (same frame), bsp_city\n"
+                "bsp_torus (back to front from one walk's list, 16-row bands, no culling) against painter_plain (same frame), bsp_city\n"
                 "(front to back, one band, culled) against bsp_city_zbuffer (the same view's mesh, 16-bit depth).\n\n");
     std::printf("| target | bsp_torus | painter_plain | ratio | bsp_city | bsp_city_zbuffer | ratio |\n|---|---:|---:|---:|---:|---:|---:|\n");
     bool any = false;

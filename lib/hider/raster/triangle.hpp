@@ -29,14 +29,20 @@ public:
     /// setup() with the caller's signed_area(a, b, c).
     bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int32_t area, int32_t width,
                int32_t height) {
-        return setup_impl<false>(a, b, c, area, width, height, nullptr);
+        return setup_impl<false, true>(a, b, c, area, width, height, nullptr);
     }
     /// setup() for one band: also false, before the depth plane (the divisions), when no pixel centre
     /// of the band lies in the triangle's bounding box (misses_band); nothing is drawn then.
     __attribute__((always_inline)) bool setup(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                                               int32_t area, int32_t width, int32_t height,
                                               const BandBounds& band) {
-        return setup_impl<true>(a, b, c, area, width, height, &band);
+        return setup_impl<true, true>(a, b, c, area, width, height, &band);
+    }
+    /// setup() for one band without the depth plane: dzdx() and every span's z are 0, so both divisions
+    /// are skipped. The same rows and spans as setup(); for shaders that ignore depth (flat colour).
+    __attribute__((always_inline)) bool setup_flat(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                                                   int32_t area, int32_t width, int32_t height, const BandBounds& band) {
+        return setup_impl<true, false>(a, b, c, area, width, height, &band);
     }
 
     bool front() const { return front_; }
@@ -83,7 +89,7 @@ private:
         }
     };
 
-    template <bool kBandTest>
+    template <bool kBandTest, bool kDepth>
     __attribute__((always_inline)) bool setup_impl(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                                                    int32_t area, int32_t width, int32_t height,
                                                    const BandBounds* band) {
@@ -120,7 +126,12 @@ private:
         row_top_ = first_row_at_or_below(yt);
         row_mid_ = first_row_at_or_below(ym);
         row_bottom_ = first_row_at_or_below(yb);
-        setup_depth(a, v1, v2, area);
+        if (kDepth) {
+            setup_depth(a, v1, v2, area);
+        } else {  // depth_at() is then 0 everywhere
+            z_ref_ = dzdx_ = dzdy_ = 0;
+            ref_px_ = ref_py_ = 0;
+        }
         return true;
     }
 

@@ -1,0 +1,200 @@
+// Back to front with one walk per frame: order_bsp() walks the tree once (walk.hpp's order, side tests,
+// edge-on and back-face rules) and writes the nodes to draw into a caller list, each with the rows its
+// triangles can touch; draw_bsp_list() then paints one band from that list, skipping in two compares the
+// nodes that cannot reach it. Together they give draw_bsp()'s bytes in every band, without walking the
+// tree (and testing its subtree boxes) once per band. Flat shading is set up with no depth plane.
+#pragma once
+#include <hider/bsp/walk.hpp>
+
+namespace hider {
+
+/// One node of the back-to-front order, 8 bytes:
+///   node   bits 0-29: tree node index; bit 30 (kBspListFront): the eye on the front side of its plane
+///   y0 y1  rows [y0, y1) of the frame its drawn triangles can touch (the whole frame when one of them
+///          needs clipping at the near plane or the guard band)
+struct BspDrawEntry {
+    uint32_t node;
+    int16_t y0, y1;
+};
+static_assert(sizeof(BspDrawEntry) == 8, "BspDrawEntry layout is documented above and in README.md");
+constexpr uint32_t kBspListFront = 0x40000000u;
+constexpr uint32_t kBspListIndex = kBspListFront - 1;
+
+namespace detail {
+
+/// The whole frame of a view as a band.
+struct WholeFrame {
+    int32_t width, height, y0, y1;
+};
+
+/// True when every point of a box subtree_box() measured lies in the depth range and projects inside
+/// the band's widened edges (the four forms' minima over the box >= 0). Every subtree below it is then
+/// inside too (its box holds points of this one), so the walk stops testing their boxes: the same
+/// subtrees are skipped, for one test per path instead of one per node.
+inline bool box_inside(const View& view, const SubtreeBox& b, const BandBounds& bb) {
+    if (b.outside || b.near || b.cw + b.ew > view.far_raw || !fits_bits(b.cx, 31) || !fits_bits(b.cy, 31) ||
+        !fits_bits(b.cw, 31) || !fits_bits(b.ex, 30) || !fits_bits(b.ey, 30) || !fits_bits(b.ew, 30))
+        return false;
+    const int32_t k = view.k_q8, cx = static_cast<int32_t>(b.cx), cy = static_cast<int32_t>(b.cy), cw = static_cast<int32_t>(b.cw);
+    const int32_t ex = static_cast<int32_t>(b.ex), ey = static_cast<int32_t>(b.ey), ew = static_cast<int32_t>(b.ew);
+    auto box_min = [&](int32_t a, int32_t cw_coef, int32_t centre, int32_t half) {
+        return mul32(a, centre) + mul32(cw_coef, cw) - mul32(abs_value(a), half) - mul32(abs_value(cw_coef), ew);
+    };
+    const int32_t x_lo = 256 * (bb.x_first - kSubpixel), x_hi = 256 * (bb.x_last + kSubpixel);
+    const int32_t y_lo = 256 * (bb.y_first - kSubpixel), y_hi = 256 * (bb.y_last + kSubpixel);
+    return box_min(k, -x_lo, cx, ex) >= 0 && box_min(-k, x_hi, cx, ex) >= 0 && box_min(-k, -y_lo, cy, ey) >= 0 &&
+           box_min(k, y_hi, cy, ey) >= 0;  // subtree_box()'s four planes
+}
+
+/// Projects what node n's drawable triangles need and returns the rows [y0, y1) their pixel centres can
+/// lie on (not clamped to the frame; empty when there are none); counts culled and wholly outside
+/// triangles in st.
+inline void node_rows(const View& view, const PreparedTransform& to_view, const BspTree& tree, const BspNode& n, bool eye_front,
+                      Span<ScreenVertex> verts, const DrawOptions& opt, const BandBounds& bb, int32_t& y0, int32_t& y1,
+                      FrameStats& st) {
+    y0 = view.height;
+    y1 = 0;
+    for (uint32_t t = n.first; t < n.first + n.count; ++t) {
+        const BspTriangle& tri = tree.triangles[t];
+        if (opt.cull && eye_front == ((tri.face & kBspFaceBack) != 0)) {  // the eye behind the triangle
+            ++st.triangles_culled;
+            continue;
+        }
+        for (uint32_t v : tri.v)
+            if (unprojected(verts[v])) project_vertex(view, to_view, tree.vertices[v], verts[v]);
+        const ScreenVertex &a = verts[tri.v[0]], &b = verts[tri.v[1]], &c = verts[tri.v[2]];
+        if ((a.outside() & b.outside() & c.outside()) != 0) {
+            ++st.triangles_outside;
+            continue;
+        }
+        if ((a.outside() | b.outside() | c.outside()) != 0) {  // clipped: its pieces may reach any row
+            y0 = 0;
+            y1 = view.height;
+            continue;
+        }
+        // Rows whose centres lie between the lowest and highest vertex (as pixel_rect() counts them); a
+        // triangle left or right of the frame is rejected later, by its set-up.
+        const int32_t y_min = min<int32_t>(a.y, min<int32_t>(b.y, c.y)), y_max = max<int32_t>(a.y, max<int32_t>(b.y, c.y));
+        y0 = min(y0, (y_min - bb.y_origin + kSubpixel - 1) >> kSubpixelBits);
+        y1 = max(y1, ((y_max - bb.y_origin) >> kSubpixelBits) + 1);
+    }
+}
+
+}  // namespace detail
+
+/// Walks `tree` once for the frame of `view` (eye as for draw_bsp()) and writes into `list` (cleared
+/// first) the nodes to draw back to front: those with a triangle that is not culled, not wholly outside
+/// the view volume and covers a pixel centre's row. `verts` as for draw_bsp(): projected, or marked by
+/// mark_unprojected() and projected here as needed (then left for draw_bsp_list()). Subtrees whose box
+/// lies outside the frame are skipped. Counts nodes visited, subtrees skipped, triangles culled and
+/// wholly outside (once per frame). A full list: capacity_exceeded, the walk goes on and
+/// `list.size() + list.dropped()` entries were needed; the list then lacks the nearest nodes.
+/// Returns invalid_argument (list empty) for an unusable view, too few vertices or too small a stack,
+/// or a tree with more than 2^30 nodes. Borrows everything for the call.
+inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
+                            const DrawOptions& opt, Span<uint32_t> stack, BoundedList<BspDrawEntry>& list) {
+    FrameStats st;
+    list.clear();
+    if (view.width < 1 || view.height < 1 || view.height > INT16_MAX || verts.size() < tree.vertices.size() ||
+        stack.size() < bsp_stack_entries(tree.max_depth) || tree.nodes.size() > kBspListIndex) {
+        st.status = Status::invalid_argument;
+        return st;
+    }
+    if (tree.nodes.empty()) return st;
+    // Stack entries as in walk_bsp(): a node to enter, with kInside when an ancestor's box lies wholly
+    // inside the frame; or (kDraw) one whose triangles come next, with kBspListFront.
+    constexpr uint32_t kDraw = 0x80000000u, kInside = kBspListFront;
+    const BandBounds bb = band_bounds(detail::WholeFrame{view.width, view.height, 0, view.height});
+    const PreparedTransform to_view(view.to_view);
+    size_t top = 0;
+    stack[top++] = 0;
+    while (top != 0) {
+        const uint32_t entry = stack[--top];
+        const BspNode& n = tree.nodes[entry & kBspListIndex];
+        if ((entry & kDraw) == 0) {
+            ++st.nodes_visited;
+            uint32_t inside = entry & kInside;
+            if (inside == 0) {
+                const detail::SubtreeBox box = detail::subtree_box(view, n, bb);
+                if (box.outside) {
+                    ++st.subtrees_skipped;
+                    continue;
+                }
+                if (detail::box_inside(view, box, bb)) inside = kInside;
+            }
+            const int side = detail::eye_side(tree, n, eye);
+            const uint32_t near = n.child[side >= 0 ? 0 : 1], far = n.child[side >= 0 ? 1 : 0];
+            if (near != kBspNone) stack[top++] = near | inside;
+            if (side != 0 && n.count != 0)  // not edge-on
+                stack[top++] = (entry & kBspListIndex) | kDraw | (side > 0 ? kBspListFront : 0);
+            if (far != kBspNone) stack[top++] = far | inside;  // drawn first
+            continue;
+        }
+        int32_t y0 = 0, y1 = 0;
+        detail::node_rows(view, to_view, tree, n, (entry & kBspListFront) != 0, verts, opt, bb, y0, y1, st);
+        y0 = max<int32_t>(y0, 0);
+        y1 = min(y1, view.height);
+        if (y0 < y1 && !list.push_back({entry & ~kDraw, static_cast<int16_t>(y0), static_cast<int16_t>(y1)}))
+            st.status = Status::capacity_exceeded;
+    }
+    return st;
+}
+
+/// Paints the band from `list` (order_bsp() for the same view, tree, vertices and options; the caller
+/// cleared the band): draw_bsp()'s pixels, order and counts of triangles drawn and clipped, fragments and
+/// pixels written. Flat colours are set up without a depth plane. Returns invalid_argument for an
+/// unusable frame, too few vertices, or an entry naming no node of the tree (drawing stops there).
+template <class Format, class Depth>
+FrameStats draw_bsp_list(const View& view, const BspTree& tree, Span<const ScreenVertex> verts, Span<const BspDrawEntry> list,
+                         const FrameView<Format, Depth>& frame, const DrawOptions& opt) {
+    FrameStats st;
+    if (!frame_matches(view, frame) || verts.size() < tree.vertices.size()) {
+        st.status = Status::invalid_argument;
+        return st;
+    }
+    const FaceShading shading(view, opt);
+    const BandBounds bb = band_bounds(frame);
+    const bool flat = opt.shade != Shade::depth;
+    for (const BspDrawEntry& e : list) {
+        if (e.y1 <= frame.y0 || e.y0 >= frame.y1) continue;  // no row in the band
+        const uint32_t index = e.node & kBspListIndex;
+        if (index >= tree.nodes.size()) {
+            st.status = Status::invalid_argument;
+            break;
+        }
+        const BspNode& n = tree.nodes[index];
+        const bool eye_front = (e.node & kBspListFront) != 0;
+        for (uint32_t t = n.first; t < n.first + n.count; ++t) {
+            const BspTriangle& tri = tree.triangles[t];
+            const bool back = (tri.face & kBspFaceBack) != 0;
+            const bool front = eye_front != back;  // the eye is on the triangle's own front side
+            if (opt.cull && !front) continue;      // counted by order_bsp()
+            const ScreenVertex &va = verts[tri.v[0]], &vb = verts[tri.v[1]], &vc = verts[tri.v[2]];
+            if ((va.outside() & vb.outside() & vc.outside()) != 0) continue;  // likewise
+            const uint32_t face = tri.face & kBspFaceMask;
+            auto draw = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+                TriangleRaster tr;
+                const int32_t area = TriangleRaster::signed_area(a, b, c);
+                if (area == 0) return;
+                if (!(flat ? tr.setup_flat(a, b, c, area, frame.width, frame.height, bb)
+                           : tr.setup(a, b, c, area, frame.width, frame.height, bb)))
+                    return;
+                const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
+                if (y0 >= y1) return;
+                ++st.triangles_drawn;
+                const Normal14 normal{static_cast<int16_t>(back ? -n.normal[0] : n.normal[0]),
+                                      static_cast<int16_t>(back ? -n.normal[1] : n.normal[1]),
+                                      static_cast<int16_t>(back ? -n.normal[2] : n.normal[2])};
+                const uint32_t fragments = with_face_shader<Format>(opt, shading, face, normal, front,
+                                                                    [&](const auto& shader) { return paint_rows(tr, y0, y1, frame, shader); });
+                st.fragments += fragments;
+                st.pixels_written += fragments;
+            };
+            if ((va.outside() | vb.outside() | vc.outside()) == 0) draw(va, vb, vc);  // for_each_clipped()'s common case
+            else for_each_clipped(view, tree.vertices, verts, tri.v[0], tri.v[1], tri.v[2], st, draw);
+        }
+    }
+    return st;
+}
+
+}  // namespace hider
