@@ -1,6 +1,6 @@
-// The outward quotient bounds behind the front-to-back walk's subtree rectangles (bsp/walk.hpp): a lower
-// bound never above num / (256 w), an upper one never below it, and both close to it while the
-// quotient is in the pixel range, against exact 128-bit arithmetic.
+// The walk arithmetic of bsp/walk.hpp against exact 128-bit arithmetic: the outward quotient bounds
+// behind the front-to-back subtree rectangles (never above / below num / (256 w), close to it in the
+// pixel range) and the eye's side of a node plane (its 32-bit filter and the exact fallback).
 #include <hider/bsp/walk.hpp>
 
 #include <random>
@@ -53,4 +53,51 @@ TEST_CASE("bound_over_256w bounds num / (256 w) from below and above, tightly in
         }
     }
     CHECK(tight_cases > 10000);
+}
+
+TEST_CASE("eye_side is the exact sign of n . (eye - origin): grid planes, huge normals, far eyes, eyes on the plane") {
+    std::mt19937_64 rng(11);
+    auto coord = [&](int64_t limit) { return static_cast<int32_t>(static_cast<int64_t>(rng() % (2 * limit - 1)) - (limit - 1)); };
+    uint64_t on_plane = 0, near_plane = 0;
+    for (int i = 0; i < 300000; ++i) {
+        const int kind = static_cast<int>(rng() % 4);
+        Vec3q16 origin{Q16::from_raw(coord(kBspWorldLimitRaw)), Q16::from_raw(coord(kBspWorldLimitRaw)),
+                       Q16::from_raw(coord(kBspWorldLimitRaw))};
+        BspNode n{};
+        n.origin = 0;
+        // Normals of every size bsp_load accepts (|n| < 2^62), most of them those of grid planes (< 2^57).
+        const int bits = kind == 0 ? 62 : static_cast<int>(1 + rng() % 57);
+        for (auto& c : n.n) c = static_cast<int64_t>(rng() >> (64 - bits)) * ((rng() & 1) != 0 ? 1 : -1);
+        if (n.n[0] == 0 && n.n[1] == 0 && n.n[2] == 0) n.n[0] = 1;
+        // Eyes anywhere in int32 (kind 1), or near the origin and the plane (kinds 2, 3).
+        Vec3q16 eye;
+        if (kind == 1) {
+            eye = {Q16::from_raw(static_cast<int32_t>(rng())), Q16::from_raw(static_cast<int32_t>(rng())),
+                   Q16::from_raw(static_cast<int32_t>(rng()))};
+        } else {
+            const int32_t r = kind == 3 ? 64 : (int32_t{1} << 30) - (int32_t{1} << 27);
+            eye = {Q16::from_raw(origin.x.raw() + coord(r)), Q16::from_raw(origin.y.raw() + coord(r)),
+                   Q16::from_raw(origin.z.raw() + coord(r))};
+        }
+        if (kind == 3 && (rng() & 3) == 0) {  // on the plane: a normal orthogonal to d
+            const int64_t d0 = int64_t{eye.x.raw()} - origin.x.raw(), d1 = int64_t{eye.y.raw()} - origin.y.raw(),
+                          d2 = int64_t{eye.z.raw()} - origin.z.raw();
+            n.n[0] = d1 - d2;
+            n.n[1] = d2 - d0;
+            n.n[2] = d0 - d1;
+            if (n.n[0] == 0 && n.n[1] == 0 && n.n[2] == 0) continue;
+        }
+        BspTree tree;
+        tree.vertices = {&origin, 1};
+        const __int128 exact = __int128{n.n[0]} * (int64_t{eye.x.raw()} - origin.x.raw()) +
+                               __int128{n.n[1]} * (int64_t{eye.y.raw()} - origin.y.raw()) +
+                               __int128{n.n[2]} * (int64_t{eye.z.raw()} - origin.z.raw());
+        const int want = exact > 0 ? 1 : exact < 0 ? -1 : 0;
+        on_plane += want == 0;
+        near_plane += kind == 3;
+        INFO("n ", n.n[0], " ", n.n[1], " ", n.n[2], " eye ", eye.x.raw(), " ", eye.y.raw(), " ", eye.z.raw());
+        REQUIRE(detail::eye_side(tree, n, eye) == want);
+    }
+    CHECK(on_plane > 1000);
+    CHECK(near_plane > 10000);
 }
