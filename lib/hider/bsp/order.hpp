@@ -140,6 +140,59 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
     return st;
 }
 
+namespace detail {
+
+/// What draw_bsp_list() hands to the drawing of each listed node.
+template <class Format, class Depth>
+struct ListBand {
+    const View& view;
+    const BspTree& tree;
+    Span<const ScreenVertex> verts;
+    const FrameView<Format, Depth>& frame;
+    const DrawOptions& opt;
+    FaceShading shading;
+    BandBounds bb;
+};
+
+/// Draws the triangles of node n into the band (the eye on its front side when eye_front). Out of line:
+/// the list loop around it keeps its few values in registers.
+template <class Format, class Depth>
+__attribute__((noinline)) void draw_listed_node(const ListBand<Format, Depth>& lb, const BspNode& n, bool eye_front, FrameStats& st) {
+    const FrameView<Format, Depth>& frame = lb.frame;
+    const bool flat = lb.opt.shade != Shade::depth;
+    for (uint32_t t = n.first; t < n.first + n.count; ++t) {
+        const BspTriangle& tri = lb.tree.triangles[t];
+        const bool back = (tri.face & kBspFaceBack) != 0;
+        const bool front = eye_front != back;  // the eye is on the triangle's own front side
+        if (lb.opt.cull && !front) continue;   // counted by order_bsp()
+        const ScreenVertex &va = lb.verts[tri.v[0]], &vb = lb.verts[tri.v[1]], &vc = lb.verts[tri.v[2]];
+        if ((va.outside() & vb.outside() & vc.outside()) != 0) continue;  // likewise
+        const uint32_t face = tri.face & kBspFaceMask;
+        auto draw = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+            TriangleRaster tr;
+            const int32_t area = TriangleRaster::signed_area(a, b, c);
+            if (area == 0) return;
+            if (!(flat ? tr.setup_flat(a, b, c, area, frame.width, frame.height, lb.bb)
+                       : tr.setup(a, b, c, area, frame.width, frame.height, lb.bb)))
+                return;
+            const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
+            if (y0 >= y1) return;
+            ++st.triangles_drawn;
+            const Normal14 normal{static_cast<int16_t>(back ? -n.normal[0] : n.normal[0]),
+                                  static_cast<int16_t>(back ? -n.normal[1] : n.normal[1]),
+                                  static_cast<int16_t>(back ? -n.normal[2] : n.normal[2])};
+            const uint32_t fragments = with_face_shader<Format>(lb.opt, lb.shading, face, normal, front,
+                                                                [&](const auto& shader) { return paint_rows(tr, y0, y1, frame, shader); });
+            st.fragments += fragments;
+            st.pixels_written += fragments;
+        };
+        if ((va.outside() | vb.outside() | vc.outside()) == 0) draw(va, vb, vc);  // for_each_clipped()'s common case
+        else for_each_clipped(lb.view, lb.tree.vertices, lb.verts, tri.v[0], tri.v[1], tri.v[2], st, draw);
+    }
+}
+
+}  // namespace detail
+
 /// Paints the band from `list` (order_bsp() for the same view, tree, vertices and options; the caller
 /// cleared the band): draw_bsp()'s pixels, order and counts of triangles drawn and clipped, fragments and
 /// pixels written. Flat colours are set up without a depth plane. Returns invalid_argument for an
@@ -152,47 +205,17 @@ FrameStats draw_bsp_list(const View& view, const BspTree& tree, Span<const Scree
         st.status = Status::invalid_argument;
         return st;
     }
-    const FaceShading shading(view, opt);
-    const BandBounds bb = band_bounds(frame);
-    const bool flat = opt.shade != Shade::depth;
-    for (const BspDrawEntry& e : list) {
-        if (e.y1 <= frame.y0 || e.y0 >= frame.y1) continue;  // no row in the band
-        const uint32_t index = e.node & kBspListIndex;
-        if (index >= tree.nodes.size()) {
+    const detail::ListBand<Format, Depth> lb{view, tree, verts, frame, opt, FaceShading(view, opt), band_bounds(frame)};
+    const int32_t band_y0 = frame.y0, band_y1 = frame.y1;
+    const size_t nodes = tree.nodes.size();
+    for (const BspDrawEntry *e = list.data(), *const end = e + list.size(); e != end; ++e) {
+        if (e->y1 <= band_y0 || e->y0 >= band_y1) continue;  // no row in the band
+        const uint32_t index = e->node & kBspListIndex;
+        if (index >= nodes) {
             st.status = Status::invalid_argument;
             break;
         }
-        const BspNode& n = tree.nodes[index];
-        const bool eye_front = (e.node & kBspListFront) != 0;
-        for (uint32_t t = n.first; t < n.first + n.count; ++t) {
-            const BspTriangle& tri = tree.triangles[t];
-            const bool back = (tri.face & kBspFaceBack) != 0;
-            const bool front = eye_front != back;  // the eye is on the triangle's own front side
-            if (opt.cull && !front) continue;      // counted by order_bsp()
-            const ScreenVertex &va = verts[tri.v[0]], &vb = verts[tri.v[1]], &vc = verts[tri.v[2]];
-            if ((va.outside() & vb.outside() & vc.outside()) != 0) continue;  // likewise
-            const uint32_t face = tri.face & kBspFaceMask;
-            auto draw = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-                TriangleRaster tr;
-                const int32_t area = TriangleRaster::signed_area(a, b, c);
-                if (area == 0) return;
-                if (!(flat ? tr.setup_flat(a, b, c, area, frame.width, frame.height, bb)
-                           : tr.setup(a, b, c, area, frame.width, frame.height, bb)))
-                    return;
-                const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
-                if (y0 >= y1) return;
-                ++st.triangles_drawn;
-                const Normal14 normal{static_cast<int16_t>(back ? -n.normal[0] : n.normal[0]),
-                                      static_cast<int16_t>(back ? -n.normal[1] : n.normal[1]),
-                                      static_cast<int16_t>(back ? -n.normal[2] : n.normal[2])};
-                const uint32_t fragments = with_face_shader<Format>(opt, shading, face, normal, front,
-                                                                    [&](const auto& shader) { return paint_rows(tr, y0, y1, frame, shader); });
-                st.fragments += fragments;
-                st.pixels_written += fragments;
-            };
-            if ((va.outside() | vb.outside() | vc.outside()) == 0) draw(va, vb, vc);  // for_each_clipped()'s common case
-            else for_each_clipped(view, tree.vertices, verts, tri.v[0], tri.v[1], tri.v[2], st, draw);
-        }
+        detail::draw_listed_node(lb, tree.nodes[index], (e->node & kBspListFront) != 0, st);
     }
     return st;
 }
