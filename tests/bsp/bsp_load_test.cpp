@@ -461,3 +461,24 @@ TEST_CASE("every blob bsp_load accepts walks safely: random field damage to comp
         CHECK(accepted > 0);
     }
 }
+
+TEST_CASE("bsp_checksum is FNV-1a of every byte but the checksum field, for every length and alignment") {
+    // The reference: the published FNV-1a, one byte at a time.
+    auto reference = [](const uint8_t* p, size_t n, uint32_t h) {
+        for (size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 16777619u;
+        return h;
+    };
+    std::mt19937 rng(5);
+    std::vector<uint8_t> bytes(300);
+    for (auto& b : bytes) b = static_cast<uint8_t>(rng());
+    CHECK(fnv1a(reinterpret_cast<const uint8_t*>("a"), 1) == 0xE40C292Cu);  // the published test vector
+    CHECK(fnv1a(reinterpret_cast<const uint8_t*>("foobar"), 6) == 0xBF9CF968u);
+    for (size_t start = 0; start < 8; ++start)
+        for (size_t n = 0; start + n <= bytes.size(); n += 1 + n / 16)
+            REQUIRE(fnv1a(bytes.data() + start, n, 12345u + static_cast<uint32_t>(n)) ==
+                    reference(bytes.data() + start, n, 12345u + static_cast<uint32_t>(n)));
+    for (size_t size = 64; size <= bytes.size(); size += 7) {
+        const uint32_t want = reference(bytes.data() + 32, size - 32, reference(bytes.data(), 28, 2166136261u));
+        REQUIRE(bsp_checksum(bytes.data(), size) == want);
+    }
+}
