@@ -150,9 +150,12 @@ inline Result render_in_bands(const Scene& s, Algo algo, const Buffers& buf, con
         }
     }
     bench_end();
-    if (!r.stats.ok()) return r;
+    // A full draw list (capacity_exceeded) still gives a whole frame, without its nearest nodes; the status
+    // stays in the result. Any other status ends the render.
+    auto drawable = [&r] { return r.stats.ok() || r.stats.status == hider::Status::capacity_exceeded; };
+    if (!drawable()) return r;
     r.sink_ok = sink.begin_frame(sink.user, static_cast<uint16_t>(s.width), static_cast<uint16_t>(s.height));
-    for (int32_t y0 = 0; y0 < s.height && r.sink_ok && r.stats.ok(); y0 += buf.rows) {
+    for (int32_t y0 = 0; y0 < s.height && r.sink_ok && drawable(); y0 += buf.rows) {
         const int32_t y1 = hider::min(s.height, y0 + buf.rows);
         r.stats.merge(detail::draw_band(s, algo, tree, buf, view, {list.data(), list.size()}, y0, y1, r));
         r.sink_ok = sink.write_rows(sink.user, static_cast<uint16_t>(y0), static_cast<uint16_t>(y1 - y0), buf.color.data(),

@@ -155,16 +155,16 @@ __attribute__((naked, noinline)) inline void fill_words_v6m(AliasWord*, AliasWor
 inline void fill_words(void* p, size_t n, uint32_t word) {
     detail::AliasWord* w = static_cast<detail::AliasWord*>(p);
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-    // Cortex-M3/M4: eight 12-register store-multiples per 96 words (GCC -Os emits one str per word;
-    // two 10-register ones per 20 words measured 8,000 instructions more a torus frame).
+    // Cortex-M3/M4: eight 12-register store-multiples per 96 words (GCC -Os emits one str per word, and
+    // shorter store-multiples cost more per word).
     if (size_t blocks = n / 96) {
         detail::fill_words_v7m(w, w + blocks * 96, word);
         w += blocks * 96;
         n -= blocks * 96;
     }
 #elif defined(__arm__) && defined(__thumb__)
-    // Cortex-M0/M0+: eight 7-register store-multiples per 56 words (GCC -Os emits one str per word; two
-    // 6-register ones per 12 words measured 11,900 instructions more a torus frame).
+    // Cortex-M0/M0+: eight 7-register store-multiples per 56 words (GCC -Os emits one str per word, and
+    // shorter store-multiples cost more per word).
     if (size_t blocks = n / 56) {
         __asm__("" : "+r"(blocks));  // n - 56 blocks below, not a second division for n % 56 (a library call here)
         detail::fill_words_v6m(w, w + blocks * 56, word);
@@ -172,8 +172,8 @@ inline void fill_words(void* p, size_t n, uint32_t word) {
         n -= blocks * 56;
     }
 #elif defined(__riscv) && __riscv_xlen == 32
-    // RV32 has no store-multiple: 64 stores and one pointer step per 256 bytes (GCC's loop below takes
-    // 11 instructions per 8 words; 32 stores a step measured 2,400 instructions more a torus frame).
+    // RV32 has no store-multiple: 64 stores and one pointer step per 256 bytes (GCC's loop below spends
+    // three more instructions per 8 words on its pointer and count).
     if (size_t blocks = n / 64) {
         detail::AliasWord* const end = w + blocks * 64;
         __asm__ volatile("1:\n\t"

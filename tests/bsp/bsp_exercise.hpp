@@ -1,5 +1,6 @@
-// Arbitrary bytes through bsp_load() and, when it accepts them, through both walks into a small frame from
-// a few fixed cameras (one of them on a vertex of the tree, so on some node's plane). Shared by the
+// Arbitrary bytes through bsp_load() and, when it accepts them, through both walks and the one-walk list
+// (order.hpp) into a small frame from a few fixed cameras (one of them on a vertex of the tree, so on
+// some node's plane). Shared by the
 // doctest suite (corrupt blobs, tests/bsp/bsp_load_test.cpp) and the libFuzzer target
 // (tests/fuzz/bsp_load_fuzz.cpp), so an input one of them finds replays in the other. Every buffer is a
 // std::vector of exactly the size lib/ is promised, so under ASan a read or write past it is caught.
@@ -8,6 +9,7 @@
 // project lead, who is editing walk.hpp); included here so the fuzzer, which includes nothing else, builds.
 #include <hider/raster/clip.hpp>
 #include <hider/raster/vertices.hpp>
+#include <hider/bsp/order.hpp>
 #include <hider/bsp/walk.hpp>
 
 #include <cstring>
@@ -52,7 +54,8 @@ inline Camera bsp_camera(Vec3q16 eye, Vec3q16 target) {
     return c;
 }
 
-/// Both walks of `tree` from `cam`, full frame and one band, into a 40 x 30 RGB565 frame.
+/// Both walks of `tree` from `cam`, and the one-walk list (order_bsp, then draw_bsp_list per band),
+/// full frame and one band, into a 40 x 30 RGB565 frame.
 inline void walk_bsp_both(const BspTree& tree, const Camera& cam, bool cull, Shade shade, BspExercise& out) {
     constexpr int32_t kW = 40, kH = 30;
     View view;
@@ -66,6 +69,11 @@ inline void walk_bsp_both(const BspTree& tree, const Camera& cam, bool cull, Sha
         return;
     }
     std::vector<uint32_t> stack(bsp_stack_entries(tree.max_depth));
+    std::vector<BspDrawEntry> entries(tree.nodes.size());  // one per node: never too few
+    BoundedList<BspDrawEntry> list(entries.data(), entries.size());
+    const FrameStats ordered = order_bsp(view, cam.eye, tree, {verts.data(), verts.size()}, opt, {stack.data(), stack.size()}, list);
+    ++out.walks;
+    out.walk_failures += ordered.status != Status::ok;
     const int32_t bands[2][2] = {{0, kH}, {11, 18}};
     for (const auto& b : bands) {
         const int32_t rows = b[1] - b[0];
@@ -83,6 +91,10 @@ inline void walk_bsp_both(const BspTree& tree, const Camera& cam, bool cull, Sha
             out.overdraw_failures += front && st.pixels_written > uint64_t{kW} * static_cast<uint64_t>(rows);
             out.triangles_drawn += st.triangles_drawn;
         }
+        const FrameStats st = draw_bsp_list(view, tree, {verts.data(), verts.size()}, {list.data(), list.size()}, frame, opt);
+        ++out.walks;
+        out.walk_failures += st.status != Status::ok;
+        out.triangles_drawn += st.triangles_drawn;
     }
 }
 

@@ -224,3 +224,45 @@ TEST_CASE("order_bsp and draw_bsp_list refuse an unusable view, too few vertices
     entries[0].node = static_cast<uint32_t>(b.tree.nodes.size());  // names no node
     CHECK(draw_bsp_list(view, b.tree, cv, {list.data(), list.size()}, frame, opt).status == Status::invalid_argument);
 }
+
+TEST_CASE("below a subtree box wholly inside the frame no box is outside it, so order_bsp may stop testing") {
+    // order_bsp stops testing boxes below an inside one; the same subtrees are skipped as by draw_bsp only
+    // if no box below it tests outside. Checked for every node under an inside ancestor, in several
+    // scenes and views (stepping back puts more of each inside the frame); the inside case has to occur.
+    uint64_t inside_nodes = 0, checked = 0, below_inside = 0, below_inside_also = 0;
+    for (const char* name : {"boxes-6-10", "city-1-10-10-above", "grid-1-20-10", "soup-1-300"}) {
+        tool::Scene s = test::generated_scene(name);
+        const Built b = build(s);
+        for (int zoom = 0; zoom < 3; ++zoom) {
+            if (zoom > 0) {  // step back: more of the scene lies inside the frame
+                const Vec3q16 d = s.camera.eye - s.camera.target;
+                s.camera.eye = s.camera.eye + d;
+            }
+            View view;
+            REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
+            const BandBounds bb = band_bounds(detail::WholeFrame{view.width, view.height, 0, view.height});
+            // Depth first, with "an ancestor is inside" carried down.
+            std::vector<std::pair<uint32_t, bool>> todo{{0u, false}};
+            while (!todo.empty()) {
+                const auto [i, under_inside] = todo.back();
+                todo.pop_back();
+                const BspNode& n = b.tree.nodes[i];
+                const detail::SubtreeBox box = detail::subtree_box<true>(view, n, bb);
+                ++checked;
+                if (under_inside) {  // what order_bsp relies on: such a subtree is never skipped by draw_bsp
+                    INFO(name, " node ", i);
+                    REQUIRE(!box.outside);
+                    below_inside += 1;
+                    below_inside_also += box.inside;
+                }
+                inside_nodes += box.inside;
+                for (uint32_t c : n.child)
+                    if (c != kBspNone) todo.push_back({c, under_inside || box.inside});
+            }
+        }
+    }
+    MESSAGE("nodes checked ", checked, ", inside ", inside_nodes, ", below an inside one ", below_inside, " (inside too: ",
+            below_inside_also, ")");
+    CHECK(checked > 1000);
+    CHECK(below_inside > 100);
+}

@@ -37,11 +37,13 @@ PixelRect random_rect(std::mt19937& rng, int32_t width, int32_t y0, int32_t y1) 
 }  // namespace
 
 TEST_CASE("Coverage::covered and paint_span agree with a per-pixel reference on random coverage") {
-    for (uint32_t seed = 1; seed <= 6; ++seed) {
+    const int32_t widths[] = {1, 31, 32, 33, 64, 100, 160, 320};
+    for (uint32_t run = 0; run < 24; ++run) {
+        const uint32_t seed = 1 + run;
         std::mt19937 rng(seed);
-        const int32_t widths[] = {1, 31, 32, 33, 64, 100, 160, 320};
-        const int32_t width = widths[seed % 8 == 0 ? 7 : (seed * 3) % 8];
+        const int32_t width = widths[run % 8];
         const int32_t y0 = static_cast<int32_t>(seed * 5), y1 = y0 + 1 + static_cast<int32_t>(seed * 7 % 23);
+        INFO("width ", width, " rows ", y0, "..", y1);
         std::vector<uint32_t> words(static_cast<size_t>(coverage_words(width) * (y1 - y0)), 0xDEADBEEFu);
         Coverage cov;
         REQUIRE(cov.reset({words.data(), words.size()}, width, y0, y1));
@@ -77,9 +79,9 @@ TEST_CASE("Coverage::covered and paint_span agree with a per-pixel reference on 
                 }
             }
         }
-        // Both answers were exercised often (the random spans fill the band gradually).
-        CHECK(answered_true > 50);
-        CHECK(answered_false > 50);
+        // Both answers were exercised (the random spans fill the band gradually).
+        CHECK(answered_true > 20);
+        CHECK(answered_false > (width > 1 ? 20u : 0u));
         // Whatever is left, filling every row covers the band exactly.
         for (int32_t y = y0; y < y1; ++y)
             cov.paint_span(pixels.data() + static_cast<ptrdiff_t>((y - y0) * width), y, 0, width, 0u, 0u,

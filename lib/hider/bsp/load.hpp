@@ -10,7 +10,9 @@
 
 namespace hider {
 
-/// A validated tree: spans into its blob (borrowed for as long as the tree is used).
+/// A validated tree: spans into its blob (borrowed for as long as the tree is used). Filled by bsp_load()
+/// only: the walks rely on what it checked (indices in range, vertices within kBspWorldLimitRaw, normals
+/// below 2^62, depth).
 struct BspTree {
     const BspHeader* header = nullptr;
     Span<const BspNode> nodes;

@@ -27,25 +27,6 @@ struct WholeFrame {
     int32_t width, height, y0, y1;
 };
 
-/// True when every point of a box subtree_box() measured lies in the depth range and projects inside
-/// the band's widened edges (the four forms' minima over the box >= 0). Every subtree below it is then
-/// inside too (its box holds points of this one), so the walk stops testing their boxes: the same
-/// subtrees are skipped, for one test per path instead of one per node.
-inline bool box_inside(const View& view, const SubtreeBox& b, const BandBounds& bb) {
-    if (b.outside || b.near || b.cw + b.ew > view.far_raw || !fits_bits(b.cx, 31) || !fits_bits(b.cy, 31) ||
-        !fits_bits(b.cw, 31) || !fits_bits(b.ex, 30) || !fits_bits(b.ey, 30) || !fits_bits(b.ew, 30))
-        return false;
-    const int32_t k = view.k_q8, cx = static_cast<int32_t>(b.cx), cy = static_cast<int32_t>(b.cy), cw = static_cast<int32_t>(b.cw);
-    const int32_t ex = static_cast<int32_t>(b.ex), ey = static_cast<int32_t>(b.ey), ew = static_cast<int32_t>(b.ew);
-    auto box_min = [&](int32_t a, int32_t cw_coef, int32_t centre, int32_t half) {
-        return mul32(a, centre) + mul32(cw_coef, cw) - mul32(abs_value(a), half) - mul32(abs_value(cw_coef), ew);
-    };
-    const int32_t x_lo = 256 * (bb.x_first - kSubpixel), x_hi = 256 * (bb.x_last + kSubpixel);
-    const int32_t y_lo = 256 * (bb.y_first - kSubpixel), y_hi = 256 * (bb.y_last + kSubpixel);
-    return box_min(k, -x_lo, cx, ex) >= 0 && box_min(-k, x_hi, cx, ex) >= 0 && box_min(-k, -y_lo, cy, ey) >= 0 &&
-           box_min(k, y_hi, cy, ey) >= 0;  // subtree_box()'s four planes
-}
-
 /// Projects what node n's drawable triangles need and returns the rows [y0, y1) their pixel centres can
 /// lie on (not clamped to the frame; empty when there are none); counts culled and wholly outside
 /// triangles in st.
@@ -95,7 +76,8 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
                             const DrawOptions& opt, Span<uint32_t> stack, BoundedList<BspDrawEntry>& list) {
     FrameStats st;
     list.clear();
-    if (view.width < 1 || view.height < 1 || view.height > INT16_MAX || verts.size() < tree.vertices.size() ||
+    if (view.width < 1 || view.height < 1 || view.width > kMaxFrameSide || view.height > kMaxFrameSide ||
+        verts.size() < tree.vertices.size() ||
         stack.size() < bsp_stack_entries(tree.max_depth) || tree.nodes.size() > kBspListIndex) {
         st.status = Status::invalid_argument;
         return st;
@@ -115,12 +97,14 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
             ++st.nodes_visited;
             uint32_t inside = entry & kInside;
             if (inside == 0) {
-                const detail::SubtreeBox box = detail::subtree_box(view, n, bb);
+                const detail::SubtreeBox box = detail::subtree_box<true>(view, n, bb);
                 if (box.outside) {
                     ++st.subtrees_skipped;
                     continue;
                 }
-                if (detail::box_inside(view, box, bb)) inside = kInside;
+                // A box wholly inside the frame holds its subtrees' boxes (each node's box bounds its subtree), so
+                // they are inside too: one box test per path instead of one per node, the same skips.
+                if (box.inside) inside = kInside;
             }
             const int side = detail::eye_side(tree, n, eye);
             const uint32_t near = n.child[side >= 0 ? 0 : 1], far = n.child[side >= 0 ? 1 : 0];
@@ -194,9 +178,13 @@ __attribute__((noinline)) void draw_listed_node(const ListBand<Format, Depth>& l
 }  // namespace detail
 
 /// Paints the band from `list` (order_bsp() for the same view, tree, vertices and options; the caller
-/// cleared the band): draw_bsp()'s pixels, order and counts of triangles drawn and clipped, fragments and
-/// pixels written. Flat colours are set up without a depth plane. Returns invalid_argument for an
-/// unusable frame, too few vertices, or an entry naming no node of the tree (drawing stops there).
+/// cleared the band): draw_bsp()'s pixels and order, and its counts of triangles drawn, fragments and
+/// pixels written. Clipped triangles are counted in every band their entry's rows reach (draw_bsp() counts
+/// them where its subtree boxes reach: the same on a whole-frame band). Flat colours are set up without a
+/// depth plane. On a tree whose node boxes do not nest (hider-bsp's always do; bsp_load() does not check
+/// it) the list may keep subtrees that draw_bsp() would skip, never reading out of bounds. Returns
+/// invalid_argument for an unusable frame, too few vertices, or an entry naming no node of the tree
+/// (drawing stops there).
 template <class Format, class Depth>
 FrameStats draw_bsp_list(const View& view, const BspTree& tree, Span<const ScreenVertex> verts, Span<const BspDrawEntry> list,
                          const FrameView<Format, Depth>& frame, const DrawOptions& opt) {

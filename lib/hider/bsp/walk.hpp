@@ -17,14 +17,16 @@ namespace hider {
 
 namespace detail {
 
-/// True when |v| < 2^bits.
+/// True when -2^bits <= v < 2^bits.
 constexpr bool fits_bits(int64_t v, int bits) {
     return static_cast<uint64_t>(v + (int64_t{1} << bits)) < (uint64_t{2} << bits);
 }
 
-/// True when |v| < 2^bits, for bits < 31.
-constexpr bool fits_bits(int32_t v, int bits) {
-    return static_cast<uint32_t>(v) + (uint32_t{1} << bits) < (uint32_t{2} << bits);
+/// fits_bits() for int32 values, kBits < 31.
+template <int kBits>
+constexpr bool fits_bits32(int32_t v) {
+    static_assert(kBits > 0 && kBits < 31, "an int32 range narrower than int32's");
+    return static_cast<uint32_t>(v) + (uint32_t{1} << kBits) < (uint32_t{2} << kBits);
 }
 
 /// |v| as unsigned (exact for INT32_MIN too).
@@ -43,9 +45,9 @@ inline int eye_side(const BspTree& tree, const BspNode& n, const Vec3q16& eye) {
     const Vec3q16& o = tree.vertices[n.origin];
     const int32_t e0 = eye.x.raw(), e1 = eye.y.raw(), e2 = eye.z.raw();
     // h = n >> 27 from the words of n: |n| < 2^57 when its high word is within 2^25.
-    auto high_fits = [](int64_t v) { return fits_bits(static_cast<int32_t>(v >> 32), 25); };
+    auto high_fits = [](int64_t v) { return fits_bits32<25>(static_cast<int32_t>(v >> 32)); };
     auto h = [](int64_t v) { return static_cast<int32_t>(static_cast<uint64_t>(v) >> 27); };
-    if (fits_bits(e0, 30) && fits_bits(e1, 30) && fits_bits(e2, 30) && high_fits(n.n[0]) && high_fits(n.n[1]) &&
+    if (fits_bits32<30>(e0) && fits_bits32<30>(e1) && fits_bits32<30>(e2) && high_fits(n.n[0]) && high_fits(n.n[1]) &&
         high_fits(n.n[2])) {
         const int32_t d0 = e0 - o.x.raw(), d1 = e1 - o.y.raw(), d2 = e2 - o.z.raw();
         const int64_t s = mul32(h(n.n[0]), d0) + mul32(h(n.n[1]), d1) + mul32(h(n.n[2]), d2);
@@ -74,9 +76,10 @@ inline int64_t bound_div(uint64_t p, uint64_t w) {
     return kUp && q * ws != ps ? int64_t{q} + 1 : int64_t{q};
 }
 
-/// A value at most num / (256 w) (kUp false) or at least it (kUp true), for 0 < w < 2^63 and
-/// |num| < 2^62: num / 256 lies in [t, t + 1) with t = floor(num / 256), and bound_div() bounds t / w
-/// from below or (t + 1) / w from above, so the pixel rectangle built from them is never too small.
+/// A value at most num / (256 w) (kUp false) or at least it (kUp true), for any num and 0 < w < 2^63:
+/// num / 256 lies in [t, t + 1) with t = floor(num / 256), and bound_div() bounds t / w from below or
+/// (t + 1) / w from above. A quotient past 2^31 may come back as +-2^32, which the callers clamp to the
+/// coordinate limit like the quotient itself, so the pixel rectangle built from them is never too small.
 template <bool kUp>
 inline int64_t bound_over_256w(int64_t num, int64_t w) {
     const int64_t t = (num >> 8) + (kUp ? 1 : 0);
@@ -91,12 +94,15 @@ struct SubtreeBox {
     int64_t ex, ey, ew;  ///< its half extents in view space, rounded up
     bool outside;        ///< no point of the box projects into the band (or the box is out of depth range)
     bool near;           ///< the box reaches the near plane: treat it as covering the whole band
+    bool inside;         ///< every point of the box lies in the depth range and projects into the band (if asked)
 };
 
 /// Node n's subtree box against the band, with no division: the box is rotated into view space as a
 /// centre and half extents (|R| e), then tested against the depth range and the four planes through
 /// the eye and the band's edges (a point projects left of column x when x k - 256 X w < 0, and so on),
-/// each widened by a pixel so that rounded vertex positions stay inside.
+/// each widened by a pixel so that rounded vertex positions stay inside. kInside: also whether the whole
+/// box lies inside (SubtreeBox::inside; else it stays false).
+template <bool kInside = false>
 inline SubtreeBox subtree_box(const View& view, const BspNode& n, const BandBounds& bb) {
     SubtreeBox b{};
     int32_t c[3], e[3];
@@ -127,22 +133,31 @@ inline SubtreeBox subtree_box(const View& view, const BspNode& n, const BandBoun
         return b;
     }
     // X = x k / (256 w), Y = -y k / (256 w) in centre-relative subpixels; w > 0 over the whole box. Each
-    // plane's linear form a v + c w is largest over the box at a cv + c cw + |a| ev + |c| ew: four 32x32-bit
-    // products (each below 2^61) when the box fits in 31 bits, else the box is kept (never wrongly skipped).
+    // plane's linear form a v + c w is largest over the box at a cv + c cw + |a| ev + |c| ew and least at
+    // a cv + c cw - |a| ev - |c| ew: 32x32-bit products (each below 2^61) when the box fits in 31 bits, else
+    // the box is kept (never wrongly skipped, never taken as wholly inside).
     if (!fits_bits(b.cx, 31) || !fits_bits(b.cy, 31) || !fits_bits(b.cw, 31) || !fits_bits(b.ex, 30) || !fits_bits(b.ey, 30) ||
         !fits_bits(b.ew, 30))
         return b;
     const int32_t k = view.k_q8, cx = static_cast<int32_t>(b.cx), cy = static_cast<int32_t>(b.cy), cw = static_cast<int32_t>(b.cw);
     const int32_t ex = static_cast<int32_t>(b.ex), ey = static_cast<int32_t>(b.ey), ew = static_cast<int32_t>(b.ew);
-    auto box_max = [&](int32_t a, int32_t cw_coef, int32_t centre, int32_t half) {
+    // Each form's largest value over the box: at the centre plus its spread (the least: minus it).
+    auto largest = [&](int32_t a, int32_t cw_coef, int32_t centre, int32_t half) {
         return mul32(a, centre) + mul32(cw_coef, cw) + mul32(abs_value(a), half) + mul32(abs_value(cw_coef), ew);
     };
     const int32_t x_lo = 256 * (bb.x_first - kSubpixel), x_hi = 256 * (bb.x_last + kSubpixel);
     const int32_t y_lo = 256 * (bb.y_first - kSubpixel), y_hi = 256 * (bb.y_last + kSubpixel);
-    b.outside = box_max(k, -x_lo, cx, ex) < 0 ||  // left of the first column: x k < 256 x_lo w
-                box_max(-k, x_hi, cx, ex) < 0 ||  // right of the last: x k > 256 x_hi w
-                box_max(-k, -y_lo, cy, ey) < 0 ||  // above the first row: -y k < 256 y_lo w
-                box_max(k, y_hi, cy, ey) < 0;      // below the last: -y k > 256 y_hi w
+    b.outside = largest(k, -x_lo, cx, ex) < 0 ||  // left of the first column: x k < 256 x_lo w
+                largest(-k, x_hi, cx, ex) < 0 ||  // right of the last: x k > 256 x_hi w
+                largest(-k, -y_lo, cy, ey) < 0 ||  // above the first row: -y k < 256 y_lo w
+                largest(k, y_hi, cy, ey) < 0;      // below the last: -y k > 256 y_hi w
+    if constexpr (kInside) {
+        auto least = [&](int32_t a, int32_t cw_coef, int32_t centre, int32_t half) {
+            return mul32(a, centre) + mul32(cw_coef, cw) - mul32(abs_value(a), half) - mul32(abs_value(cw_coef), ew);
+        };
+        b.inside = !b.outside && b.cw + b.ew <= view.far_raw && least(k, -x_lo, cx, ex) >= 0 && least(-k, x_hi, cx, ex) >= 0 &&
+                   least(-k, -y_lo, cy, ey) >= 0 && least(k, y_hi, cy, ey) >= 0;
+    }
     return b;
 }
 

@@ -43,11 +43,13 @@ public:
         const uint32_t first = (~uint32_t{0} << (r.x0 & 31)) & (w0 == w1 ? last : ~uint32_t{0});
         const uint32_t* row = words_ + static_cast<ptrdiff_t>(r.y0 - y0_) * wpr_;
         if (w0 == w1) {
-            row += w0;
+            // An offset, not a pointer, steps past the last pair: a pointer there could leave the array.
+            const uint32_t* const col = words_ + w0;
+            ptrdiff_t at = static_cast<ptrdiff_t>(r.y0 - y0_) * wpr_;
             int32_t rows = r.y1 - r.y0;
-            for (; rows >= 2; rows -= 2, row += 2 * wpr_)
-                if ((row[0] & row[wpr_] & first) != first) return false;
-            return rows == 0 || (row[0] & first) == first;
+            for (; rows >= 2; rows -= 2, at += 2 * wpr_)
+                if ((col[at] & col[at + wpr_] & first) != first) return false;
+            return rows == 0 || (col[at] & first) == first;
         }
         for (int32_t y = r.y0; y < r.y1; ++y, row += wpr_) {
             if ((row[w0] & first) != first) return false;
