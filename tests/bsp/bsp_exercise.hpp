@@ -1,14 +1,10 @@
 // Arbitrary bytes through bsp_load() and, when it accepts them, through both walks and the one-walk list
 // (order.hpp) into a small frame from a few fixed cameras (one of them on a vertex of the tree, so on
-// some node's plane). Shared by the
-// doctest suite (corrupt blobs, tests/bsp/bsp_load_test.cpp) and the libFuzzer target
-// (tests/fuzz/bsp_load_fuzz.cpp), so an input one of them finds replays in the other. Every buffer is a
-// std::vector of exactly the size lib/ is promised, so under ASan a read or write past it is caught.
+// some node's plane). Shared by the doctest suite (corrupt blobs, tests/bsp/bsp_load_test.cpp) and the
+// libFuzzer target (tests/fuzz/bsp_load_fuzz.cpp), so an input one of them finds replays in the other.
+// Every buffer is a std::vector of exactly the size lib/ is promised, so under ASan a read or write past
+// it is caught.
 #pragma once
-// walk.hpp uses for_each_clipped and project_vertices without including their headers (left to the
-// project lead, who is editing walk.hpp); included here so the fuzzer, which includes nothing else, builds.
-#include <hider/raster/clip.hpp>
-#include <hider/raster/vertices.hpp>
 #include <hider/bsp/order.hpp>
 #include <hider/bsp/walk.hpp>
 
