@@ -199,17 +199,7 @@ int run(Io& io, const Scene& s, Algo algo, const Buffers& buf, const char* path)
     const Result r = render_in_bands(s, algo, buf, ppm.sink());
     const bool closed = io.close();
     print_result(io, path, r);
-    if (!r.stats.ok() || !r.sink_ok || ppm.status() != hider::port::BandStatus::ok || !closed || r.coverage_mismatches != 0) {
-        io.print("bsp: failed: ");
-        io.print(hider::status_name(r.stats.status));
-        io.print(", sink status ");
-        io.print_u32(static_cast<uint32_t>(ppm.status()));
-        io.print(", coverage mismatches ");
-        io.print_u32(r.coverage_mismatches);
-        io.print("\n");
-        return 1;
-    }
-    return 0;
+    return spin::stream_verdict(io, "bsp", r.stats.status, r.sink_ok, ppm, closed, r.coverage_mismatches);
 }
 
 }  // namespace bspfw

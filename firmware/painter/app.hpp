@@ -225,18 +225,7 @@ int run(Io& io, const spin::Scene& s, Algo algo, const Buffers& buf, hider::Span
     const Result r = render_in_bands(s, algo, buf, ppm.sink());
     const bool closed = io.close();
     print_result(io, algo, r);
-    if (!r.stats.ok() || !r.sink_ok || ppm.status() != hider::port::BandStatus::ok || !closed ||
-        r.coverage_mismatches != 0) {
-        io.print("painter: failed: ");
-        io.print(hider::status_name(r.stats.status));
-        io.print(", sink status ");
-        io.print_u32(static_cast<uint32_t>(ppm.status()));
-        io.print(", coverage mismatches ");
-        io.print_u32(r.coverage_mismatches);
-        io.print("\n");
-        return 1;
-    }
-    return 0;
+    return spin::stream_verdict(io, "painter", r.stats.status, r.sink_ok, ppm, closed, r.coverage_mismatches);
 }
 
 }  // namespace painter

@@ -4,6 +4,7 @@
 // The call order is checked with BandSequenceChecker. Freestanding: firmware and host references share it.
 #pragma once
 #include <hider/frame.hpp>
+#include <hider/status.hpp>
 
 #include "display/sink.hpp"
 
@@ -96,5 +97,24 @@ private:
     hider::port::BandSequenceChecker checker_;
     hider::port::BandStatus status_ = hider::port::BandStatus::ok;
 };
+
+/// The exit status of a render streamed through `ppm` (the painter and BSP examples): 0 when the render's
+/// status is ok, the renderer's sink calls all succeeded, the output closed and no band failed its
+/// coverage check; else prints "<who>: failed: ..." on `io` and returns 1.
+template <class Io, class Output>
+int stream_verdict(Io& io, const char* who, hider::Status status, bool sink_ok, const PpmSink<Output>& ppm, bool closed,
+                   uint32_t coverage_mismatches) {
+    if (status == hider::Status::ok && sink_ok && ppm.status() == hider::port::BandStatus::ok && closed && coverage_mismatches == 0)
+        return 0;
+    io.print(who);
+    io.print(": failed: ");
+    io.print(hider::status_name(status));
+    io.print(", sink status ");
+    io.print_u32(static_cast<uint32_t>(ppm.status()));
+    io.print(", coverage mismatches ");
+    io.print_u32(coverage_mismatches);
+    io.print("\n");
+    return 1;
+}
 
 }  // namespace spin

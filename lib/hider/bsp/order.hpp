@@ -142,8 +142,6 @@ struct ListBand {
 /// the list loop around it keeps its few values in registers.
 template <class Format, class Depth>
 __attribute__((noinline)) void draw_listed_node(const ListBand<Format, Depth>& lb, const BspNode& n, bool eye_front, FrameStats& st) {
-    const FrameView<Format, Depth>& frame = lb.frame;
-    const bool flat = lb.opt.shade != Shade::depth;
     for (uint32_t t = n.first; t < n.first + n.count; ++t) {
         const BspTriangle& tri = lb.tree.triangles[t];
         const bool back = (tri.face & kBspFaceBack) != 0;
@@ -153,22 +151,7 @@ __attribute__((noinline)) void draw_listed_node(const ListBand<Format, Depth>& l
         if ((va.outside() & vb.outside() & vc.outside()) != 0) continue;  // likewise
         const uint32_t face = tri.face & kBspFaceMask;
         auto draw = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-            TriangleRaster tr;
-            const int32_t area = TriangleRaster::signed_area(a, b, c);
-            if (area == 0) return;
-            if (!(flat ? tr.setup_flat(a, b, c, area, frame.width, frame.height, lb.bb)
-                       : tr.setup(a, b, c, area, frame.width, frame.height, lb.bb)))
-                return;
-            const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
-            if (y0 >= y1) return;
-            ++st.triangles_drawn;
-            const Normal14 normal{static_cast<int16_t>(back ? -n.normal[0] : n.normal[0]),
-                                  static_cast<int16_t>(back ? -n.normal[1] : n.normal[1]),
-                                  static_cast<int16_t>(back ? -n.normal[2] : n.normal[2])};
-            const uint32_t fragments = with_face_shader<Format>(lb.opt, lb.shading, face, normal, front,
-                                                                [&](const auto& shader) { return paint_rows(tr, y0, y1, frame, shader); });
-            st.fragments += fragments;
-            st.pixels_written += fragments;
+            draw_node_triangle<false>(a, b, c, n, back, front, face, lb.frame, lb.bb, lb.opt, lb.shading, nullptr, st);
         };
         if ((va.outside() | vb.outside() | vc.outside()) == 0) draw(va, vb, vc);  // for_each_clipped()'s common case
         else for_each_clipped(lb.view, lb.tree.vertices, lb.verts, tri.v[0], tri.v[1], tri.v[2], st, draw);

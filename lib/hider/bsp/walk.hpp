@@ -178,6 +178,48 @@ inline PixelRect subtree_rect(const View& view, const SubtreeBox& b, const BandB
     return pixel_rect(box, bb, band_y0, band_y1);
 }
 
+/// The unit normal of a triangle of node n, along n or (back) against it, for headlight shading.
+constexpr Normal14 node_normal(const BspNode& n, bool back) {
+    return {static_cast<int16_t>(back ? -n.normal[0] : n.normal[0]), static_cast<int16_t>(back ? -n.normal[1] : n.normal[1]),
+            static_cast<int16_t>(back ? -n.normal[2] : n.normal[2])};
+}
+
+/// Sets up one triangle (or clipped piece) of a node and paints its rows of the band: every pixel, or with
+/// kCoverage only those `cov` does not hold yet (a piece whose box is covered is not set up). Flat colours
+/// are set up without a depth plane. Counts the triangle drawn, its fragments and the pixels written.
+template <bool kCoverage, class Format, class Depth>
+__attribute__((always_inline)) inline void draw_node_triangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                                                              const BspNode& n, bool back, bool front, uint32_t face,
+                                                              const FrameView<Format, Depth>& frame, const BandBounds& bb,
+                                                              const DrawOptions& opt, const FaceShading& shading, Coverage* cov,
+                                                              FrameStats& st) {
+    if constexpr (kCoverage) {  // hidden behind what is drawn: no set-up
+        if (cov->covered(pixel_rect(screen_box(a, b, c), bb, frame.y0, frame.y1))) return;
+    }
+    TriangleRaster tr;
+    const int32_t area = TriangleRaster::signed_area(a, b, c);
+    if (area == 0) return;
+    if (!(opt.shade != Shade::depth ? tr.setup_flat(a, b, c, area, frame.width, frame.height, bb)
+                                    : tr.setup(a, b, c, area, frame.width, frame.height, bb)))
+        return;
+    const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
+    if (y0 >= y1) return;
+    ++st.triangles_drawn;
+    const Normal14 normal = node_normal(n, back);
+    if constexpr (kCoverage) {
+        uint32_t written = 0;
+        st.fragments += with_face_shader<Format>(opt, shading, face, normal, front, [&](const auto& shader) {
+            return paint_rows_uncovered(tr, y0, y1, frame, shader, *cov, written);
+        });
+        st.pixels_written += written;
+    } else {
+        const uint32_t fragments = with_face_shader<Format>(opt, shading, face, normal, front,
+                                                            [&](const auto& shader) { return paint_rows(tr, y0, y1, frame, shader); });
+        st.fragments += fragments;
+        st.pixels_written += fragments;
+    }
+}
+
 /// The shared walk. kFrontToBack: near subtree first, coverage, skipping covered subtrees and stopping
 /// when the band is full; else far subtree first, painting over.
 template <bool kFrontToBack, class Format, class Depth>
@@ -236,31 +278,12 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
                 ++st.triangles_culled;
                 continue;
             }
-            const Normal14 normal{static_cast<int16_t>(back ? -n.normal[0] : n.normal[0]),
-                                  static_cast<int16_t>(back ? -n.normal[1] : n.normal[1]),
-                                  static_cast<int16_t>(back ? -n.normal[2] : n.normal[2])};
             const uint32_t face = tri.face & kBspFaceMask;
             for (uint32_t v : tri.v)
                 if (unprojected(verts[v])) project_vertex(view, to_view, tree.vertices[v], verts[v]);
             for_each_clipped(view, tree.vertices, Span<const ScreenVertex>{verts.data(), verts.size()}, tri.v[0], tri.v[1], tri.v[2], st,
                              [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-                                 if constexpr (kFrontToBack) {  // hidden behind what is drawn: no set-up
-                                     if (cov->covered(pixel_rect(screen_box(a, b, c), bb, frame.y0, frame.y1))) return;
-                                 }
-                                 TriangleRaster tr;
-                                 const int32_t area = TriangleRaster::signed_area(a, b, c);
-                                 if (area == 0 || !tr.setup(a, b, c, area, frame.width, frame.height, bb)) return;
-                                 const int32_t y0 = max(frame.y0, tr.first_row()), y1 = min(frame.y1, tr.end_row());
-                                 if (y0 >= y1) return;
-                                 ++st.triangles_drawn;
-                                 uint32_t written = 0;
-                                 const uint32_t fragments = with_face_shader<Format>(
-                                     opt, shading, face, normal, front, [&](const auto& shader) {
-                                         if constexpr (kFrontToBack) return paint_rows_uncovered(tr, y0, y1, frame, shader, *cov, written);
-                                         else return written = paint_rows(tr, y0, y1, frame, shader);
-                                     });
-                                 st.fragments += fragments;
-                                 st.pixels_written += written;
+                                 draw_node_triangle<kFrontToBack>(a, b, c, n, back, front, face, frame, bb, opt, shading, cov, st);
                              });
         }
     }
