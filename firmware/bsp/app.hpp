@@ -139,14 +139,14 @@ inline Result render_in_bands(const Scene& s, Algo algo, const Buffers& buf, con
     bench_begin();
     r.stats.status = hider::make_view(s.camera, s.width, s.height, view);
     if (r.stats.ok()) {
-        if (algo == Algo::zbuffer || algo == Algo::listed) {  // the list's walk draws nearly every vertex
+        if (algo == Algo::zbuffer) {
             r.stats.status = hider::project_vertices(view, positions, buf.verts);
-            if (r.stats.ok() && algo == Algo::listed)
-                r.stats.merge(hider::order_bsp(view, s.camera.eye, tree, buf.verts, opt_of(s), buf.stack, list));
         } else if (buf.verts.size() < positions.size()) {
             r.stats.status = hider::Status::invalid_argument;
         } else {
             hider::mark_unprojected(buf.verts);  // the walks project each vertex when first drawn
+            if (algo == Algo::listed)  // one walk a frame, projecting what its list will draw
+                r.stats.merge(hider::order_bsp(view, s.camera.eye, tree, buf.verts, opt_of(s), buf.stack, list));
         }
     }
     bench_end();

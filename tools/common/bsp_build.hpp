@@ -36,6 +36,9 @@ struct BspStats {
     size_t largest_node = 0;      ///< most triangles in one node's plane
     size_t vertices = 0;
     size_t bytes = 0;             ///< blob size
+    size_t cells_labelled = 0;    ///< empty children whose cell got a label (BspNode::cells), 0 when none
+    int winding_low = 0, winding_high = 0;  ///< the closed surface's lowest and highest winding numbers
+    std::string cells_note;       ///< why the cells are not labelled (empty when they are)
 };
 
 /// A built tree in the format's layout (host vectors), ready for bsp_blob().
@@ -50,6 +53,16 @@ struct BspBuilt {
 /// id of each triangle). False with a reason when the result cannot be stored (too many vertices, ...).
 bool build_bsp(const std::vector<Vec3q16>& positions, const std::vector<Tri>& tris, const std::vector<uint32_t>& ids,
                const BspOptions& opt, BspBuilt& out, BspStats& stats, std::string& error);
+
+/// Labels the cells of the empty children of a built tree (BspNode::cells) when its triangles form a
+/// closed surface (every directed edge matched by its reverse), no triangle strays more than
+/// kBspCellMarginRaw past its cell's planes, and every cell's winding number is found: by an exact ray
+/// cast from the centre of the node's largest triangle into the child's side, counting signed crossings
+/// of all the tree's triangles (a ray through an edge or vertex is cast again; a crossing nearer than the
+/// margin, or another triangle through the start, leaves the cell unknown). A cell gets the lowest
+/// (highest) label when its winding number is the surface's lowest (highest), counting 0 outside. Labels
+/// all or none (stats.cells_note says why none). Called by build_bsp().
+void label_cells(BspBuilt& tree, BspStats& stats);
 
 /// The world transform a BSP stores: world = (model - centre) * scale, each number as BspScaled.
 struct BspFit {

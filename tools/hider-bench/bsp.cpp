@@ -67,9 +67,10 @@ void walk_row(const std::string& label, const std::string& path, const Args& vie
     const RenderResult back = render_or_fail(tree_scene, blob, Algo::bsp, cull, label);
     const RenderResult front = render_or_fail(tree_scene, blob, Algo::bsp_front, cull, label);
     auto ratio = [](uint64_t a, uint64_t b) { return b == 0 ? 0.0 : static_cast<double>(a) / static_cast<double>(b); };
-    std::printf("| %s | %s | %" PRIu64 " / %u = %.2f | %u / %u / %u | %u / %u / %u / %.2f |\n", label.c_str(), cull ? "yes" : "no",
+    std::printf("| %s | %s | %" PRIu64 " / %u = %.2f | %u / %u / %u / %u | %u / %u / %u / %.2f |\n", label.c_str(), cull ? "yes" : "no",
                 z.stats.fragments, z.pixels_covered, ratio(z.stats.fragments, z.pixels_covered), back.stats.nodes_visited,
-                back.stats.subtrees_skipped, back.stats.triangles_drawn, front.stats.nodes_visited, front.stats.subtrees_skipped,
+                back.stats.subtrees_skipped, back.stats.triangles_drawn, back.stats.triangles_culled, front.stats.nodes_visited,
+                front.stats.subtrees_skipped,
                 front.stats.triangles_drawn, ratio(front.stats.pixels_written, front.pixels_covered));
 }
 
@@ -89,9 +90,10 @@ int bsp_command(const Args& args) {
 
     std::printf("BSP compiler (hider-bsp's code) per model at two heuristic settings: input triangles, polygons after\n"
                 "the cuts (split ratio = polygons / input), triangles after closing T-junctions, nodes, depth, the\n"
-                "blob's bytes (= flash), build time on this machine (wall clock, one run).\n\n");
-    std::printf("| model | setting | input | polygons | split ratio | triangles | nodes | depth | flash bytes | build s |\n");
-    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+                "blob's bytes (= flash), build time on this machine (wall clock, one run), and whether its cells are\n"
+                "labelled (closed surfaces: the winding numbers; else why not).\n\n");
+    std::printf("| model | setting | input | polygons | split ratio | triangles | nodes | depth | flash bytes | build s | cells |\n");
+    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
     for (const std::string& path : paths)
         for (const Setting& s : kSettings) {
             std::vector<uint8_t> blob;
@@ -100,17 +102,22 @@ int bsp_command(const Args& args) {
             const auto start = std::chrono::steady_clock::now();
             if (!bsp_from_obj(path, s.opt, blob, st, why)) fail(why);
             const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            std::printf("| %s | %s | %zu | %zu | %.3f | %zu | %zu | %zu | %zu | %.2f |\n", fs::path(path).filename().c_str(), s.name,
+            const std::string cells = st.cells_note.empty()
+                                          ? "winding " + std::to_string(st.winding_low) + ".." + std::to_string(st.winding_high)
+                                          : st.cells_note.find("not closed") != std::string::npos ? "open surface"
+                                                                                                    : "not labelled: " + st.cells_note;
+            std::printf("| %s | %s | %zu | %zu | %.3f | %zu | %zu | %zu | %zu | %.2f | %s |\n", fs::path(path).filename().c_str(), s.name,
                         st.input_triangles, st.polygons,
                         st.input_triangles == 0 ? 0.0 : static_cast<double>(st.polygons) / static_cast<double>(st.input_triangles),
-                        st.triangles, st.nodes, st.max_depth, st.bytes, secs);
+                        st.triangles, st.nodes, st.max_depth, st.bytes, secs, cells.c_str());
             std::fflush(stdout);
         }
 
     std::printf("\nThe walks on the host, firmware views at 160x128 (default heuristic): the z-buffer's depth complexity\n"
                 "(fragments / covered pixels), then nodes visited / subtrees skipped / triangles drawn for bsp (back\n"
-                "to front) and bsp-front, with bsp-front's overdraw (pixels written / covered).\n\n");
-    std::printf("| view | culling | z-buffer depth complexity | bsp nodes / skipped / drawn | bsp-front nodes / skipped / drawn / overdraw |\n");
+                "to front, with the triangles it left out: culled, or hidden by a labelled closed surface) and\n"
+                "bsp-front, with bsp-front's overdraw (pixels written / covered).\n\n");
+    std::printf("| view | culling | z-buffer depth complexity | bsp nodes / skipped / drawn / left out | bsp-front nodes / skipped / drawn / overdraw |\n");
     std::printf("|---|---|---:|---:|---:|\n");
     walk_row("torus (standard view)", (fs::path(models) / "torus.obj").string(), kTorusView, false);
     walk_row("city-1-16-16 from the street", city_path(), kCityView, true);

@@ -110,6 +110,11 @@ int main(int argc, char** argv) {
                     st.tjunction_points, st.vertices, st.nodes, st.max_depth, st.largest_node);
         std::printf("bytes %zu (nodes %zu, triangles %zu, vertices %zu) build %.2f s\n", st.bytes, st.nodes * sizeof(BspNode),
                     st.triangles * sizeof(BspTriangle), st.vertices * sizeof(BspVertex), seconds);
+        if (st.cells_note.empty())
+            std::printf("cells labelled %zu (winding numbers %d..%d): only the faces seen from the eye's cell are drawn\n",
+                        st.cells_labelled, st.winding_low, st.winding_high);
+        else
+            std::printf("cells not labelled: %s\n", st.cells_note.c_str());
     }
     return 0;
 }

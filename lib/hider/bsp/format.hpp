@@ -20,7 +20,9 @@
 //    44  int16 box_min[3]    world box of the subtree (triangles of the node and below), in units of
 //    50  int16 box_max[3]    2^12 raw Q16 (kBspBoxShift), rounded outwards
 //    56  int16 normal[3]     unit normal in Q14 (Normal14) for headlight shading, along n
-//    62  uint16 reserved     0
+//    62  uint16 cells        for an empty child c (0 front, 1 back), bit c: its cell has the lowest winding
+//                            number of the tree's closed surface, bit 2 + c: the highest (hider-bsp proved
+//                            it; bsp_visible_faces()); 0 when the compiler could not, or the mesh is open
 //   triangles 16 B each: uint32 v[3] vertex indices, uint32 face (bits 0-29 face id, bit 31: the
 //             triangle faces against n)
 //   vertices  12 B each: int32 x, y, z world position, raw Q16, |coordinate| < 2^27 (kBspWorldLimitRaw)
@@ -68,7 +70,7 @@ struct __attribute__((may_alias)) BspNode {
     uint32_t first, count;
     int16_t box_min[3], box_max[3];
     int16_t normal[3];
-    uint16_t reserved;
+    uint16_t cells;
 };
 static_assert(sizeof(BspNode) == 64, "BSP node layout");
 
@@ -120,6 +122,17 @@ constexpr BspLayout bsp_layout(uint32_t nodes, uint32_t triangles, uint32_t vert
     l.total = l.vertices + size_t{vertices} * sizeof(BspVertex);
     return l;
 }
+
+/// BspNode::cells: an empty child's cell whose winding number is the lowest (highest) of the tree's closed
+/// surface. From a point of such a cell the nearest surface along any ray is entered from its front
+/// (left from its back), so only front (back) faces can be seen: an exact visibility rule, not culling.
+constexpr uint16_t kBspCellLowest = 1;   ///< << c for child c
+constexpr uint16_t kBspCellHighest = 4;  ///< << c for child c
+constexpr uint16_t kBspCellMask = 0xF;
+/// How far (raw Q16) a tree triangle may stray past the planes of its node's cell (cut points are rounded
+/// to the grid) for hider-bsp to label cells; bsp_visible_faces() keeps the eye this much farther from
+/// every triangle than the near plane's reach.
+constexpr int32_t kBspCellMarginRaw = int32_t{1} << 12;
 
 /// Stack entries a walk needs per level of the tree (walk.hpp): a node and its second child wait.
 constexpr uint32_t kBspStackPerLevel = 2;

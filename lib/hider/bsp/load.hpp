@@ -51,6 +51,11 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
             if (c != kBspNone && (c <= i || c >= h.node_count)) return Status::bad_data;  // forward only: no cycle
         for (int k = 0; k < 3; ++k)
             if (n.box_min[k] > n.box_max[k]) return Status::bad_data;
+        if ((n.cells & ~kBspCellMask) != 0) return Status::bad_data;
+        for (int c = 0; c < 2; ++c) {  // labels only on an empty child, one at most
+            const bool lowest = (n.cells & (kBspCellLowest << c)) != 0, highest = (n.cells & (kBspCellHighest << c)) != 0;
+            if ((lowest || highest) && (n.child[c] != kBspNone || (lowest && highest))) return Status::bad_data;
+        }
         if (n.n[0] == 0 && n.n[1] == 0 && n.n[2] == 0) return Status::bad_data;
         // |n| < 2^62 keeps the eye test's three products and their sum inside 128 bits.
         for (int64_t c : n.n)

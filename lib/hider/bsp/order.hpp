@@ -9,7 +9,9 @@
 namespace hider {
 
 /// One node of the back-to-front order, 8 bytes:
-///   node   bits 0-29: tree node index; bit 30 (kBspListFront): the eye on the front side of its plane
+///   node   bits 0-28: tree node index; bit 30 (kBspListFront): the eye on the front side of its plane;
+///          bit 31 (kBspListNoBack) / bit 29 (kBspListNoFront): draw none of its triangles whose back
+///          (front) side the eye is on (culling, or bsp_visible_faces())
 ///   y0 y1  rows [y0, y1) of the frame its drawn triangles can touch (the whole frame when one of them
 ///          needs clipping at the near plane or the guard band)
 struct BspDrawEntry {
@@ -18,7 +20,9 @@ struct BspDrawEntry {
 };
 static_assert(sizeof(BspDrawEntry) == 8, "BspDrawEntry layout is documented above and in README.md");
 constexpr uint32_t kBspListFront = 0x40000000u;
-constexpr uint32_t kBspListIndex = kBspListFront - 1;
+constexpr uint32_t kBspListNoBack = 0x80000000u;
+constexpr uint32_t kBspListNoFront = 0x20000000u;
+constexpr uint32_t kBspListIndex = kBspListNoFront - 1;
 
 namespace detail {
 
@@ -27,17 +31,17 @@ struct WholeFrame {
     int32_t width, height, y0, y1;
 };
 
-/// Projects what node n's drawable triangles need and returns the rows [y0, y1) their pixel centres can
-/// lie on (not clamped to the frame; empty when there are none); counts culled and wholly outside
-/// triangles in st.
+/// Projects what node n's triangles drawn with `faces` need and returns the rows [y0, y1) their pixel
+/// centres can lie on (not clamped to the frame; empty when there are none); counts the others (culled,
+/// hidden) and wholly outside triangles in st.
 inline void node_rows(const View& view, const PreparedTransform& to_view, const BspTree& tree, const BspNode& n, bool eye_front,
-                      Span<ScreenVertex> verts, const DrawOptions& opt, const BandBounds& bb, int32_t& y0, int32_t& y1,
+                      Span<ScreenVertex> verts, BspFaces faces, const BandBounds& bb, int32_t& y0, int32_t& y1,
                       FrameStats& st) {
     y0 = view.height;
     y1 = 0;
     for (uint32_t t = n.first; t < n.first + n.count; ++t) {
         const BspTriangle& tri = tree.triangles[t];
-        if (opt.cull && eye_front == ((tri.face & kBspFaceBack) != 0)) {  // the eye behind the triangle
+        if (!bsp_draws(faces, eye_front != ((tri.face & kBspFaceBack) != 0))) {  // culled, or hidden
             ++st.triangles_culled;
             continue;
         }
@@ -71,7 +75,7 @@ inline void node_rows(const View& view, const PreparedTransform& to_view, const 
 /// wholly outside (once per frame). A full list: capacity_exceeded, the walk goes on and
 /// `list.size() + list.dropped()` entries were needed; the list then lacks the nearest nodes.
 /// Returns invalid_argument (list empty) for an unusable view, too few vertices or too small a stack,
-/// or a tree with more than 2^30 nodes. Borrows everything for the call.
+/// or a tree with more than 2^29 - 1 nodes. Borrows everything for the call.
 inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
                             const DrawOptions& opt, Span<uint32_t> stack, BoundedList<BspDrawEntry>& list) {
     FrameStats st;
@@ -85,9 +89,11 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
     if (tree.nodes.empty()) return st;
     // Stack entries as in walk_bsp(): a node to enter, with kInside when an ancestor's box lies wholly
     // inside the frame; or (kDraw) one whose triangles come next, with kBspListFront.
-    constexpr uint32_t kDraw = 0x80000000u, kInside = kBspListFront;
+    constexpr uint32_t kDraw = kBspListNoBack, kInside = kBspListFront;
     const BandBounds bb = band_bounds(detail::WholeFrame{view.width, view.height, 0, view.height});
     const PreparedTransform to_view(view.to_view);
+    const BspFaces faces = bsp_walk_faces(view, eye, tree, opt, stack);
+    const uint32_t rule = faces == BspFaces::front ? kBspListNoBack : faces == BspFaces::back ? kBspListNoFront : 0;
     size_t top = 0;
     stack[top++] = 0;
     while (top != 0) {
@@ -115,10 +121,10 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
             continue;
         }
         int32_t y0 = 0, y1 = 0;
-        detail::node_rows(view, to_view, tree, n, (entry & kBspListFront) != 0, verts, opt, bb, y0, y1, st);
+        detail::node_rows(view, to_view, tree, n, (entry & kBspListFront) != 0, verts, faces, bb, y0, y1, st);
         y0 = max<int32_t>(y0, 0);
         y1 = min(y1, view.height);
-        if (y0 < y1 && !list.push_back({entry & ~kDraw, static_cast<int16_t>(y0), static_cast<int16_t>(y1)}))
+        if (y0 < y1 && !list.push_back({(entry & ~kDraw) | rule, static_cast<int16_t>(y0), static_cast<int16_t>(y1)}))
             st.status = Status::capacity_exceeded;
     }
     return st;
@@ -141,12 +147,13 @@ struct ListBand {
 /// Draws the triangles of node n into the band (the eye on its front side when eye_front). Out of line:
 /// the list loop around it keeps its few values in registers.
 template <class Format, class Depth>
-__attribute__((noinline)) void draw_listed_node(const ListBand<Format, Depth>& lb, const BspNode& n, bool eye_front, FrameStats& st) {
+__attribute__((noinline)) void draw_listed_node(const ListBand<Format, Depth>& lb, const BspNode& n, uint32_t entry, FrameStats& st) {
+    const bool eye_front = (entry & kBspListFront) != 0;
     for (uint32_t t = n.first; t < n.first + n.count; ++t) {
         const BspTriangle& tri = lb.tree.triangles[t];
         const bool back = (tri.face & kBspFaceBack) != 0;
         const bool front = eye_front != back;  // the eye is on the triangle's own front side
-        if (lb.opt.cull && !front) continue;   // counted by order_bsp()
+        if ((entry & (front ? kBspListNoFront : kBspListNoBack)) != 0) continue;  // counted by order_bsp()
         const ScreenVertex &va = lb.verts[tri.v[0]], &vb = lb.verts[tri.v[1]], &vc = lb.verts[tri.v[2]];
         if ((va.outside() & vb.outside() & vc.outside()) != 0) continue;  // likewise
         const uint32_t face = tri.face & kBspFaceMask;
@@ -186,7 +193,7 @@ FrameStats draw_bsp_list(const View& view, const BspTree& tree, Span<const Scree
             st.status = Status::invalid_argument;
             break;
         }
-        detail::draw_listed_node(lb, tree.nodes[index], (e->node & kBspListFront) != 0, st);
+        detail::draw_listed_node(lb, tree.nodes[index], e->node, st);
     }
     return st;
 }

@@ -4,8 +4,9 @@
 // round with the coverage bits of raster/coverage.hpp, writes each pixel once, skips a subtree whose
 // screen box is outside the band or already covered (Doom's R_CheckBBox), and stops when the band is
 // full. Triangles in a node's plane are skipped when the eye is in that plane (edge-on), and back faces
-// fall out of the same side test. The walk keeps its pending work in a caller stack of
-// bsp_stack_entries(depth) uint32 entries.
+// fall out of the same side test. On a closed surface whose cells hider-bsp labelled, only the faces
+// that can be seen from the eye's cell are drawn (bsp_visible_faces()), culling or not. The walk keeps
+// its pending work in a caller stack of bsp_stack_entries(depth) uint32 entries.
 #pragma once
 #include <hider/bsp/load.hpp>
 #include <hider/int128.hpp>
@@ -59,6 +60,88 @@ inline int eye_side(const BspTree& tree, const BspNode& n, const Vec3q16& eye) {
     const Int128 s = mul128(n.n[0], d0) + mul128(n.n[1], d1) + mul128(n.n[2], d2);
     return s.sign();
 }
+
+}  // namespace detail
+
+/// Which faces a walk draws: both sides, or only those whose front (back) side the eye is on.
+enum class BspFaces : uint8_t { both, front, back };
+
+/// The faces the eye can see in a tree whose cells hider-bsp labelled (BspNode::cells): from a cell of
+/// the surface's lowest winding number only front faces, from one of the highest only back faces, the
+/// same pixels as drawing both. Holds only while no surface lies between the eye and the near plane
+/// where a pixel's ray crosses (the near plane would cut it away), so the answer is both when a tree
+/// triangle's box meets the box around the eye that holds those points (plus kBspCellMarginRaw), when
+/// the eye lies in a node's plane, in an unlabelled cell, or `stack` is smaller than
+/// bsp_stack_entries(depth). Cost: one side test per level down to the eye's cell, then the subtree
+/// boxes that meet the eye's box (none when the eye is away from the surface).
+inline BspFaces bsp_visible_faces(const View& view, const Vec3q16& eye, const BspTree& tree, Span<uint32_t> stack) {
+    if (tree.nodes.empty() || view.k_q8 <= 0 || view.near_raw <= 0 || stack.size() < bsp_stack_entries(tree.max_depth))
+        return BspFaces::both;
+    BspFaces faces = BspFaces::both;
+    for (uint32_t i = 0;;) {  // down to the eye's cell (bsp_load(): children only forward, so this ends)
+        const BspNode& n = tree.nodes[i];
+        const int side = detail::eye_side(tree, n, eye);
+        if (side == 0) return BspFaces::both;
+        const int c = side > 0 ? 0 : 1;
+        if (n.child[c] != kBspNone) {
+            i = n.child[c];
+            continue;
+        }
+        if ((n.cells & (kBspCellLowest << c)) != 0) faces = BspFaces::front;
+        else if ((n.cells & (kBspCellHighest << c)) != 0) faces = BspFaces::back;
+        break;
+    }
+    if (faces == BspFaces::both) return faces;
+    // A frame pixel's ray meets the near plane within |x| + |y| <= near (W + H) 8 subpixels / k of the view
+    // axis (a pixel to spare each way), so every point before it lies within `reach` of the eye.
+    const int64_t spread = int64_t{view.width + view.height} * (kSubpixel / 2) + 2 * kSubpixel;
+    const int64_t reach = view.near_raw + (int64_t{view.near_raw} * spread * 256 + view.k_q8 - 1) / view.k_q8 + kBspCellMarginRaw;
+    const int64_t e[3] = {eye.x.raw(), eye.y.raw(), eye.z.raw()};
+    int64_t lo[3], hi[3];  // the eye's box, raw, and in node box units
+    int32_t blo[3], bhi[3];
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = e[k] - reach;
+        hi[k] = e[k] + reach;
+        blo[k] = static_cast<int32_t>(max<int64_t>(lo[k] >> kBspBoxShift, INT16_MIN));
+        bhi[k] = static_cast<int32_t>(min<int64_t>(-((-hi[k]) >> kBspBoxShift), INT16_MAX));
+    }
+    size_t top = 0;
+    stack[top++] = 0;
+    while (top != 0) {  // a node's box holds its subtree: at most one entry per level waits
+        const BspNode& n = tree.nodes[stack[--top]];
+        bool meets = true;
+        for (int k = 0; k < 3; ++k) meets = meets && n.box_min[k] <= bhi[k] && n.box_max[k] >= blo[k];
+        if (!meets) continue;
+        for (uint32_t t = n.first; t < n.first + n.count; ++t) {
+            bool near = true;
+            for (int k = 0; k < 3 && near; ++k) {
+                int32_t tmin = INT32_MAX, tmax = INT32_MIN;
+                for (uint32_t v : tree.triangles[t].v) {
+                    const Vec3q16& p = tree.vertices[v];
+                    const int32_t c = k == 0 ? p.x.raw() : (k == 1 ? p.y.raw() : p.z.raw());
+                    tmin = min(tmin, c);
+                    tmax = max(tmax, c);
+                }
+                near = tmin <= hi[k] && tmax >= lo[k];
+            }
+            if (near) return BspFaces::both;
+        }
+        for (uint32_t c : n.child)
+            if (c != kBspNone) stack[top++] = c;
+    }
+    return faces;
+}
+
+/// Whether a walk drawing `faces` draws a triangle whose own front side the eye is on (`front`).
+constexpr bool bsp_draws(BspFaces faces, bool front) { return faces == BspFaces::both || front == (faces == BspFaces::front); }
+
+/// The faces a walk draws: front faces when culling, else those bsp_visible_faces() allows.
+inline BspFaces bsp_walk_faces(const View& view, const Vec3q16& eye, const BspTree& tree, const DrawOptions& opt,
+                               Span<uint32_t> stack) {
+    return opt.cull ? BspFaces::front : bsp_visible_faces(view, eye, tree, stack);
+}
+
+namespace detail {
 
 /// Bounds on p / w for 0 <= p < 2^63 and 0 < w < 2^63 by one 32/32-bit division of both shifted right
 /// until p fits 31 bits: kUp gives at least p / w, else at most it (and at least 0). Near the quotient
@@ -238,6 +321,7 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
     const FaceShading shading(view, opt);
     const BandBounds bb = band_bounds(frame);
     const PreparedTransform to_view(view.to_view);
+    const BspFaces faces = bsp_walk_faces(view, eye, tree, opt, stack);
     size_t top = 0;
     stack[top++] = 0;
     while (top != 0) {
@@ -274,7 +358,7 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
             const BspTriangle& tri = tree.triangles[t];
             const bool back = (tri.face & kBspFaceBack) != 0;
             const bool front = eye_front != back;  // the eye is on the triangle's own front side
-            if (opt.cull && !front) {
+            if (!bsp_draws(faces, front)) {  // culled, or hidden by the closed surface
                 ++st.triangles_culled;
                 continue;
             }
