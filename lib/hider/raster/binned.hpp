@@ -80,35 +80,40 @@ __attribute__((noinline)) void for_each_piece(const View& view, const Mesh& mesh
 /// Links every drawable triangle of the mesh (non-zero area, not culled) into the list of the band
 /// holding its first row, back to front so each list runs in mesh order; counts culled, clipped and outside triangles as draw_zbuffer()
 /// does on a whole frame. band_scale = ceil(2^20 / rows): band = first row * band_scale >> 20, exact for
-/// rows of frames up to 1,024.
-inline void bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
-                          const BandBounds& bb, int32_t height, uint32_t band_scale, uint16_t* next, uint16_t* head,
-                          FrameStats& st) {
+/// rows of frames up to 1,024. Out of line with few live values, so the loop stays in registers.
+__attribute__((noinline)) inline void bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
+                                                    const BandBounds& bb, int32_t height, uint32_t band_scale, uint16_t* next,
+                                                    uint16_t* head, FrameStats& st) {
     const Tri* const tris = mesh.tris.data();
     const ScreenVertex* const vp = verts.data();
+    // first_row_in_frame() with the rounding folded into the origin: rows from (y - y_lift) >> 4, y_lift
+    // = y_origin - 15.
+    const int32_t y_lift = bb.y_origin - (kSubpixel - 1), last = height - 1;
+    uint32_t culled = 0;
     for (size_t i = mesh.tris.size(); i-- > 0;) {
         const Tri& tri = tris[i];
         const ScreenVertex& a = vp[tri.v[0]];
         const ScreenVertex& b = vp[tri.v[1]];
         const ScreenVertex& c = vp[tri.v[2]];
-        int32_t first = height;  // first row of any drawable piece
-        auto piece = [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) __attribute__((always_inline)) {
-            const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
-            if (area == 0) return;
+        int32_t first;
+        if (a.z != 0 && b.z != 0 && c.z != 0) {
+            const int32_t area = TriangleRaster::signed_area(a, b, c);
+            if (area == 0) continue;
             if (cull && area > 0) {
-                ++st.triangles_culled;
-                return;
+                ++culled;
+                continue;
             }
             // A box without a pixel centre of the frame is binned too: its set-up finds nothing to draw.
-            first = min(first, first_row_in_frame(min<int32_t>(pa.y, min<int32_t>(pb.y, pc.y)), bb, height));
-        };
-        if (a.z != 0 && b.z != 0 && c.z != 0) piece(a, b, c);
-        else first = first_row_clipped(view, mesh, verts, i, cull, bb, height, st);
-        if (first == height) continue;
+            first = clamp((min<int32_t>(a.y, min<int32_t>(b.y, c.y)) - y_lift) >> kSubpixelBits, int32_t{0}, last);
+        } else {
+            first = first_row_clipped(view, mesh, verts, i, cull, bb, height, st);
+            if (first == height) continue;
+        }
         const uint32_t band = (static_cast<uint32_t>(first) * band_scale) >> 20;
         next[i] = head[band];
         head[band] = static_cast<uint16_t>(i);
     }
+    st.triangles_culled += culled;
 }
 
 /// The carried set-ups of draw_bands_kernel(): slots in use this band (mesh order) from `cur` to
