@@ -510,91 +510,127 @@ I128 orient3(const V3& a, const V3& b, const V3& c, const V3& p) {
 
 int sgn(I128 v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 
-enum class Cast { known, again, unknown };
+/// label_cells()'s work on one tree: the checks, the ray casts and the labels.
+class CellLabeller {
+public:
+    CellLabeller(BspBuilt& t, BspStats& stats) : t_(t), stats_(stats) {}
 
-}  // namespace
-
-void label_cells(BspBuilt& t, BspStats& stats) {
-    stats.cells_labelled = 0;
-    stats.winding_low = stats.winding_high = 0;
-    for (BspNode& n : t.nodes) n.cells = 0;
-    auto none = [&](const std::string& why) {
-        stats.cells_note = why;
-        for (BspNode& n : t.nodes) n.cells = 0;
-    };
-    if (t.nodes.empty()) return none("no nodes");
-    // A closed surface: every directed edge used as often as its reverse (a 2-cycle: winding numbers exist).
-    std::unordered_map<uint64_t, int> edges;
-    auto key = [](uint32_t a, uint32_t b) { return (uint64_t{a} << 32) | b; };
-    for (const BspTriangle& tr : t.triangles)
-        for (int i = 0; i < 3; ++i) ++edges[key(tr.v[i], tr.v[(i + 1) % 3])];
-    for (const auto& [k, count] : edges) {
-        const auto it = edges.find(key(static_cast<uint32_t>(k), static_cast<uint32_t>(k >> 32)));
-        if (it == edges.end() || it->second != count) return none("the surface is not closed (an edge without its reverse)");
+    void run() {
+        stats_.cells = BspCells::labelled;
+        stats_.cells_labelled = 0;
+        stats_.winding_low = stats_.winding_high = 0;
+        stats_.cells_stray_raw = 0;
+        for (BspNode& n : t_.nodes) n.cells = 0;
+        if (t_.nodes.empty()) return none(BspCells::empty, "no nodes");
+        if (!closed()) return none(BspCells::open, "the surface is not closed (an edge without its reverse)");
+        // A binary tree of N nodes has N + 1 empty children, each cast against every triangle.
+        if (static_cast<double>(t_.nodes.size() + 1) * static_cast<double>(t_.triangles.size()) > 4e9)
+            return none(BspCells::too_large, "too large to label (empty children x triangles > 4e9)");
+        if (!strays_within(kBspCellStrayRaw))
+            return none(BspCells::straying, "a triangle strays from its cell by more than " + std::to_string(kBspCellStrayRaw) + " raw units");
+        prepare_casts();
+        std::vector<int> winding;
+        for (const BspNode& n : t_.nodes)
+            for (int c = 0; c < 2; ++c) {
+                if (n.child[c] != kBspNone) continue;
+                int w = 0;
+                if (!winding_of(n, c, w))
+                    return none(BspCells::unclear, "a cell's winding number is unclear (a surface at its start, or rays through edges)");
+                winding.push_back(w);
+            }
+        assign(winding);
     }
-    const size_t empty_children = t.nodes.size() + 1;  // a binary tree of N nodes has N + 1 empty children
-    if (static_cast<double>(empty_children) * static_cast<double>(t.triangles.size()) > 4e9)
-        return none("too large to label (empty children x triangles > 4e9)");
-    auto pos = [&](uint32_t v) { return V3{t.vertices[v].x, t.vertices[v].y, t.vertices[v].z}; };
-    auto side = [&](const BspNode& n, const V3& p) {
+
+private:
+    enum class Cast { known, again, unknown };
+
+    void none(BspCells why, const std::string& note) {
+        stats_.cells = why;
+        stats_.cells_note = note;
+        stats_.cells_labelled = 0;
+        for (BspNode& n : t_.nodes) n.cells = 0;
+    }
+
+    V3 pos(uint32_t v) const { return V3{t_.vertices[v].x, t_.vertices[v].y, t_.vertices[v].z}; }
+
+    /// n . (p - origin), exact.
+    I128 side(const BspNode& n, const V3& p) const {
         const V3 o = pos(n.origin);
         return I128(n.n[0]) * (p[0] - o[0]) + I128(n.n[1]) * (p[1] - o[1]) + I128(n.n[2]) * (p[2] - o[2]);
-    };
-    auto norm = [](const BspNode& n) {
-        return std::sqrt(static_cast<double>(n.n[0]) * n.n[0] + static_cast<double>(n.n[1]) * n.n[1] + static_cast<double>(n.n[2]) * n.n[2]);
-    };
-    // Every triangle within the margin of its node's plane and on its side of each plane above it.
-    const double margin = kBspCellMarginRaw;
-    struct Visit {
-        uint32_t node, depth, parent;
-        int side;  // the side of the parent's plane this node's subtree lies on: +1 front, -1 back
-    };
-    std::vector<std::pair<uint32_t, int>> path;  // the ancestors of the visited node and its side of each
-    std::vector<Visit> todo{{0u, 0u, 0u, 0}};
-    while (!todo.empty()) {
-        const Visit at = todo.back();
-        todo.pop_back();
-        path.resize(at.depth);  // preorder: path[0, depth - 1) still holds this node's upper ancestors
-        if (at.depth > 0) path[at.depth - 1] = {at.parent, at.side};
-        const BspNode& n = t.nodes[at.node];
-        for (uint32_t k = n.first; k < n.first + n.count; ++k)
-            for (uint32_t v : t.triangles[k].v) {
-                const V3 p = pos(v);
-                if (std::fabs(static_cast<double>(side(n, p))) / norm(n) > margin)
-                    return none("a triangle strays from its node's plane by more than the margin");
-                for (const auto& [a, sd] : path)
-                    if (static_cast<double>(side(t.nodes[a], p)) * sd / norm(t.nodes[a]) < -margin)
-                        return none("a triangle strays past its cell by more than the margin");
+    }
+
+    static double norm(const BspNode& n) {
+        return std::sqrt(static_cast<double>(n.n[0]) * static_cast<double>(n.n[0]) + static_cast<double>(n.n[1]) * static_cast<double>(n.n[1]) +
+                         static_cast<double>(n.n[2]) * static_cast<double>(n.n[2]));
+    }
+
+    /// Every directed edge used as often as its reverse: a 2-cycle, so winding numbers exist.
+    bool closed() const {
+        std::unordered_map<uint64_t, int> edges;
+        auto key = [](uint32_t a, uint32_t b) { return (uint64_t{a} << 32) | b; };
+        for (const BspTriangle& tr : t_.triangles)
+            for (int i = 0; i < 3; ++i) ++edges[key(tr.v[i], tr.v[(i + 1) % 3])];
+        for (const auto& [k, count] : edges) {
+            const auto it = edges.find(key(static_cast<uint32_t>(k), static_cast<uint32_t>(k >> 32)));
+            if (it == edges.end() || it->second != count) return false;
+        }
+        return true;
+    }
+
+    /// Every triangle's vertices within `limit` of its node's plane and at most `limit` past each plane
+    /// above it, on the wrong side (cut points are rounded to the grid); records the largest stray.
+    bool strays_within(double limit) {
+        struct Visit {
+            uint32_t node, depth, parent;
+            int side;  // the side of the parent's plane this subtree lies on: +1 front, -1 back
+        };
+        std::vector<std::pair<uint32_t, int>> path;  // the ancestors of the visited node and its side of each
+        std::vector<Visit> todo{{0u, 0u, 0u, 0}};
+        double worst = 0;
+        while (!todo.empty()) {
+            const Visit at = todo.back();
+            todo.pop_back();
+            path.resize(at.depth);  // preorder: path[0, depth - 1) still holds this node's upper ancestors
+            if (at.depth > 0) path[at.depth - 1] = {at.parent, at.side};
+            const BspNode& n = t_.nodes[at.node];
+            for (uint32_t k = n.first; k < n.first + n.count; ++k)
+                for (uint32_t v : t_.triangles[k].v) {
+                    const V3 p = pos(v);
+                    worst = std::max(worst, std::fabs(static_cast<double>(side(n, p))) / norm(n));
+                    for (const auto& [a, sd] : path)
+                        worst = std::max(worst, -static_cast<double>(side(t_.nodes[a], p)) * sd / norm(t_.nodes[a]));
+                }
+            if (n.child[1] != kBspNone) todo.push_back({n.child[1], at.depth + 1, at.node, -1});
+            if (n.child[0] != kBspNone) todo.push_back({n.child[0], at.depth + 1, at.node, 1});
+        }
+        stats_.cells_stray_raw = worst;
+        return worst <= limit;
+    }
+
+    /// Triangles in x3 coordinates (centres integral), which have area, and their boxes.
+    void prepare_casts() {
+        const size_t n = t_.triangles.size();
+        tri3_.assign(n, {});
+        has_area_.assign(n, 0);
+        box_.assign(n, {});
+        for (size_t k = 0; k < n; ++k) {
+            for (int i = 0; i < 3; ++i) {
+                const V3 p = pos(t_.triangles[k].v[i]);
+                tri3_[k][i] = {3 * p[0], 3 * p[1], 3 * p[2]};
             }
-        if (n.child[1] != kBspNone) todo.push_back({n.child[1], at.depth + 1, at.node, -1});
-        if (n.child[0] != kBspNone) todo.push_back({n.child[0], at.depth + 1, at.node, 1});
-    }
-    // Winding number of each empty child's cell, by a ray from the centre of the node's largest triangle.
-    std::vector<std::array<V3, 3>> tri3(t.triangles.size());  // coordinates x3, so centres are integral
-    for (size_t k = 0; k < t.triangles.size(); ++k)
-        for (int i = 0; i < 3; ++i) {
-            const V3 p = pos(t.triangles[k].v[i]);
-            tri3[k][i] = {3 * p[0], 3 * p[1], 3 * p[2]};
+            const auto& u = tri3_[k];
+            has_area_[k] = orient3(u[0], u[1], u[2], {u[0][0] + 1, u[0][1], u[0][2]}) != 0 ||
+                           orient3(u[0], u[1], u[2], {u[0][0], u[0][1] + 1, u[0][2]}) != 0 ||
+                           orient3(u[0], u[1], u[2], {u[0][0], u[0][1], u[0][2] + 1}) != 0;
+            for (int i = 0; i < 3; ++i) {  // widened by one: a box miss is certain
+                box_[k][i] = static_cast<double>(std::min({u[0][i], u[1][i], u[2][i]})) - 1;
+                box_[k][3 + i] = static_cast<double>(std::max({u[0][i], u[1][i], u[2][i]})) + 1;
+            }
         }
-    std::vector<int> winding;
-    winding.reserve(2 * t.nodes.size());
-    std::mt19937_64 rng(0x5EED);
-    std::uniform_int_distribution<int64_t> jitter(-(int64_t{1} << 29), int64_t{1} << 29);
-    std::vector<char> has_area(tri3.size());
-    for (size_t k = 0; k < tri3.size(); ++k) {
-        const auto& u = tri3[k];
-        has_area[k] = orient3(u[0], u[1], u[2], {u[0][0] + 1, u[0][1], u[0][2]}) != 0 ||
-                      orient3(u[0], u[1], u[2], {u[0][0], u[0][1] + 1, u[0][2]}) != 0 ||
-                      orient3(u[0], u[1], u[2], {u[0][0], u[0][1], u[0][2] + 1}) != 0;
     }
-    std::vector<std::array<double, 6>> box(tri3.size());  // each triangle's box, to skip most exact tests
-    for (size_t k = 0; k < tri3.size(); ++k)
-        for (int i = 0; i < 3; ++i) {
-            box[k][i] = static_cast<double>(std::min({tri3[k][0][i], tri3[k][1][i], tri3[k][2][i]})) - 1;
-            box[k][3 + i] = static_cast<double>(std::max({tri3[k][0][i], tri3[k][1][i], tri3[k][2][i]})) + 1;
-        }
-    // Whether segment q -> r may meet box b (slab test in doubles, widened: a miss is certain).
-    auto may_meet = [](const V3& q, const V3& r, const std::array<double, 6>& b) {
+
+    /// Whether segment q -> r may meet box b (slab test in doubles, with slack: a miss is certain).
+    static bool may_meet(const V3& q, const V3& r, const std::array<double, 6>& b) {
         double lo = 0, hi = 1;
         for (int i = 0; i < 3; ++i) {
             const double o = static_cast<double>(q[i]), d = static_cast<double>(r[i] - q[i]);
@@ -609,17 +645,17 @@ void label_cells(BspBuilt& t, BspStats& stats) {
             if (lo > hi) return false;
         }
         return true;
-    };
-    // Signed crossings of the segment q -> r (r beyond every triangle) with every triangle but `from`:
-    // w(q) = crossings left through a front face - those entered through one.
-    auto cast = [&](size_t from, const V3& q, const V3& r, int& w) {
-        const double length = std::sqrt(static_cast<double>(r[0] - q[0]) * static_cast<double>(r[0] - q[0]) +
-                                        static_cast<double>(r[1] - q[1]) * static_cast<double>(r[1] - q[1]) +
-                                        static_cast<double>(r[2] - q[2]) * static_cast<double>(r[2] - q[2]));
+    }
+
+    /// Signed crossings of the segment q -> r (r beyond every triangle) with every triangle but `from`:
+    /// w(q) = those left through a front face - those entered through one.
+    Cast cast(size_t from, const V3& q, const V3& r, int& w) const {
+        const double dx = static_cast<double>(r[0] - q[0]), dy = static_cast<double>(r[1] - q[1]), dz = static_cast<double>(r[2] - q[2]);
+        const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
         w = 0;
-        for (size_t k = 0; k < tri3.size(); ++k) {
-            if (k == from || !has_area[k] || !may_meet(q, r, box[k])) continue;
-            const auto& u = tri3[k];
+        for (size_t k = 0; k < tri3_.size(); ++k) {
+            if (k == from || !has_area_[k] || !may_meet(q, r, box_[k])) continue;
+            const auto& u = tri3_[k];
             const I128 sq = orient3(u[0], u[1], u[2], q), sr = orient3(u[0], u[1], u[2], r);
             if (sr == 0) return Cast::again;  // the far end in its plane
             if (sq != 0 && (sq > 0) == (sr > 0)) continue;
@@ -630,64 +666,80 @@ void label_cells(BspBuilt& t, BspStats& stats) {
             if (sq == 0) return Cast::unknown;   // the start on another triangle (or its border): two surfaces meet there
             if (o1 == 0 || o2 == 0 || o3 == 0) return Cast::again;  // through an edge or a vertex
             const double along = static_cast<double>(sq) / (static_cast<double>(sq) - static_cast<double>(sr)) * length;
-            if (along < 3 * margin) return Cast::unknown;  // a surface within the margin: the start's side is unclear
+            if (along < 3.0 * kBspCellMarginRaw) return Cast::unknown;  // a surface within the margin: the start's side is unclear
             w += sq < 0 ? 1 : -1;  // left through a front face: the start lies one deeper
         }
         return Cast::known;
-    };
-    for (size_t id = 0; id < t.nodes.size(); ++id) {
-        BspNode& n = t.nodes[id];
-        for (int c = 0; c < 2; ++c) {
-            if (n.child[c] != kBspNone) continue;
-            if (n.count == 0) return none("a node without triangles has an empty child");
-            size_t best = n.first;  // the largest triangle: its centre lies farthest from other surfaces
-            I128 best_area = -1;
-            for (uint32_t k = n.first; k < n.first + n.count; ++k) {
-                const auto& u = tri3[k];
-                const V3 a = sub3(u[1], u[0]), b = sub3(u[2], u[0]);
-                const I128 x = I128(a[1]) * b[2] - I128(a[2]) * b[1], y = I128(a[2]) * b[0] - I128(a[0]) * b[2],
-                           z = I128(a[0]) * b[1] - I128(a[1]) * b[0];
-                const I128 area2 = x * x + y * y + z * z;  // below 2^126 for coordinates below 2^31
-                if (area2 > best_area) {
-                    best_area = area2;
-                    best = k;
-                }
-            }
-            const auto& u = tri3[best];
-            const V3 q = {(u[0][0] + u[1][0] + u[2][0]) / 3, (u[0][1] + u[1][1] + u[2][1]) / 3, (u[0][2] + u[1][2] + u[2][2]) / 3};
-            const double len = norm(n), s = c == 0 ? 1.0 : -1.0;
-            Cast result = Cast::again;
-            int w = 0;
-            for (int attempt = 0; attempt < 16 && result == Cast::again; ++attempt) {
-                V3 r;  // far beyond the world (|x3 coordinates| < 2^29) on the child's side, slightly tilted
-                for (int i = 0; i < 3; ++i)
-                    r[i] = q[i] + static_cast<int64_t>(std::llround(s * static_cast<double>(n.n[i]) / len * 0x1p33)) + jitter(rng);
-                if (sgn(side(n, {r[0], r[1], r[2]})) == 0) continue;
-                result = cast(best, q, r, w);
-            }
-            if (result != Cast::known) return none("a cell's winding number is unclear (a surface at its start, or rays through edges)");
-            winding.push_back(w);
-        }
     }
-    int low = 0, high = 0;
-    for (int w : winding) {
-        low = std::min(low, w);
-        high = std::max(high, w);
-    }
-    if (low == high) return none("every cell has the same winding number");
-    size_t next = 0;
-    for (BspNode& n : t.nodes)
-        for (int c = 0; c < 2; ++c) {
-            if (n.child[c] != kBspNone) continue;
-            const int w = winding[next++];
-            if (w == low) n.cells |= static_cast<uint16_t>(kBspCellLowest << c);
-            else if (w == high) n.cells |= static_cast<uint16_t>(kBspCellHighest << c);
-            if (w == low || w == high) ++stats.cells_labelled;
+
+    /// The winding number of node n's empty child c, by rays from the centre of its largest triangle
+    /// into the child's side (tilted at random; cast again when one passes through an edge).
+    bool winding_of(const BspNode& n, int c, int& w) {
+        if (n.count == 0) return false;
+        size_t best = n.first;  // the largest triangle: its centre lies farthest from other surfaces
+        I128 best_area = -1;
+        for (uint32_t k = n.first; k < n.first + n.count; ++k) {
+            const auto& u = tri3_[k];
+            const V3 a = sub3(u[1], u[0]), b = sub3(u[2], u[0]);
+            const I128 x = I128(a[1]) * b[2] - I128(a[2]) * b[1], y = I128(a[2]) * b[0] - I128(a[0]) * b[2],
+                       z = I128(a[0]) * b[1] - I128(a[1]) * b[0];
+            const I128 area2 = x * x + y * y + z * z;  // below 2^126 for x3 coordinates below 2^31
+            if (area2 > best_area) {
+                best_area = area2;
+                best = k;
+            }
         }
-    stats.winding_low = low;
-    stats.winding_high = high;
-    stats.cells_note.clear();
-}
+        const auto& u = tri3_[best];
+        const V3 q = {u[0][0] + u[1][0] + u[2][0], u[0][1] + u[1][1] + u[2][1], u[0][2] + u[1][2] + u[2][2]};
+        const V3 centre = {q[0] / 3, q[1] / 3, q[2] / 3};  // exact: the sum of three x3 coordinates
+        const double len = norm(n), s = c == 0 ? 1.0 : -1.0;
+        for (int attempt = 0; attempt < 16; ++attempt) {
+            V3 r;  // far beyond the world (|x3 coordinates| < 2^29) on the child's side, slightly tilted
+            for (int i = 0; i < 3; ++i)
+                r[i] = centre[i] + static_cast<int64_t>(std::llround(s * static_cast<double>(n.n[i]) / len * 0x1p33)) + jitter_(rng_);
+            const I128 along = I128(n.n[0]) * (r[0] - centre[0]) + I128(n.n[1]) * (r[1] - centre[1]) + I128(n.n[2]) * (r[2] - centre[2]);
+            if (sgn(along) != (c == 0 ? 1 : -1)) continue;  // the ray must leave into the child's side
+            const Cast result = cast(best, centre, r, w);
+            if (result == Cast::known) return true;
+            if (result == Cast::unknown) return false;
+        }
+        return false;
+    }
+
+    /// Labels the cells of the lowest and highest winding numbers (0 outside counted), in node order.
+    void assign(const std::vector<int>& winding) {
+        int low = 0, high = 0;
+        for (int w : winding) {
+            low = std::min(low, w);
+            high = std::max(high, w);
+        }
+        if (low == high) return none(BspCells::uniform, "every cell has the same winding number");
+        size_t next = 0;
+        for (BspNode& n : t_.nodes)
+            for (int c = 0; c < 2; ++c) {
+                if (n.child[c] != kBspNone) continue;
+                const int w = winding[next++];
+                if (w == low) n.cells |= static_cast<uint16_t>(kBspCellLowest << c);
+                else if (w == high) n.cells |= static_cast<uint16_t>(kBspCellHighest << c);
+                if (w == low || w == high) ++stats_.cells_labelled;
+            }
+        stats_.winding_low = low;
+        stats_.winding_high = high;
+        stats_.cells_note.clear();
+    }
+
+    BspBuilt& t_;
+    BspStats& stats_;
+    std::vector<std::array<V3, 3>> tri3_;
+    std::vector<char> has_area_;
+    std::vector<std::array<double, 6>> box_;
+    std::mt19937_64 rng_{0x5EED};
+    std::uniform_int_distribution<int64_t> jitter_{-(int64_t{1} << 29), int64_t{1} << 29};
+};
+
+}  // namespace
+
+void label_cells(BspBuilt& t, BspStats& stats) { CellLabeller(t, stats).run(); }
 
 bool build_bsp(const std::vector<Vec3q16>& positions, const std::vector<Tri>& tris, const std::vector<uint32_t>& ids,
                const BspOptions& opt, BspBuilt& out, BspStats& stats, std::string& error) {

@@ -24,6 +24,23 @@ struct BspOptions {
     int candidates = 32;
 };
 
+/// What label_cells() made of a tree's cells.
+enum class BspCells : uint8_t {
+    labelled,   ///< every empty child's cell of the lowest or highest winding number is labelled
+    empty,      ///< no nodes
+    open,       ///< the surface is not closed: no winding numbers
+    too_large,  ///< empty children x triangles beyond the ray casts' budget
+    straying,   ///< a triangle strays more than kBspCellStrayRaw from its cell
+    unclear,    ///< a ray starts on, or passes within the margin of, a second surface (touching solids)
+    uniform,    ///< every cell has the same winding number
+};
+
+/// How far a tree triangle may stray from its cell's planes (raw Q16) for label_cells() to label it: cut
+/// points rounded to the grid stray by about a raw unit (1.4 at most on the shared closed models);
+/// kBspCellMarginRaw, the runtime's margin, is 256 times more, so only the tip of a wedge-shaped cell
+/// narrower than 1/256 rad could hold a point of another winding number that far from every surface.
+constexpr double kBspCellStrayRaw = 16;
+
 struct BspStats {
     size_t input_triangles = 0;
     size_t degenerate = 0;        ///< input triangles of zero area, dropped
@@ -36,8 +53,10 @@ struct BspStats {
     size_t largest_node = 0;      ///< most triangles in one node's plane
     size_t vertices = 0;
     size_t bytes = 0;             ///< blob size
+    BspCells cells = BspCells::empty;  ///< whether the cells are labelled, or why not
     size_t cells_labelled = 0;    ///< empty children whose cell got a label (BspNode::cells), 0 when none
     int winding_low = 0, winding_high = 0;  ///< the closed surface's lowest and highest winding numbers
+    double cells_stray_raw = 0;   ///< the farthest a triangle strays from its cell (closed surfaces)
     std::string cells_note;       ///< why the cells are not labelled (empty when they are)
 };
 
@@ -56,12 +75,12 @@ bool build_bsp(const std::vector<Vec3q16>& positions, const std::vector<Tri>& tr
 
 /// Labels the cells of the empty children of a built tree (BspNode::cells) when its triangles form a
 /// closed surface (every directed edge matched by its reverse), no triangle strays more than
-/// kBspCellMarginRaw past its cell's planes, and every cell's winding number is found: by an exact ray
+/// kBspCellStrayRaw past its cell's planes, and every cell's winding number is found: by an exact ray
 /// cast from the centre of the node's largest triangle into the child's side, counting signed crossings
 /// of all the tree's triangles (a ray through an edge or vertex is cast again; a crossing nearer than the
 /// margin, or another triangle through the start, leaves the cell unknown). A cell gets the lowest
 /// (highest) label when its winding number is the surface's lowest (highest), counting 0 outside. Labels
-/// all or none (stats.cells_note says why none). Called by build_bsp().
+/// all or none (stats.cells and cells_note say why none). Called by build_bsp().
 void label_cells(BspBuilt& tree, BspStats& stats);
 
 /// The world transform a BSP stores: world = (model - centre) * scale, each number as BspScaled.

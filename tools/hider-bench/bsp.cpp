@@ -104,8 +104,7 @@ int bsp_command(const Args& args) {
             const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             const std::string cells = st.cells_note.empty()
                                           ? "winding " + std::to_string(st.winding_low) + ".." + std::to_string(st.winding_high)
-                                          : st.cells_note.find("not closed") != std::string::npos ? "open surface"
-                                                                                                    : "not labelled: " + st.cells_note;
+                                          : st.cells == BspCells::open ? "open surface" : "not labelled: " + st.cells_note;
             std::printf("| %s | %s | %zu | %zu | %.3f | %zu | %zu | %zu | %zu | %.2f | %s |\n", fs::path(path).filename().c_str(), s.name,
                         st.input_triangles, st.polygons,
                         st.input_triangles == 0 ? 0.0 : static_cast<double>(st.polygons) / static_cast<double>(st.input_triangles),

@@ -111,8 +111,9 @@ int main(int argc, char** argv) {
         std::printf("bytes %zu (nodes %zu, triangles %zu, vertices %zu) build %.2f s\n", st.bytes, st.nodes * sizeof(BspNode),
                     st.triangles * sizeof(BspTriangle), st.vertices * sizeof(BspVertex), seconds);
         if (st.cells_note.empty())
-            std::printf("cells labelled %zu (winding numbers %d..%d): only the faces seen from the eye's cell are drawn\n",
-                        st.cells_labelled, st.winding_low, st.winding_high);
+            std::printf("cells labelled %zu (winding numbers %d..%d, triangles stray up to %.1f raw units): only the faces\n"
+                        "seen from the eye's cell are drawn\n",
+                        st.cells_labelled, st.winding_low, st.winding_high, st.cells_stray_raw);
         else
             std::printf("cells not labelled: %s\n", st.cells_note.c_str());
     }

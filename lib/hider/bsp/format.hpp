@@ -129,9 +129,9 @@ constexpr BspLayout bsp_layout(uint32_t nodes, uint32_t triangles, uint32_t vert
 constexpr uint16_t kBspCellLowest = 1;   ///< << c for child c
 constexpr uint16_t kBspCellHighest = 4;  ///< << c for child c
 constexpr uint16_t kBspCellMask = 0xF;
-/// How far (raw Q16) a tree triangle may stray past the planes of its node's cell (cut points are rounded
-/// to the grid) for hider-bsp to label cells; bsp_visible_faces() keeps the eye this much farther from
-/// every triangle than the near plane's reach.
+/// bsp_visible_faces() keeps the eye this much (raw Q16) farther from every triangle than the near
+/// plane's reach; hider-bsp labels only trees whose triangles stray from their cells by a small fraction
+/// of it (cut points are rounded to the grid).
 constexpr int32_t kBspCellMarginRaw = int32_t{1} << 12;
 
 /// Stack entries a walk needs per level of the tree (walk.hpp): a node and its second child wait.

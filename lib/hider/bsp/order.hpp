@@ -168,7 +168,8 @@ __attribute__((noinline)) void draw_listed_node(const ListBand<Format, Depth>& l
 }  // namespace detail
 
 /// Paints the band from `list` (order_bsp() for the same view, tree, vertices and options; the caller
-/// cleared the band): draw_bsp()'s pixels and order, and its counts of triangles drawn, fragments and
+/// cleared the band; which faces are drawn, culled or hidden, is in the entries, not in opt.cull):
+/// draw_bsp()'s pixels and order, and its counts of triangles drawn, fragments and
 /// pixels written. Clipped triangles are counted in every band their entry's rows reach (draw_bsp() counts
 /// them where its subtree boxes reach: the same on a whole-frame band). Flat colours are set up without a
 /// depth plane. On a tree whose node boxes do not nest (hider-bsp's always do; bsp_load() does not check
