@@ -167,17 +167,20 @@ std::vector<Camera> inside_cameras(const Camera& own, const BspTree& tree, const
     return cams;
 }
 
-/// The labelled tree of `s` against the same tree without labels, from each camera, pixel for pixel with
-/// each walk, whole frame and 7-row bands; and hider-render's bsp (the same labelled tree) against the
+/// The labelled tree `built` of `s` against the same tree without labels, from each camera, pixel for pixel with
+/// each walk, whole frame and 7-row bands; and hider-render's bsp of the labelled tree against the
 /// z-buffer without culling. `swapped`: the labels exchanged (a planted fault; then only counted).
-Tally compare(const std::string& name, tool::Scene s, const std::vector<Camera>& cameras, bool swapped = false) {
-    Built b = build(s);
+Tally compare(const std::string& name, tool::Scene s, const Built& built, const std::vector<Camera>& cameras, bool swapped = false) {
+    s.width = 160;  // frames of a small display: enough pixels for silhouettes, a quarter of the time
+    s.height = 120;
+    Built b = built;
     tool::BspBuilt plain = b.built;
     for (BspNode& n : plain.nodes) n.cells = 0;
     if (swapped)
         for (BspNode& n : b.built.nodes)
             n.cells = static_cast<uint16_t>(((n.cells & 3u) << 2) | ((n.cells >> 2) & 3u));
     const Loaded labelled = load(b.built, s), unlabelled = load(plain, s);
+    const std::vector<uint8_t> labelled_blob = tool::bsp_blob(b.built, tool::BspFit{s.centre, s.scale});
     Tally t;
     for (size_t c = 0; c < cameras.size(); ++c) {
         s.camera = cameras[c];
@@ -219,7 +222,7 @@ Tally compare(const std::string& name, tool::Scene s, const std::vector<Camera>&
         ro.algo = tool::Algo::zbuffer;
         REQUIRE_MESSAGE(tool::render(s, ro, zr, why), why);
         ro.algo = tool::Algo::bsp;
-        REQUIRE_MESSAGE(tool::render(s, ro, br, why), why);
+        REQUIRE_MESSAGE(tool::render_bsp(s, labelled_blob, ro, br, why), why);  // hider-render's bsp of this tree
         const std::vector<uint32_t> ids = tool::decode_ids(br), z = tool::decode_ids(zr);
         const ref::Agreement agree = ref::compare_ids(ids, z, s.width, s.height);
         const test::Defects d = test::count_defects(ids, z, s.width, s.height);
@@ -249,6 +252,16 @@ Tally compare(const std::string& name, tool::Scene s, const std::vector<Camera>&
     return t;
 }
 
+/// Cameras per comparison: under ASan a quarter (the frames run ten times slower there; the plain host
+/// build checks them all).
+int cameras(int n) {
+#if defined(__SANITIZE_ADDRESS__)
+    return (n + 3) / 4;
+#else
+    return n;
+#endif
+}
+
 }  // namespace
 
 TEST_CASE("hider-bsp labels the cells of closed surfaces, and of no open one") {
@@ -266,7 +279,7 @@ TEST_CASE("hider-bsp labels the cells of closed surfaces, and of no open one") {
         }
     CHECK(lowest > 0);
     CHECK(highest > 0);
-    for (const char* open : {"suzanne.obj", "teapot.obj"}) {
+    for (const char* open : {"suzanne.obj"}) {
         const Built b = build(test::load_model(open));
         INFO(open);
         CHECK(b.stats.cells_labelled == 0);
@@ -286,21 +299,21 @@ TEST_CASE("a labelled tree draws one side of the faces and the same bytes as bot
     const Loaded tl = load(tb.built, torus);
     const Box box = box_of(tl.tree);
     for (uint32_t seed : {1u, 2u}) {
-        const Tally t = compare("torus seed " + std::to_string(seed), torus, random_cameras(torus.camera, box, 24, seed));
+        const Tally t = compare("torus seed " + std::to_string(seed), torus, tb, random_cameras(torus.camera, box, cameras(24), seed));
         CHECK(t.faces[1] > 0);  // outside the solid
         CHECK(t.faces[0] > 0);  // too near a surface, or the near plane through it
         CHECK(t.skipped > 0);
     }
     // Random eyes seldom fall inside the tube: these stand in its wall, 1/25 of the torus's width deep.
-    const Tally inside = compare("torus, eyes inside the tube", torus, inside_cameras(torus.camera, tl.tree, box, 12));
-    CHECK(inside.faces[2] >= 12);  // back faces only, from most of them
+    const Tally inside = compare("torus, eyes inside the tube", torus, tb, inside_cameras(torus.camera, tl.tree, box, cameras(12)));
+    CHECK(inside.faces[2] >= cameras(12));  // back faces only, from most of them
     const tool::Scene boxes = test::generated_scene("boxes-6-10");
     const Built bb = build(boxes);
     REQUIRE_MESSAGE(bb.stats.cells == tool::BspCells::labelled, bb.stats.cells_note);
     CHECK(bb.stats.winding_low == 0);
     CHECK(bb.stats.winding_high >= 2);  // boxes overlap
     const Loaded bl = load(bb.built, boxes);
-    const Tally t = compare("boxes-6-10", boxes, random_cameras(boxes.camera, box_of(bl.tree), 24, 3));
+    const Tally t = compare("boxes-6-10", boxes, bb, random_cameras(boxes.camera, box_of(bl.tree), cameras(24), 3));
     CHECK(t.faces[1] > 0);
 }
 
@@ -309,17 +322,17 @@ TEST_CASE("swapped labels (a planted fault) change the picture") {
     const Built tb = build(torus);
     const Loaded tl = load(tb.built, torus);
     const Box box = box_of(tl.tree);
-    std::vector<Camera> cams = random_cameras(torus.camera, box, 6, 5);
-    const std::vector<Camera> inside = inside_cameras(torus.camera, tl.tree, box, 3);
+    std::vector<Camera> cams = random_cameras(torus.camera, box, cameras(6), 5);
+    const std::vector<Camera> inside = inside_cameras(torus.camera, tl.tree, box, cameras(3));
     cams.insert(cams.end(), inside.begin(), inside.end());
-    const Tally t = compare("torus, labels swapped", torus, cams, true);
+    const Tally t = compare("torus, labels swapped", torus, tb, cams, true);
     CHECK(t.faces[1] > 0);  // outside cells now labelled highest: back faces only
     CHECK(t.faces[2] > 0);
-    CHECK(t.differing > 1000);
+    CHECK(t.differing > 100);
 }
 
 TEST_CASE("bsp_load refuses cell labels on a child that is not empty, two labels, or unknown bits") {
-    tool::Scene s = test::load_model("torus.obj");
+    tool::Scene s = test::generated_scene("cyclic-bars");  // a small tree (its bars touch: not labelled)
     const Built b = build(s);
     size_t inner = 0, leaf = 0;  // a node with a front child, one with an empty front child
     for (size_t i = 0; i < b.built.nodes.size(); ++i) {
