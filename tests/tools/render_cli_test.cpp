@@ -765,13 +765,19 @@ TEST_CASE("hider-bsp with camera options adds hider-render's camera in the tree'
     CHECK(contains(bad.err, "field of view 0 degrees out of range"));
 }
 
-TEST_CASE("hider-bsp --stats reports polygons, split ratio, nodes, depth, leaf size, bytes and build time") {
+TEST_CASE("hider-bsp --stats reports polygons, split ratio, nodes, depth, leaf size, bytes, build time and the cells") {
     const Run r = bsp_tool(kTorus, scratch_path("stats.hbsp"), {"--stats", "--candidates", "8", "--split-weight", "3"});
     INFO("stdout: ", r.out, "stderr: ", r.err);
     CHECK(r.code == 0);
     for (const std::string part : {"input triangles ", "polygons ", "split-ratio ", "nodes ", "depth ", "largest-node ", "bytes ",
                                    "build "})
         CHECK(contains(r.out, part));
+    // The torus is a closed surface: its cells are labelled. Suzanne is open: they are not, and it says why.
+    CHECK(contains(r.out, "cells labelled "));
+    CHECK(contains(r.out, "winding numbers 0..1"));
+    const Run open = bsp_tool(std::string(HIDER_TEST_DATA) + "/models/suzanne.obj", scratch_path("open.hbsp"), {"--stats"});
+    CHECK(open.code == 0);
+    CHECK(contains(open.out, "cells not labelled: the surface is not closed"));
 }
 
 TEST_CASE("hider-bsp reports OBJ errors with the file and the line, like hider-render, and bad options with exit 2") {
