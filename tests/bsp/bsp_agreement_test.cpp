@@ -83,7 +83,11 @@ TEST_CASE("bsp and bsp-front match the z-buffer from inside the city, with the e
         REQUIRE_MESSAGE(tool::build_scene(tool::gen::obj_model(g), tool::gen::camera_args(g), s, why), why);
         check("city-3-8-8 eye y " + std::to_string(eye_y), s, true);
         for (tool::Algo algo : {tool::Algo::bsp, tool::Algo::bsp_front})
+#if defined(__SANITIZE_ADDRESS__)
+            for (int band : {7, 32}) {  // 1-row bands (a walk per row): the plain host build
+#else
             for (int band : {1, 7, 32}) {
+#endif
                 INFO("band ", band);
                 CHECK(ids_of(s, algo, false, band).rgb == ids_of(s, algo, false).rgb);
             }

@@ -140,7 +140,11 @@ void check_cameras(const std::string& name, tool::Scene s, std::initializer_list
 TEST_CASE("draw_bsp_list paints draw_bsp's bytes on the hard scenes, inside and out, culled or not, in any band") {
     for (const char* name : {"cyclic-bars", "boxes-6-10", "stacked-1-8", "grid-1-20-10", "city-1-10-10-street", "city-1-10-10-above",
                              "piercing", "soup-1-300", "dense-1-150", "mikado-1-24", "huge-4"})
+#if defined(__SANITIZE_ADDRESS__)
+        check_cameras(name, test::generated_scene(name), {0, 16, 7});  // 1-row bands (a walk per row): the plain host build
+#else
         check_cameras(name, test::generated_scene(name), {0, 16, 7, 1});
+#endif
     CHECK(g_culled > 0);  // culling was exercised
 }
 
