@@ -1,7 +1,8 @@
 // Validating a BSP blob (format.hpp) once, so the walks can trust every index: magic, version, sizes,
 // checksum, each index in range, children only forward (no cycle), the nodes in preorder from the root
-// (so every node has one parent: a tree, not a DAG), the depth as the header says and within the
-// caller's stack.
+// (so every node has one parent: a tree, not a DAG), cell labels only on empty children and one each,
+// the depth as the header says and within the caller's stack. (It cannot check that a label is true:
+// hider-bsp proved it, and the checksum guards it.)
 // Nothing is copied: the tree reads the blob in place (flash on a device).
 #pragma once
 #include <hider/bsp/format.hpp>
