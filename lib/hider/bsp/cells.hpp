@@ -44,9 +44,7 @@ inline int64_t near_reach(const View& view) {
 /// True when the eye lies more than `reach` from node n's plane: |n.(eye - o)| > 2 max|n_i| reach, as
 /// |n| < 2 max|n_i| (bsp_load() keeps |n_i| < 2^62); exact in 128 bits.
 inline bool far_from_plane(const BspTree& tree, const BspNode& n, const Vec3q16& eye, int64_t reach) {
-    const Vec3q16& o = tree.vertices[n.origin];
-    Int128 s = mul128(n.n[0], int64_t{eye.x.raw()} - o.x.raw()) + mul128(n.n[1], int64_t{eye.y.raw()} - o.y.raw()) +
-               mul128(n.n[2], int64_t{eye.z.raw()} - o.z.raw());
+    Int128 s = plane_value(tree, n, eye);
     if (s.sign() < 0) s = -s;
     int64_t m = 0;
     for (int64_t c : n.n) m = max(m, c < 0 ? -c : c);

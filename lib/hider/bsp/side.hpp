@@ -26,6 +26,14 @@ constexpr uint32_t unsigned_abs(int32_t v) { return v < 0 ? 0u - static_cast<uin
 /// 32 x 32 -> 64-bit product (one instruction where the CPU has it).
 constexpr int64_t mul32(int32_t a, int32_t b) { return int64_t{a} * b; }
 
+/// n . (p - origin) of node n's plane at point p, exact (bsp_load() keeps |n_i| < 2^62 and points within
+/// 2^31, so the three products and their sum fit 128 bits).
+inline Int128 plane_value(const BspTree& tree, const BspNode& n, const Vec3q16& p) {
+    const Vec3q16& o = tree.vertices[n.origin];
+    return mul128(n.n[0], int64_t{p.x.raw()} - o.x.raw()) + mul128(n.n[1], int64_t{p.y.raw()} - o.y.raw()) +
+           mul128(n.n[2], int64_t{p.z.raw()} - o.z.raw());
+}
+
 /// The eye's side of node n's plane: +1 front (the normal's side), -1 back, 0 in the plane. Exact. A
 /// filter first: with n = 2^27 h + r (0 <= r < 2^27) and d = eye - origin, n.d = 2^27 (h.d) + r.d where
 /// |r.d| < 3 2^27 max|d|, so when |h.d| > 3 max|d| its sign is the answer. In 32-bit arithmetic for an eye
@@ -46,9 +54,7 @@ inline int eye_side(const BspTree& tree, const BspNode& n, const Vec3q16& eye) {
         if (s > bound) return 1;
         if (s < -bound) return -1;
     }
-    const int64_t d0 = int64_t{e0} - o.x.raw(), d1 = int64_t{e1} - o.y.raw(), d2 = int64_t{e2} - o.z.raw();
-    const Int128 s = mul128(n.n[0], d0) + mul128(n.n[1], d1) + mul128(n.n[2], d2);
-    return s.sign();
+    return plane_value(tree, n, eye).sign();
 }
 
 }  // namespace detail
