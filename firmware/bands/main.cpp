@@ -10,7 +10,7 @@
 namespace {
 
 namespace scene = hider::scenes::torus_160x128;
-using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, 8, 24>;
+using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, 8, 31>;
 Sizes::Storage g;
 
 }  // namespace

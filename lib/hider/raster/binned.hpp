@@ -180,10 +180,11 @@ public:
     template <class BandDone>
     bool band(size_t b, size_t bands, int32_t y0, int32_t y1, Rgb background, BandDone& done) {
         band_ = band_view<Rgb565Format, uint16_t>(buffers_.color, buffers_.depth, buffers_.width, buffers_.height, y0, y1);
-        clear(band_, background);
+        clear_band(background);
         band_bb_ = band_bounds(band_);
         kband_.row_from = y0;
         bt_.row_end = y1;
+        count_from_ = y0 == 0 ? INT32_MIN : y0;
         next_head_ = b + 1 < bands ? &head_[b + 1] : nullptr;
         insert_prev_ = kNoTriangle;
         const uint8_t* const band_cur = cs_.cur;
@@ -205,6 +206,19 @@ public:
     }
 
 private:
+    /// clear() of the band: whole words straight to fill_words() when both buffers are word-aligned and
+    /// the band holds an even number of pixels (clear() and fill() spent about 130 instructions a band
+    /// around the store-multiples).
+    void clear_band(Rgb background) {
+        const size_t n = static_cast<size_t>(band_.width) * static_cast<size_t>(band_.rows());
+        if ((n & 1u) != 0 || ((reinterpret_cast<uintptr_t>(band_.color) | reinterpret_cast<uintptr_t>(band_.depth)) & 3u) != 0) {
+            clear(band_, background);
+            return;
+        }
+        fill_words(band_.color, n / 2, uint32_t{Rgb565Format::pack(background)} * 0x00010001u);
+        fill_words(band_.depth, n / 2, 0xFFFFFFFFu);
+    }
+
     /// A triangle of this band's list: set up in a free slot (or the spare), its rows drawn; continuing
     /// into the next band in its slot, or re-linked there when it has none.
     __attribute__((noinline)) void new_triangle(uint16_t tri) {
@@ -212,43 +226,73 @@ private:
         const ScreenVertex& a = verts_[t.v[0]];
         const ScreenVertex& b = verts_[t.v[1]];
         const ScreenVertex& c = verts_[t.v[2]];
-        continues_ = false;
+        bool continues;
         if (a.z != 0 && b.z != 0 && c.z != 0) {
-            piece(a, b, c, tri, true);
+            continues = whole(a, b, c, tri);
         } else {  // clipped pieces are set up again in every band
+            continues_ = false;
             for_each_piece(view_, mesh_, verts_, tri, [this, tri](const ScreenVertex& pa, const ScreenVertex& pb,
-                                                                 const ScreenVertex& pc) { piece(pa, pb, pc, tri, false); });
+                                                                 const ScreenVertex& pc) { piece(pa, pb, pc, tri); });
+            continues = continues_;
         }
-        if (!continues_) return;
+        if (!continues) return;
         ++out_.set_up_again;
         if (next_head_ != nullptr) insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
     }
 
-    __attribute__((always_inline)) void piece(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
-                                              uint16_t tri, bool whole) {
+    /// A whole triangle of the lists (bin_triangles() linked only those of non-zero area, not culled),
+    /// set up in a free slot or the spare; true when it continues into the next band without a slot.
+    __attribute__((always_inline)) bool whole(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                                              uint16_t tri) {
         const int32_t area = TriangleRaster::signed_area(a, b, c);
-        if (area == 0 || (opt_.cull && area > 0)) return;
-        const bool slot = whole && cs_.free_top != free_base_;
+        const bool slot = cs_.free_top != free_base_;
         KernelTriangle& kt = slot ? pool_[cs_.free_top[-1]] : spare_;
         io_.area = area;
         io_.out = &kt;
         const KernelSetup s = kernel_setup(a, b, c, io_);
-        const int32_t y0 = band_.y0, y1 = band_.y1;
         if (s == KernelSetup::kernel) {
-            const int32_t first = clamp<int32_t>(kt.top, 0, buffers_.height - 1);
-            st_.triangles_drawn += y0 <= first && first < y1;
-            if (kt.row >= kt.end) return;
-            kt.k.color = shading_.color565(mesh_, tri, area < 0);
-            kt.tri = tri;
-            run_kernel_triangle(kt, band_.depth + static_cast<ptrdiff_t>(kt.row - y0) * band_.stride, y1, bt_.target);
-            if (kt.row >= kt.end) return;
-            if (slot) *cs_.nxt++ = *--cs_.free_top;
-            else continues_ = true;
-        } else if (s == KernelSetup::generic) {  // crosses the side columns, or a steep plane
-            draw_raster<false>(a, b, c, area, tri, band_, band_bb_, false, mesh_, shading_, opt_, st_);
-            const int32_t y_max = max<int32_t>(a.y, max<int32_t>(b.y, c.y));
-            continues_ = continues_ || ((y_max - band_bb_.y_origin + kSubpixel - 1) >> kSubpixelBits) > y1;
+            if (!run_set_up(kt, tri, area)) return false;
+            if (!slot) return true;
+            *cs_.nxt++ = *--cs_.free_top;
+            return false;
         }
+        return s == KernelSetup::generic && draw_generic(a, b, c, area, tri);
+    }
+
+    /// A piece of a clipped triangle: set up in the spare, drawn; sets continues_ when it reaches the
+    /// next band.
+    __attribute__((noinline)) void piece(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint16_t tri) {
+        const int32_t area = TriangleRaster::signed_area(a, b, c);
+        if (area == 0 || (opt_.cull && area > 0)) return;
+        io_.area = area;
+        io_.out = &spare_;
+        const KernelSetup s = kernel_setup(a, b, c, io_);
+        bool continues = false;
+        if (s == KernelSetup::kernel) continues = run_set_up(spare_, tri, area);
+        else if (s == KernelSetup::generic) continues = draw_generic(a, b, c, area, tri);
+        continues_ = continues_ || continues;
+    }
+
+    /// Counts a kernel set-up as drawn in the band of its first row (clamped to the frame) and draws its
+    /// rows of this band; true when rows remain for the next band.
+    __attribute__((always_inline)) bool run_set_up(KernelTriangle& kt, uint16_t tri, int32_t area) {
+        // The set-up found a pixel centre of the band in the box, so kt.top < y1.
+        st_.triangles_drawn += kt.top >= count_from_;
+        if (kt.row >= kt.end) return false;
+        kt.k.color = shading_.color565(mesh_, tri, area < 0);
+        kt.tri = tri;
+        run_kernel_triangle(kt, band_.depth + static_cast<ptrdiff_t>(kt.row - band_.y0) * band_.stride, band_.y1,
+                            bt_.target);
+        return kt.row < kt.end;
+    }
+
+    /// A triangle the kernel set-up leaves to TriangleRaster (it crosses the side columns, or a steep
+    /// plane); true when it reaches below the band.
+    __attribute__((noinline)) bool draw_generic(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                                                int32_t area, uint16_t tri) {
+        draw_raster<false>(a, b, c, area, tri, band_, band_bb_, false, mesh_, shading_, opt_, st_);
+        const int32_t y_max = max<int32_t>(a.y, max<int32_t>(b.y, c.y));
+        return ((y_max - band_bb_.y_origin + kSubpixel - 1) >> kSubpixelBits) > band_.y1;
     }
 
     const View& view_;
@@ -272,6 +316,7 @@ private:
     BandBounds band_bb_{};
     uint16_t* next_head_ = nullptr;
     uint16_t insert_prev_ = kNoTriangle;
+    int32_t count_from_ = 0;  // a set-up counts as drawn in this band from this top row on (INT32_MIN: band 0)
     bool continues_ = false;
 };
 
