@@ -86,7 +86,7 @@ int run(const spin::Scene& s, const char* path, int32_t rows, size_t carried) {
 int main(int argc, char** argv) {
     if (argc == 2 && std::strcmp(argv[1], "160") == 0) {
         namespace sc = hider::scenes::torus_160x128;
-        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands.ppm", 8, 24);
+        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands.ppm", 6, 44);  // as firmware/bands/main.cpp
     }
     if (argc == 2 && std::strcmp(argv[1], "320") == 0) {
         namespace sc = hider::scenes::torus_320x240;

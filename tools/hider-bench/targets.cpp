@@ -257,7 +257,7 @@ int targets_command(const Args& args) {
     // Frames per second from the cycle model (ARM only): cycles lo..hi of one frame.
     std::printf("\nCycles from the plugin's cycle model (model=m0plus: exact per its manual; model=m3: a lower and an\n"
                 "upper bound, see tools/qemu-insncount/README.md for what it leaves out), one frame each: the torus\n"
-                "320x240 (spin320), the torus 160x128 (spin's frame 0), bands (160x128 in 8-row bands) and\n"
+                "320x240 (spin320), the torus 160x128 (spin's frame 0), bands (160x128 in 6-row bands) and\n"
                 "bands320; frames per second at 48 MHz (Cortex-M0+) and 72 MHz (Cortex-M3). Estimates for\n"
                 "zero wait-state memory: flash wait states (a real part at these clocks has them) lower them.\n\n");
     std::printf("| target | torus 320x240 cycles | fps | torus 160x128 cycles | fps | bands cycles | fps "
@@ -284,7 +284,7 @@ int targets_command(const Args& args) {
 
     // The band renderer against the full frame.
     std::printf("\nBand renderer (draw_zbuffer_binned, 16 KB machines) against the full frame on the same chip: bands\n"
-                "(160x128 in 8-row bands, 31 carried slots) against spin's frame 0, bands320 (320x240 in 3-row\n"
+                "(160x128 in 6-row bands, 44 carried slots) against spin's frame 0, bands320 (320x240 in 3-row\n"
                 "bands, 43 slots) against spin320. Each band's region excludes the display sink.\n\n");
     std::printf("| target | bands instr | spin frame 0 | ratio | bands320 instr | spin320 | ratio |\n");
     std::printf("|---|---:|---:|---:|---:|---:|---:|\n");

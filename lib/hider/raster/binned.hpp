@@ -221,7 +221,12 @@ private:
 
     /// A triangle of this band's list: set up in a free slot (or the spare), its rows drawn; continuing
     /// into the next band in its slot, or re-linked there when it has none.
-    __attribute__((noinline)) void new_triangle(uint16_t tri) {
+#if defined(__ARM_ARCH_6M__)
+    __attribute__((noinline))  // Thumb-1's low registers cannot hold the band loop's values and this one's
+#else
+    __attribute__((always_inline))  // in the band loop: no call, no registers saved per triangle
+#endif
+    void new_triangle(uint16_t tri) {
         const Tri& t = mesh_.tris[tri];
         const ScreenVertex& a = verts_[t.v[0]];
         const ScreenVertex& b = verts_[t.v[1]];
