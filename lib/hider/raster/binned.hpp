@@ -77,6 +77,21 @@ __attribute__((noinline)) void for_each_piece(const View& view, const Mesh& mesh
     for_each_clipped(view, mesh, verts, t, counted, piece);
 }
 
+/// x and y of a vertex; on ARMv6-M from one 32-bit load (x is the low half): Thumb-1 has no
+/// immediate-offset signed halfword load, and two of them cost four instructions. Elsewhere the
+/// halfword loads are cheaper than the load and two extensions.
+struct ScreenXY {
+    int32_t x, y;
+};
+__attribute__((always_inline)) inline ScreenXY screen_xy(const ScreenVertex& v) {
+#if defined(__ARM_ARCH_6M__)
+    const uint32_t w = *reinterpret_cast<const AliasWord*>(&v);  // ScreenVertex is word-aligned
+    return {static_cast<int16_t>(w), static_cast<int32_t>(w) >> 16};
+#else
+    return {v.x, v.y};
+#endif
+}
+
 /// Links every drawable triangle of the mesh (non-zero area, not culled) into the list of the band
 /// holding its first row, back to front so each list runs in mesh order; counts culled, clipped and outside triangles as draw_zbuffer()
 /// does on a whole frame. band_scale = ceil(2^20 / rows): band = first row * band_scale >> 20, exact for
@@ -84,27 +99,30 @@ __attribute__((noinline)) void for_each_piece(const View& view, const Mesh& mesh
 __attribute__((noinline)) inline void bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
                                                     const BandBounds& bb, int32_t height, uint32_t band_scale, uint16_t* next,
                                                     uint16_t* head, FrameStats& st) {
-    const Tri* const tris = mesh.tris.data();
     const ScreenVertex* const vp = verts.data();
     // first_row_in_frame() with the rounding folded into the origin: rows from (y - y_lift) >> 4, y_lift
     // = y_origin - 15.
     const int32_t y_lift = bb.y_origin - (kSubpixel - 1), last = height - 1;
+    // Culled: area > cull_above (0 when culling, else above every area).
+    const int32_t cull_above = cull ? 0 : INT32_MAX;
     uint32_t culled = 0;
-    for (size_t i = mesh.tris.size(); i-- > 0;) {
-        const Tri& tri = tris[i];
-        const ScreenVertex& a = vp[tri.v[0]];
-        const ScreenVertex& b = vp[tri.v[1]];
-        const ScreenVertex& c = vp[tri.v[2]];
+    const Tri* tri = mesh.tris.data() + mesh.tris.size();
+    for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); i-- > 0;) {
+        --tri;
+        const ScreenVertex& a = vp[tri->v[0]];
+        const ScreenVertex& b = vp[tri->v[1]];
+        const ScreenVertex& c = vp[tri->v[2]];
         int32_t first;
         if (a.z != 0 && b.z != 0 && c.z != 0) {
-            const int32_t area = TriangleRaster::signed_area(a, b, c);
+            const ScreenXY pa = screen_xy(a), pb = screen_xy(b), pc = screen_xy(c);
+            const int32_t area = (pb.x - pa.x) * (pc.y - pa.y) - (pc.x - pa.x) * (pb.y - pa.y);  // signed_area()
             if (area == 0) continue;
-            if (cull && area > 0) {
+            if (area > cull_above) {
                 ++culled;
                 continue;
             }
             // A box without a pixel centre of the frame is binned too: its set-up finds nothing to draw.
-            first = clamp((min<int32_t>(a.y, min<int32_t>(b.y, c.y)) - y_lift) >> kSubpixelBits, int32_t{0}, last);
+            first = clamp((min(pa.y, min(pb.y, pc.y)) - y_lift) >> kSubpixelBits, int32_t{0}, last);
         } else {
             first = first_row_clipped(view, mesh, verts, i, cull, bb, height, st);
             if (first == height) continue;
@@ -133,19 +151,27 @@ struct KernelBandTarget {
     int32_t row_end;
 };
 
+/// The mesh triangle of the first carried set-up still to resume this band (kNoTriangle: none).
+inline uint32_t pending_carried(const CarriedSlots& cs) { return cs.cur != cs.cur_end ? cs.pool[*cs.cur].tri : kNoTriangle; }
+
 /// Resumes the carried set-ups whose triangle comes before `limit`: draws their rows of the band (each
 /// is on the band's first row) and moves each to the next band's slots or back to the free ones.
-/// Out of line with few live values, so GCC keeps the loop in registers.
-__attribute__((noinline)) inline void resume_carried(CarriedSlots& cs, uint16_t limit, const KernelBandTarget& bt) {
+/// Returns pending_carried() after them. Out of line with few live values, so GCC keeps the loop in
+/// registers.
+__attribute__((noinline)) inline uint32_t resume_carried(CarriedSlots& cs, uint32_t limit, const KernelBandTarget& bt) {
     KernelTriangle* const pool = cs.pool;
     const uint8_t* cur = cs.cur;
     const uint8_t* const end = cs.cur_end;
     uint8_t* nxt = cs.nxt;
     uint8_t* free_top = cs.free_top;
+    uint32_t pending = kNoTriangle;
     for (; cur != end; ++cur) {
         const uint8_t s = *cur;
         KernelTriangle& kt = pool[s];
-        if (kt.tri >= limit) break;
+        if (kt.tri >= limit) {
+            pending = kt.tri;
+            break;
+        }
         run_kernel_triangle(kt, bt.zrow, bt.row_end, bt.target);
         if (kt.row < kt.end) *nxt++ = s;
         else *free_top++ = s;
@@ -153,6 +179,7 @@ __attribute__((noinline)) inline void resume_carried(CarriedSlots& cs, uint16_t 
     cs.cur = cur;
     cs.nxt = nxt;
     cs.free_top = free_top;
+    return pending;
 }
 
 /// The bands of draw_zbuffer_binned() for flat RGB565 over 16-bit depth: kernel set-ups carried in
@@ -189,11 +216,11 @@ public:
         insert_prev_ = kNoTriangle;
         const uint8_t* const band_cur = cs_.cur;
         uint8_t* const band_nxt = cs_.nxt;
-        for (uint16_t t = head_[b];;) {
-            if (cs_.cur != cs_.cur_end && pool_[*cs_.cur].tri < t)
-                resume_carried(cs_, t, bt_);  // the carried triangles before t, in mesh order
+        uint32_t pending = pending_carried(cs_);
+        for (uint32_t t = head_[b];;) {
+            if (pending < t) pending = resume_carried(cs_, t, bt_);  // the carried triangles before t, in mesh order
             if (t == kNoTriangle) break;
-            const uint16_t tri = t;
+            const uint16_t tri = static_cast<uint16_t>(t);
             t = next_[t];
             new_triangle(tri);
         }
