@@ -9,6 +9,9 @@
 // - kernelcheck::kDrawCases random small scenes (draw_cases.hpp) through draw_flat_kernel() with and
 //   without the assembly draw loop (Thumb-1 on ARMv6-M, Thumb-2 on ARMv7-M; on RV32 both are the C++
 //   loop): same frame and counts.
+// - kernelcheck::kBandCases random small scenes (band_cases.hpp) through the band renderer with and
+//   without the assembly band loop (Thumb-2 on ARMv7-M; elsewhere both are the C++ loop), in bands of 1
+//   to 6 rows with 0 to 5 carried slots: same bands and counts.
 // - The frame clear (detail::fill, store-multiples on Cortex-M) against a plain loop for every length up
 //   to kFillMax.
 // The chip's digests go to kernelcheck.bin, which the host twin writes from the portable code (ctest
@@ -16,6 +19,7 @@
 #include "common/bench.hpp"
 #include "kernelcheck/cases.hpp"
 #include "kernelcheck/setup_cases.hpp"
+#include "kernelcheck/band_cases.hpp"
 #include "kernelcheck/draw_cases.hpp"
 #include "kernelcheck/vertex_cases.hpp"
 #include "semihost/semihost.hpp"
@@ -23,7 +27,8 @@
 namespace {
 
 constexpr int kDrawAt = kernelcheck::kCases + kernelcheck::kSetupCases + kernelcheck::kVertexCases;
-constexpr int kWords = kDrawAt + kernelcheck::kDrawCases + 1;  // the last word: the fill digest
+constexpr int kBandAt = kDrawAt + kernelcheck::kDrawCases;
+constexpr int kWords = kBandAt + kernelcheck::kBandCases + 1;  // the last word: the fill digest
 kernelcheck::Buffers g_buffers;
 uint32_t g_digests[kWords];
 
@@ -111,6 +116,24 @@ int main() {
         sh::print("\n");
         return 1;
     }
+    const int band_case = kernelcheck::run_band_cases(
+        [](const hider::View& v, const hider::Mesh& m, const hider::ScreenVertex* verts, kernelcheck::BandSetup& s,
+           auto& done, hider::BinnedStats& bs) {
+            return hider::detail::draw_binned<true>(v, m, {verts, kernelcheck::kVertexBatch}, s.buffers, s.opt, {1, 2, 3},
+                                                    s.scratch, done, &bs);
+        },
+        [](const hider::View& v, const hider::Mesh& m, const hider::ScreenVertex* verts, kernelcheck::BandSetup& s,
+           auto& done, hider::BinnedStats& bs) {
+            return hider::detail::draw_binned<false>(v, m, {verts, kernelcheck::kVertexBatch}, s.buffers, s.opt, {1, 2, 3},
+                                                     s.scratch, done, &bs);
+        },
+        g_buffers, g_digests + kBandAt);
+    if (band_case >= 0) {
+        sh::print("kernelcheck: the band loop differs from the C++ loop in case ");
+        sh::print_u32(static_cast<uint32_t>(band_case));
+        sh::print("\n");
+        return 1;
+    }
     g_digests[kWords - 1] = kernelcheck::fill_digest(
         [](uint16_t* p, uint32_t n, uint16_t v) { hider::detail::fill<uint16_t>(p, n, v); }, g_buffers);
     if (g_digests[kWords - 1] != kernelcheck::fill_digest(kernelcheck::fill_plain, g_buffers)) {
@@ -129,7 +152,9 @@ int main() {
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kVertexCases * kernelcheck::kVertexBatch));
     sh::print(" positions the per-position path, ");
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kDrawCases));
-    sh::print(" scenes the C++ draw loop");
+    sh::print(" scenes the C++ draw loop, ");
+    sh::print_u32(static_cast<uint32_t>(kernelcheck::kBandCases));
+    sh::print(" banded scenes the C++ band loop");
 #if defined(__ARM_ARCH_6M__)
     sh::print(" (the Thumb-1 loop projected ");
     sh::print_u32(accepted);

@@ -1,7 +1,9 @@
 // Host twin of the kernelcheck firmware: writes kernelcheck.bin (one digest per kernel case, cases.hpp,
-// per set-up case, setup_cases.hpp, per vertex case, vertex_cases.hpp, and per scene, draw_cases.hpp,
-// then the fill digest) from the portable kernel, the portable set-up, the per-position projection, the
-// C++ draw loop and a plain fill loop, as the reference for the kernelcheck.matches_host ctest.
+// per set-up case, setup_cases.hpp, per vertex case, vertex_cases.hpp, per scene, draw_cases.hpp, and per
+// banded scene, band_cases.hpp, then the fill digest) from the portable kernel, the portable set-up, the
+// per-position projection, the C++ draw and band loops and a plain fill loop, as the reference for the
+// kernelcheck.matches_host ctest.
+#include "kernelcheck/band_cases.hpp"
 #include "kernelcheck/cases.hpp"
 #include "kernelcheck/setup_cases.hpp"
 #include "kernelcheck/draw_cases.hpp"
@@ -11,7 +13,8 @@
 int main() {
     static kernelcheck::Buffers buffers;
     constexpr int kDrawAt = kernelcheck::kCases + kernelcheck::kSetupCases + kernelcheck::kVertexCases;
-    static uint32_t digests[kDrawAt + kernelcheck::kDrawCases + 1];
+    constexpr int kBandAt = kDrawAt + kernelcheck::kDrawCases;
+    static uint32_t digests[kBandAt + kernelcheck::kBandCases + 1];
     auto kernel = [](hider::KernelTriangle& t, uint16_t* zrow, int32_t stop, const hider::KernelTarget& target) {
         return hider::run_kernel_triangle_portable(t, zrow, stop, target);
     };
@@ -28,6 +31,12 @@ int main() {
         hider::detail::draw_flat_kernel<hider::Rgb565Format, false>(v, m, {verts, kernelcheck::kVertexBatch}, f, o, st);
     };
     if (kernelcheck::run_draw_cases(draw, draw, buffers, digests + kDrawAt) >= 0) return 1;
-    digests[kDrawAt + kernelcheck::kDrawCases] = kernelcheck::fill_digest(kernelcheck::fill_plain, buffers);
+    auto band = [](const hider::View& v, const hider::Mesh& m, const hider::ScreenVertex* verts, kernelcheck::BandSetup& s,
+                   auto& done, hider::BinnedStats& bs) {
+        return hider::detail::draw_binned<false>(v, m, {verts, kernelcheck::kVertexBatch}, s.buffers, s.opt, {1, 2, 3},
+                                                 s.scratch, done, &bs);
+    };
+    if (kernelcheck::run_band_cases(band, band, buffers, digests + kBandAt) >= 0) return 1;
+    digests[kBandAt + kernelcheck::kBandCases] = kernelcheck::fill_digest(kernelcheck::fill_plain, buffers);
     return host::write_file("kernelcheck.bin", digests, sizeof digests) ? 0 : 1;
 }

@@ -8,6 +8,7 @@
 // the next band's list and set up there again. Triangles are drawn in mesh order in every band, as
 // draw_zbuffer() draws them, so the frame is byte for byte the full-frame one.
 #pragma once
+#include <hider/raster/band_loop_asm.hpp>
 #include <hider/raster/zbuffer.hpp>
 
 namespace hider {
@@ -49,21 +50,32 @@ inline uint16_t insert_sorted(uint16_t* next, uint16_t& head, uint16_t prev, uin
     return t;
 }
 
+/// What binning a clipped triangle needs, behind one pointer so that the binning loop keeps its own
+/// values in registers.
+struct ClippedBinning {
+    const View& view;
+    const Mesh& mesh;
+    Span<const ScreenVertex> verts;
+    bool cull;
+    const BandBounds& bb;
+    int32_t height;
+    FrameStats& st;
+};
+
 /// First row of the drawable pieces of clipped triangle t (height if none); counts its culled pieces,
 /// and it as clipped or outside. Out of line: the clipped polygon's 200 bytes stay off the binning
 /// loop's stack frame.
-__attribute__((noinline)) inline int32_t first_row_clipped(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
-                                                           size_t t, bool cull, const BandBounds& bb, int32_t height,
-                                                           FrameStats& st) {
-    int32_t first = height;
-    for_each_clipped(view, mesh, verts, t, st, [&](const ScreenVertex& pa, const ScreenVertex& pb, const ScreenVertex& pc) {
+__attribute__((noinline)) inline int32_t first_row_clipped(const ClippedBinning& cb, size_t t) {
+    int32_t first = cb.height;
+    for_each_clipped(cb.view, cb.mesh, cb.verts, t, cb.st, [&](const ScreenVertex& pa, const ScreenVertex& pb,
+                                                               const ScreenVertex& pc) {
         const int32_t area = TriangleRaster::signed_area(pa, pb, pc);
         if (area == 0) return;
-        if (cull && area > 0) {
-            ++st.triangles_culled;
+        if (cb.cull && area > 0) {
+            ++cb.st.triangles_culled;
             return;
         }
-        first = min(first, first_row_in_frame(min<int32_t>(pa.y, min<int32_t>(pb.y, pc.y)), bb, height));
+        first = min(first, first_row_in_frame(min<int32_t>(pa.y, min<int32_t>(pb.y, pc.y)), cb.bb, cb.height));
     });
     return first;
 }
@@ -106,8 +118,10 @@ __attribute__((noinline)) inline void bin_triangles(const View& view, const Mesh
     // Culled: area > cull_above (0 when culling, else above every area).
     const int32_t cull_above = cull ? 0 : INT32_MAX;
     uint32_t culled = 0;
+    const ClippedBinning clipped{view, mesh, verts, cull, bb, height, st};
     const Tri* tri = mesh.tris.data() + mesh.tris.size();
-    for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); i-- > 0;) {
+    for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); i != 0;) {
+        --i;
         --tri;
         const ScreenVertex& a = vp[tri->v[0]];
         const ScreenVertex& b = vp[tri->v[1]];
@@ -124,8 +138,8 @@ __attribute__((noinline)) inline void bin_triangles(const View& view, const Mesh
             // A box without a pixel centre of the frame is binned too: its set-up finds nothing to draw.
             first = clamp((min(pa.y, min(pb.y, pc.y)) - y_lift) >> kSubpixelBits, int32_t{0}, last);
         } else {
-            first = first_row_clipped(view, mesh, verts, i, cull, bb, height, st);
-            if (first == height) continue;
+            first = first_row_clipped(clipped, i);
+            if (first > last) continue;
         }
         const uint32_t band = (static_cast<uint32_t>(first) * band_scale) >> 20;
         next[i] = head[band];
@@ -184,7 +198,10 @@ __attribute__((noinline)) inline uint32_t resume_carried(CarriedSlots& cs, uint3
 
 /// The bands of draw_zbuffer_binned() for flat RGB565 over 16-bit depth: kernel set-ups carried in
 /// slots. A class rather than lambdas: the per-triangle code reaches the band's state through `this`
-/// (GCC rebuilt a closure of sixteen references per triangle).
+/// (GCC rebuilt a closure of sixteen references per triangle). kAsmLoop: on ARMv7-M, runs of listed
+/// triangles go through draw_band_v7m() (headlight shading with normals); false keeps it out (the
+/// kernelcheck firmware compares both).
+template <bool kAsmLoop>
 class KernelBands {
 public:
     KernelBands(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
@@ -201,6 +218,23 @@ public:
         const uint8_t capacity = static_cast<uint8_t>(scratch.carried.size());
         for (uint8_t k = 0; k < capacity; ++k) free_base_[k] = k;
         cs_ = {pool_, scratch.slots.data(), scratch.slots.data(), scratch.slots.data() + capacity, free_base_ + capacity};
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+        use_asm_ = kAsmLoop && opt.shade == Shade::headlight && !mesh.normals.empty();
+        loop_.tris = mesh.tris.data();
+        loop_.verts = verts.data();
+        loop_.next = next_;
+        loop_.io = &io_;
+        loop_.normals_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(mesh.normals.data()) -
+                                                     reinterpret_cast<uintptr_t>(mesh.tris.data()));
+        for (int j = 0; j < 3; ++j) loop_.view_z[j] = shading_.view_z(j);
+        loop_.base_r = opt.base.r;
+        loop_.base_g = opt.base.g;
+        loop_.base_b = opt.base.b;
+        loop_.stride_bytes = kband_.stride_bytes;
+        loop_.target = &bt_.target;
+        loop_.pool = pool_;
+        loop_.free_base = free_base_;
+#endif
     }
 
     /// Draws band b (rows [y0, y1)) after clearing it; false when done() refuses it.
@@ -216,13 +250,39 @@ public:
         insert_prev_ = kNoTriangle;
         const uint8_t* const band_cur = cs_.cur;
         uint8_t* const band_nxt = cs_.nxt;
-        uint32_t pending = pending_carried(cs_);
-        for (uint32_t t = head_[b];;) {
-            if (pending < t) pending = resume_carried(cs_, t, bt_);  // the carried triangles before t, in mesh order
-            if (t == kNoTriangle) break;
-            const uint16_t tri = static_cast<uint16_t>(t);
-            t = next_[t];
-            new_triangle(tri);
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+        if (use_asm_) {  // the band in assembly but for the listed triangles it hands back
+            loop_.depth = band_.depth;
+            loop_.y0 = y0;
+            loop_.y1 = y1;
+            loop_.count_from = count_from_;
+            loop_.drawn = 0;
+            loop_.cur = cs_.cur;
+            loop_.cur_end = cs_.cur_end;
+            for (uint32_t t = head_[b];;) {
+                loop_.free_top = cs_.free_top;
+                loop_.nxt = cs_.nxt;
+                t = draw_band_v7m(t, &loop_);
+                cs_.free_top = loop_.free_top;
+                cs_.nxt = loop_.nxt;
+                if (t == kNoTriangle) break;
+                const uint16_t tri = static_cast<uint16_t>(t);
+                t = next_[t];
+                new_triangle(tri);
+            }
+            cs_.cur = loop_.cur;
+            st_.triangles_drawn += loop_.drawn;
+        } else
+#endif
+        {
+            uint32_t pending = pending_carried(cs_);
+            for (uint32_t t = head_[b];;) {
+                if (pending < t) pending = resume_carried(cs_, t, bt_);  // the carried triangles before t, in mesh order
+                if (t == kNoTriangle) break;
+                const uint16_t tri = static_cast<uint16_t>(t);
+                t = next_[t];
+                new_triangle(tri);
+            }
         }
         out_.carried += static_cast<uint32_t>(cs_.cur - band_cur);
         out_.carried_high_water = max<uint32_t>(out_.carried_high_water, static_cast<uint32_t>(cs_.nxt - band_nxt));
@@ -350,6 +410,10 @@ private:
     uint16_t insert_prev_ = kNoTriangle;
     int32_t count_from_ = 0;  // a set-up counts as drawn in this band from this top row on (INT32_MIN: band 0)
     bool continues_ = false;
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    bool use_asm_ = false;
+    BandLoopArm loop_{};
+#endif
 };
 
 /// The bands of draw_zbuffer_binned() for any other format or shading: each band sets up its triangles
@@ -392,6 +456,46 @@ void draw_bands_generic(const View& view, const Mesh& mesh, Span<const ScreenVer
         }
     }
 }
+
+/// draw_zbuffer_binned(); kAsmLoop false keeps the assembly band loop out (kernelcheck compares both).
+template <bool kAsmLoop, class Format, class Depth, class BandDone>
+FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, const FrameView<Format, Depth>& buffers,
+                       const DrawOptions& opt, Rgb background, BinnedScratch& scratch, BandDone& done, BinnedStats* bs) {
+    FrameStats st;
+    const int32_t rows = buffers.y1, height = buffers.height;
+    const size_t tri_count = mesh.tris.size();
+    const size_t bands = buffers.valid() ? static_cast<size_t>((height + rows - 1) / rows) : 0;
+    if (!buffers.valid() || buffers.y0 != 0 || buffers.depth == nullptr || buffers.width != view.width ||
+        height != view.height || verts.size() < mesh.positions.size() || tri_count > kNoTriangle ||
+        scratch.next.size() < tri_count || scratch.head.size() < bands || scratch.carried.size() > 255 ||
+        scratch.slots.size() < 3 * scratch.carried.size()) {
+        st.status = Status::invalid_argument;
+        return st;
+    }
+    for (size_t b = 0; b < bands; ++b) scratch.head[b] = kNoTriangle;
+    st.triangles_in = static_cast<uint32_t>(tri_count);
+    const BandBounds bb = band_bounds(band_view<Format, Depth>(nullptr, nullptr, buffers.width, height, 0, height));
+    const uint32_t band_scale = ((uint32_t{1} << 20) + static_cast<uint32_t>(rows) - 1) / static_cast<uint32_t>(rows);
+    bin_triangles(view, mesh, verts, opt.cull, bb, height, band_scale, scratch.next.data(), scratch.head.data(), st);
+    BinnedStats local;
+    BinnedStats& out = bs != nullptr ? *bs : local;
+    if constexpr (is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2) {
+        if (opt.shade != Shade::depth) {
+            KernelBands<kAsmLoop> kb(view, mesh, verts, buffers, opt, scratch, out, st);
+            for (size_t b = 0; b < bands; ++b) {
+                const int32_t y0 = static_cast<int32_t>(b) * rows;
+                if (!kb.band(b, bands, y0, min(height, y0 + rows), background, done)) {
+                    st.status = Status::invalid_argument;
+                    break;
+                }
+            }
+            return st;
+        }
+    }
+    draw_bands_generic(view, mesh, verts, buffers, opt, background, scratch, done, out, st);
+    return st;
+}
+
 }  // namespace detail
 
 /// Draws `mesh` band by band: for each band of `buffers.y1` rows (buffers: a view of rows [0, y1) whose
@@ -405,39 +509,7 @@ template <class Format, class Depth, class BandDone>
 FrameStats draw_zbuffer_binned(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
                                const FrameView<Format, Depth>& buffers, const DrawOptions& opt, Rgb background,
                                BinnedScratch& scratch, BandDone&& done, BinnedStats* bs = nullptr) {
-    FrameStats st;
-    const int32_t rows = buffers.y1, height = buffers.height;
-    const size_t tri_count = mesh.tris.size();
-    const size_t bands = buffers.valid() ? static_cast<size_t>((height + rows - 1) / rows) : 0;
-    if (!buffers.valid() || buffers.y0 != 0 || buffers.depth == nullptr || buffers.width != view.width ||
-        height != view.height || verts.size() < mesh.positions.size() || tri_count > detail::kNoTriangle ||
-        scratch.next.size() < tri_count || scratch.head.size() < bands || scratch.carried.size() > 255 ||
-        scratch.slots.size() < 3 * scratch.carried.size()) {
-        st.status = Status::invalid_argument;
-        return st;
-    }
-    for (size_t b = 0; b < bands; ++b) scratch.head[b] = detail::kNoTriangle;
-    st.triangles_in = static_cast<uint32_t>(tri_count);
-    const BandBounds bb = band_bounds(band_view<Format, Depth>(nullptr, nullptr, buffers.width, height, 0, height));
-    const uint32_t band_scale = ((uint32_t{1} << 20) + static_cast<uint32_t>(rows) - 1) / static_cast<uint32_t>(rows);
-    detail::bin_triangles(view, mesh, verts, opt.cull, bb, height, band_scale, scratch.next.data(), scratch.head.data(), st);
-    BinnedStats local;
-    BinnedStats& out = bs != nullptr ? *bs : local;
-    if constexpr (detail::is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2) {
-        if (opt.shade != Shade::depth) {
-            detail::KernelBands kb(view, mesh, verts, buffers, opt, scratch, out, st);
-            for (size_t b = 0; b < bands; ++b) {
-                const int32_t y0 = static_cast<int32_t>(b) * rows;
-                if (!kb.band(b, bands, y0, min(height, y0 + rows), background, done)) {
-                    st.status = Status::invalid_argument;
-                    break;
-                }
-            }
-            return st;
-        }
-    }
-    detail::draw_bands_generic(view, mesh, verts, buffers, opt, background, scratch, done, out, st);
-    return st;
+    return detail::draw_binned<true>(view, mesh, verts, buffers, opt, background, scratch, done, bs);
 }
 
 }  // namespace hider

@@ -1,0 +1,89 @@
+// Random small scenes drawn band by band, shared by the kernelcheck firmware and its host twin: each case
+// is a draw case (draw_cases.hpp: a frame up to 24 x 24, 40 random triangles, some clipped, a quarter of
+// them repeating an earlier one so that depths tie) rendered by
+// the band renderer (binned.hpp), culled or not, in bands of 1 to 6 rows with 0 to 5 carried slots, so set-ups are
+// carried, resumed, refused a slot and set up again. run_band_cases() draws each case through `draw`
+// (on ARMv7-M with the assembly band loop) and `twin` (the C++ loop) and folds every band's colour and
+// depth, the frame's statistics and the carried-slot figures into one digest per case.
+#pragma once
+#include <hider/raster/binned.hpp>
+
+#include "kernelcheck/draw_cases.hpp"
+
+namespace kernelcheck {
+
+constexpr int kBandCases = 100;
+constexpr uint32_t kBandSeed = 0x2545F491u;
+constexpr int32_t kMaxBandRows = 6;
+constexpr size_t kMaxSlots = 5;
+
+/// What a band draw needs besides the scene: the frame's first `rows` rows of b as the band buffer.
+struct BandSetup {
+    hider::FrameView<hider::Rgb565Format, uint16_t> buffers;
+    hider::DrawOptions opt;
+    hider::BinnedScratch scratch;
+};
+
+/// Draws every case through `draw` and `twin` (functions of (view, mesh, verts, setup, done, binned
+/// stats) returning the FrameStats), digests into out[kBandCases]; returns the first case whose digests
+/// differ, or -1.
+template <class Draw, class Twin>
+int run_band_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
+    static_assert(24 * kMaxBandRows <= kMaxRows * kWidth, "the largest band fits the buffers");
+    Rng rng{kBandSeed};
+    int first_difference = -1;
+    static DrawCase c;
+    static hider::ScreenVertex verts[kVertexBatch];
+    static uint16_t next[kDrawTriangles];
+    static uint16_t head[24];
+    static hider::KernelTriangle carried[kMaxSlots];
+    static uint8_t slots[3 * kMaxSlots];
+    for (int i = 0; i < kBandCases; ++i) {
+        make_draw_case(rng, c);
+        // A quarter of the triangles repeat an earlier one (another normal, so another colour): depths tie,
+        // and the first in mesh order must win in every band, carried or not.
+        for (int k = 0; k < kDrawTriangles / 4; ++k) {
+            const uint32_t to = 1 + rng.next() % (kDrawTriangles - 1);
+            c.tris[to] = c.tris[rng.next() % to];
+        }
+        c.cull = (rng.next() & 1u) != 0;  // half of them draw back faces too
+        (void)hider::project_vertices(c.view, {c.p, kVertexBatch}, {verts, kVertexBatch});
+        hider::Mesh mesh;
+        mesh.positions = {c.p, kVertexBatch};
+        mesh.tris = {c.tris, kDrawTriangles};
+        mesh.normals = {c.normals, kDrawTriangles};
+        const int32_t rows = rng.range(1, kMaxBandRows);
+        const size_t slot_count = rng.next() % (kMaxSlots + 1);
+        BandSetup s;
+        s.buffers = hider::band_view<hider::Rgb565Format, uint16_t>(b.color, b.depth, c.view.width, c.view.height, 0,
+                                                                     hider::min(rows, c.view.height));
+        s.opt.cull = c.cull;
+        s.opt.base = {static_cast<uint8_t>(rng.next()), static_cast<uint8_t>(rng.next()), static_cast<uint8_t>(rng.next())};
+        s.scratch = {{next, kDrawTriangles}, {head, 24}, {carried, slot_count}, {slots, 3 * slot_count}};
+        uint32_t digests[2];
+        for (int pass = 0; pass < 2; ++pass) {
+            uint32_t h = 2166136261u;
+            auto add = [&h](uint32_t x) {
+                for (int k = 0; k < 4; ++k) { h ^= (x >> (8 * k)) & 0xFFu; h *= 16777619u; }
+            };
+            auto done = [&](const hider::FrameView<hider::Rgb565Format, uint16_t>& band) {
+                add(static_cast<uint32_t>(band.y0));
+                const uint32_t n = static_cast<uint32_t>(band.width * band.rows());
+                for (uint32_t k = 0; k < n; ++k) add(band.color[k] | (uint32_t{band.depth[k]} << 16));
+                return true;
+            };
+            hider::BinnedStats bs;
+            const hider::FrameStats st = pass == 0 ? draw(c.view, mesh, verts, s, done, bs) : twin(c.view, mesh, verts, s, done, bs);
+            const uint32_t counts[] = {static_cast<uint32_t>(st.status), st.triangles_in, st.triangles_drawn,
+                                       st.triangles_culled, st.triangles_clipped, st.triangles_outside,
+                                       bs.carried, bs.set_up_again, bs.carried_high_water};
+            for (uint32_t x : counts) add(x);
+            digests[pass] = h;
+        }
+        out[i] = digests[0];
+        if (digests[1] != digests[0] && first_difference < 0) first_difference = i;
+    }
+    return first_difference;
+}
+
+}  // namespace kernelcheck

@@ -1,0 +1,252 @@
+// The band renderer's loop over one band (binned.hpp) in Thumb-2 for ARMv7-M, merging in mesh order the
+// triangles carried over from the band above (their rows of this band, then their slot to the next band
+// or back to the free ones) with the band's list (per triangle the kernel set-up into a free slot, the
+// headlight colour and the rows of the band; the slot goes to the next band when rows remain). GCC kept
+// the band's state in memory and spent about 150 instructions around the two calls of a listed triangle
+// and 65 around a resumed one's; here the list, the vertices and the slot stay in registers. Triangles
+// with a vertex outside a clip plane, those without a free slot and those the set-up calls generic go
+// back to the C++ loop, which does exactly what it did before.
+// firmware/kernelcheck draws random meshes in bands both ways and compares the frames and statistics.
+#pragma once
+#include <hider/mesh.hpp>
+#include <hider/raster/kernel_triangle.hpp>
+
+namespace hider {
+
+namespace detail {
+/// Constants and in/out values of the band list loop (the layout is its contract).
+struct BandLoopArm {
+    const Tri* tris;                  ///< 0
+    const ScreenVertex* verts;        ///< 4
+    const uint16_t* next;             ///< 8: the band lists (binned.hpp)
+    KernelSetupIo* io;                ///< 12 (io->out is set to the slot's record per triangle)
+    intptr_t normals_offset;          ///< 16: bytes from a Tri to its Normal14 (both 6 bytes)
+    int32_t view_z[3];                ///< 20, 24, 28
+    uint32_t base_r, base_g, base_b;  ///< 32, 36, 40
+    uint16_t* depth;                  ///< 44: the band's first depth row
+    int32_t y0;                       ///< 48: the band's first row
+    int32_t stride_bytes;             ///< 52
+    int32_t y1;                       ///< 56: the row after the band
+    const KernelTarget* target;       ///< 60
+    KernelTriangle* pool;             ///< 64: the carried slots
+    const uint8_t* free_base;         ///< 68: the free-slot stack's bottom
+    uint8_t* free_top;                ///< 72, in and out
+    uint8_t* nxt;                     ///< 76, in and out: the next band's slots
+    int32_t count_from;               ///< 80: a set-up counts as drawn from this top row on
+    uint32_t drawn;                   ///< 84, counted up
+    const uint8_t* cur;               ///< 88, in and out: this band's carried slots still to resume
+    const uint8_t* cur_end;           ///< 92
+};
+static_assert(sizeof(void*) != 4 || (offsetof(BandLoopArm, view_z) == 20 && offsetof(BandLoopArm, target) == 60 &&
+                                     offsetof(BandLoopArm, drawn) == 84 && offsetof(BandLoopArm, cur_end) == 92),
+              "band loop layout");
+static_assert(sizeof(Tri) == 6 && sizeof(Normal14) == 6, "a triangle's normal sits a fixed offset from it");
+static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records are 96 bytes");
+}  // namespace detail
+
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+/// Draws the band from listed triangle t on (following d->next), resuming every carried set-up from
+/// d->cur whose triangle comes before the next listed one; returns kNoTriangle when the list and the
+/// carried set-ups are done, else a listed triangle it hands back (a vertex outside a clip plane, no free
+/// slot, a generic set-up), the carried ones before it resumed. Every listed triangle has a non-zero
+/// area and is not culled (bin_triangles()). Registers: r4 the listed triangle, r5 d, r6 the next carried
+/// triangle (0xFFFF: none; a resumed record while resuming), r7 the vertices, r8 the triangles, r9
+/// d->io, r10 the area (the slot order pointer while resuming), r11 the slot's record (its slot while
+/// resuming); on the stack the three vertex pointers.
+__attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "push   {r4-r11, lr}\n\t"
+        "sub    sp, #12\n\t"
+        "mov    r4, r0\n\t"
+        "mov    r5, r1\n\t"
+        "ldr    r8, [r5, #0]\n\t"
+        "ldr    r7, [r5, #4]\n\t"
+        "ldr    r9, [r5, #12]\n\t"
+        "movw   r6, #0xFFFF\n\t"
+        "ldr    r0, [r5, #88]\n\t"
+        "ldr    r1, [r5, #92]\n\t"
+        "cmp    r0, r1\n\t"
+        "beq    1f\n\t"                         // nothing carried
+        "ldrb   r0, [r0]\n\t"
+        "ldr    r1, [r5, #64]\n\t"
+        "add    r0, r0, r0, lsl #1\n\t"
+        "add    r0, r1, r0, lsl #5\n\t"
+        "ldrh   r6, [r0, %[tri]]\n"              // the next carried triangle
+        "1:\n\t"
+        "cmp    r4, r6\n\t"
+        "bhs    50f\n\t"                        // the carried triangle first, or the list's end
+        "add    r0, r4, r4, lsl #1\n\t"
+        "add    r12, r8, r0, lsl #1\n\t"        // the triangle: tris + 6 t
+        "ldrh   r0, [r12]\n\t"
+        "ldrh   r1, [r12, #2]\n\t"
+        "ldrh   r2, [r12, #4]\n\t"
+        "add    r0, r7, r0, lsl #3\n\t"
+        "add    r1, r7, r1, lsl #3\n\t"
+        "add    r2, r7, r2, lsl #3\n\t"
+        "ldr    r3, [r0, #4]\n\t"
+        "cbz    r3, 91f\n\t"                    // a vertex outside a clip plane: back to C++
+        "ldr    r3, [r1, #4]\n\t"
+        "cbz    r3, 91f\n\t"
+        "ldr    r3, [r2, #4]\n\t"
+        "cbz    r3, 91f\n\t"
+        "ldr    r3, [r5, #72]\n\t"              // free_top
+        "ldr    r12, [r5, #68]\n\t"             // free_base
+        "cmp    r3, r12\n\t"
+        "beq    90f\n\t"                        // no free slot: back to C++ (the spare)
+        "ldrb   r3, [r3, #-1]\n\t"              // the slot on top
+        "ldr    r12, [r5, #64]\n\t"
+        "add    r3, r3, r3, lsl #1\n\t"
+        "add    r11, r12, r3, lsl #5\n\t"       // its record: pool + 96 s
+        "stm    sp, {r0, r1, r2}\n\t"
+        "ldr    r0, [r0]\n\t"                   // x | y << 16 of each
+        "ldr    r1, [r1]\n\t"
+        "ldr    r2, [r2]\n\t"
+        "sxth   r3, r0\n\t"                     // ax
+        "sxth   r12, r1\n\t"
+        "sub    r12, r12, r3\n\t"               // bx - ax
+        "sxth   lr, r2\n\t"
+        "sub    lr, lr, r3\n\t"                 // cx - ax
+        "asr    r0, r0, #16\n\t"                // ay
+        "rsb    r1, r0, r1, asr #16\n\t"        // by - ay
+        "rsb    r2, r0, r2, asr #16\n\t"        // cy - ay
+        "mul    r10, r12, r2\n\t"
+        "mls    r10, lr, r1, r10\n\t"           // signed_area(a, b, c)
+        "str    r10, [r9, #4]\n\t"              // io->area
+        "str    r11, [r9, #8]\n\t"              // io->out
+        "ldm    sp, {r0, r1, r2}\n\t"
+        "mov    r3, r9\n\t"
+        "bl     %c[setup]\n\t"
+        "cmp    r0, #1\n\t"
+        "beq    3f\n\t"
+        "cmp    r0, #0\n\t"
+        "bne    90f\n"                          // generic: back to C++
+        "8:\n\t"                                // the next listed triangle
+        "ldr    r0, [r5, #8]\n\t"
+        "ldrh   r4, [r0, r4, lsl #1]\n\t"
+        "b      1b\n"
+        "91:\n\t"
+        "b      90f\n"                           // within the reach of cbz
+        "3:\n\t"
+        "ldrsh  r0, [r11, %[top]]\n\t"
+        "ldr    r1, [r5, #80]\n\t"
+        "cmp    r0, r1\n\t"
+        "blt    4f\n\t"
+        "ldr    r1, [r5, #84]\n\t"
+        "adds   r1, r1, #1\n\t"
+        "str    r1, [r5, #84]\n"                // drawn: its first row is in this band
+        "4:\n\t"
+        "ldrsh  r0, [r11, %[row]]\n\t"
+        "ldrsh  r1, [r11, %[end]]\n\t"
+        "cmp    r0, r1\n\t"
+        "bge    8b\n\t"                         // no row: the slot stays free
+        // FaceShading::color565(), as in draw_flat_v7m.
+        "add    r1, r4, r4, lsl #1\n\t"
+        "add    r1, r8, r1, lsl #1\n\t"
+        "ldr    r2, [r5, #16]\n\t"
+        "add    r1, r1, r2\n\t"                 // the triangle's normal
+        "ldrsh  r2, [r1]\n\t"
+        "ldr    r3, [r5, #20]\n\t"
+        "mul    r2, r3, r2\n\t"
+        "ldrsh  lr, [r1, #2]\n\t"
+        "ldr    r3, [r5, #24]\n\t"
+        "mla    r2, r3, lr, r2\n\t"
+        "ldrsh  lr, [r1, #4]\n\t"
+        "ldr    r3, [r5, #28]\n\t"
+        "mla    r2, r3, lr, r2\n\t"
+        "asr    r2, r2, #12\n\t"
+        "cmp    r10, #0\n\t"
+        "it     ge\n\t"
+        "rsbge  r2, r2, #0\n\t"                 // a back face: -N.z
+        "cmp    r2, #0\n\t"
+        "it     lt\n\t"
+        "movlt  r2, #0\n\t"
+        "cmp    r2, #65536\n\t"
+        "it     gt\n\t"
+        "movgt  r2, #65536\n\t"
+        "mov    r3, #32768\n\t"
+        "ldr    r1, [r5, #32]\n\t"
+        "mla    r1, r2, r1, r3\n\t"
+        "lsr    r1, r1, #19\n\t"
+        "lsl    r1, r1, #11\n\t"                // red
+        "ldr    lr, [r5, #36]\n\t"
+        "mla    lr, r2, lr, r3\n\t"
+        "lsr    lr, lr, #18\n\t"
+        "orr    r1, r1, lr, lsl #5\n\t"         // green
+        "ldr    lr, [r5, #40]\n\t"
+        "mla    lr, r2, lr, r3\n\t"
+        "orr    r1, r1, lr, lsr #19\n\t"        // blue
+        "str    r1, [r11, %[color]]\n\t"        // k.color
+        "strh   r4, [r11, %[tri]]\n\t"          // the mesh triangle
+        "ldr    r1, [r5, #48]\n\t"
+        "sub    r0, r0, r1\n\t"
+        "ldr    r1, [r5, #52]\n\t"
+        "ldr    r2, [r5, #44]\n\t"
+        "mla    r1, r0, r1, r2\n\t"             // the depth row of `row`
+        "mov    r0, r11\n\t"
+        "ldr    r2, [r5, #56]\n\t"
+        "ldr    r3, [r5, #60]\n\t"
+        "bl     %c[kernel]\n\t"
+        "ldrsh  r0, [r11, %[row]]\n\t"
+        "ldrsh  r1, [r11, %[end]]\n\t"
+        "cmp    r0, r1\n\t"
+        "bge    8b\n\t"                         // done in this band: the slot stays free
+        "ldr    r0, [r5, #72]\n\t"
+        "ldrb   r1, [r0, #-1]!\n\t"             // the slot leaves the free stack
+        "str    r0, [r5, #72]\n\t"
+        "ldr    r2, [r5, #76]\n\t"
+        "strb   r1, [r2], #1\n\t"               // for the next band
+        "str    r2, [r5, #76]\n\t"
+        "b      8b\n"
+        "50:\n\t"                               // resume the carried set-ups before r4
+        "movw   r0, #0xFFFF\n\t"
+        "cmp    r6, r0\n\t"
+        "beq    90f\n\t"                        // none left: r4 is the list's end
+        "ldr    r10, [r5, #88]\n"
+        "51:\n\t"
+        "ldrb   r11, [r10]\n\t"                 // its slot
+        "ldr    r1, [r5, #64]\n\t"
+        "add    r0, r11, r11, lsl #1\n\t"
+        "add    r6, r1, r0, lsl #5\n\t"        // its record
+        "ldrh   r0, [r6, %[tri]]\n\t"
+        "cmp    r0, r4\n\t"
+        "bhs    55f\n\t"                        // after the listed triangle: stop
+        "mov    r0, r6\n\t"
+        "ldr    r1, [r5, #44]\n\t"              // it is on the band's first row
+        "ldr    r2, [r5, #56]\n\t"
+        "ldr    r3, [r5, #60]\n\t"
+        "bl     %c[kernel]\n\t"
+        "ldrsh  r0, [r6, %[row]]\n\t"
+        "ldrsh  r1, [r6, %[end]]\n\t"
+        "cmp    r0, r1\n\t"
+        "ite    lt\n\t"
+        "ldrlt  r0, [r5, #76]\n\t"              // rows remain: to the next band's slots
+        "ldrge  r0, [r5, #72]\n\t"              // done: back to the free slots
+        "strb   r11, [r0], #1\n\t"
+        "ite    lt\n\t"
+        "strlt  r0, [r5, #76]\n\t"
+        "strge  r0, [r5, #72]\n\t"
+        "add    r10, r10, #1\n\t"
+        "ldr    r0, [r5, #92]\n\t"
+        "cmp    r10, r0\n\t"
+        "bne    51b\n\t"
+        "movw   r6, #0xFFFF\n\t"               // all resumed
+        "b      56f\n"
+        "55:\n\t"
+        "mov    r6, r0\n"                       // the next carried triangle
+        "56:\n\t"
+        "str    r10, [r5, #88]\n\t"
+        "b      1b\n"
+        "90:\n\t"
+        "mov    r0, r4\n\t"
+        "add    sp, #12\n\t"
+        "pop    {r4-r11, pc}\n"
+        :
+        : [setup] "i"(kernel_setup_v7m), [kernel] "i"(run_kernel_triangle_v7m),
+          [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
+          [end] "i"(offsetof(KernelTriangle, end)), [color] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, color)),
+          [tri] "i"(offsetof(KernelTriangle, tri)));
+}
+#endif
+
+}  // namespace hider
