@@ -47,9 +47,8 @@ inline hider::FrameStats render_in_bands(const spin::Scene& s, uint32_t frame, c
     if (total.status == hider::Status::ok) {
         const spin::Frame buffers =
             hider::band_view<hider::Rgb565Format, uint16_t>(buf.color.data(), buf.depth.data(), s.width, s.height, 0, buf.rows);
-        hider::BinnedScratch scratch = buf.scratch;
         total = hider::draw_zbuffer_binned(
-            view, s.mesh, buf.verts, buffers, spin::draw_options(), spin::kBackground, scratch,
+            view, s.mesh, buf.verts, buffers, spin::draw_options(), spin::kBackground, buf.scratch,
             [&sink](const spin::Frame& band) {
                 bench_end();  // the sink's time is the display's, not the renderer's
                 const bool sent = sink.write_rows(sink.user, static_cast<uint16_t>(band.y0), static_cast<uint16_t>(band.rows()),

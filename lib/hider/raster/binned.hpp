@@ -85,7 +85,9 @@ __attribute__((noinline)) inline int32_t first_row_clipped(const ClippedBinning&
 template <class Piece>
 __attribute__((noinline)) void for_each_piece(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, size_t t,
                                               Piece&& piece) {
-    FrameStats counted;
+    struct {
+        uint32_t triangles_outside, triangles_clipped;
+    } counted{};
     for_each_clipped(view, mesh, verts, t, counted, piece);
 }
 
@@ -205,7 +207,7 @@ template <bool kAsmLoop>
 class KernelBands {
 public:
     KernelBands(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
-                const FrameView<Rgb565Format, uint16_t>& buffers, const DrawOptions& opt, BinnedScratch& scratch,
+                const FrameView<Rgb565Format, uint16_t>& buffers, const DrawOptions& opt, const BinnedScratch& scratch,
                 BinnedStats& out, FrameStats& st)
         : view_(view), mesh_(mesh), verts_(verts), buffers_(buffers), opt_(opt), shading_(view, opt), out_(out), st_(st),
           next_(scratch.next.data()), head_(scratch.head.data()), pool_(scratch.carried.data()),
@@ -419,9 +421,9 @@ private:
 /// The bands of draw_zbuffer_binned() for any other format or shading: each band sets up its triangles
 /// and re-links those that continue into the next band.
 template <class Format, class Depth, class BandDone>
-void draw_bands_generic(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+__attribute__((noinline)) void draw_bands_generic(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
                         const FrameView<Format, Depth>& buffers, const DrawOptions& opt, Rgb background,
-                        BinnedScratch& scratch, BandDone& done, BinnedStats& out, FrameStats& st) {
+                        const BinnedScratch& scratch, BandDone& done, BinnedStats& out, FrameStats& st) {
     const int32_t rows = buffers.y1, width = buffers.width, height = buffers.height;
     const size_t bands = static_cast<size_t>((height + rows - 1) / rows);
     uint16_t* const next = scratch.next.data();
@@ -460,7 +462,7 @@ void draw_bands_generic(const View& view, const Mesh& mesh, Span<const ScreenVer
 /// draw_zbuffer_binned(); kAsmLoop false keeps the assembly band loop out (kernelcheck compares both).
 template <bool kAsmLoop, class Format, class Depth, class BandDone>
 FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, const FrameView<Format, Depth>& buffers,
-                       const DrawOptions& opt, Rgb background, BinnedScratch& scratch, BandDone& done, BinnedStats* bs) {
+                       const DrawOptions& opt, Rgb background, const BinnedScratch& scratch, BandDone& done, BinnedStats* bs) {
     FrameStats st;
     const int32_t rows = buffers.y1, height = buffers.height;
     const size_t tri_count = mesh.tris.size();
@@ -508,7 +510,7 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
 template <class Format, class Depth, class BandDone>
 FrameStats draw_zbuffer_binned(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
                                const FrameView<Format, Depth>& buffers, const DrawOptions& opt, Rgb background,
-                               BinnedScratch& scratch, BandDone&& done, BinnedStats* bs = nullptr) {
+                               const BinnedScratch& scratch, BandDone&& done, BinnedStats* bs = nullptr) {
     return detail::draw_binned<true>(view, mesh, verts, buffers, opt, background, scratch, done, bs);
 }
 

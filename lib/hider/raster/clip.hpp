@@ -95,10 +95,11 @@ inline void clip_triangle(const View& view, const ViewPoint& a, const ViewPoint&
 
 /// Calls piece(a, b, c) for each drawable screen triangle of the triangle (i0, i1, i2) of `positions`:
 /// the triangle itself, or the fan of its clipped polygon (vertices from project_vertices() in
-/// `verts`). Counts outside and clipped triangles in `st`.
-template <class Piece>
+/// `verts`). Counts outside and clipped triangles in `st` (FrameStats, or anything with those two
+/// counters: a caller that does not need them keeps 56 bytes off the stack).
+template <class Counts, class Piece>
 void for_each_clipped(const View& view, Span<const Vec3q16> positions, Span<const ScreenVertex> verts, uint32_t i0,
-                      uint32_t i1, uint32_t i2, FrameStats& st, Piece&& piece) {
+                      uint32_t i1, uint32_t i2, Counts& st, Piece&& piece) {
     const ScreenVertex& a = verts[i0];
     const ScreenVertex& b = verts[i1];
     const ScreenVertex& c = verts[i2];
@@ -120,8 +121,8 @@ void for_each_clipped(const View& view, Span<const Vec3q16> positions, Span<cons
 }
 
 /// for_each_clipped() for mesh triangle t.
-template <class Piece>
-void for_each_clipped(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, size_t t, FrameStats& st,
+template <class Counts, class Piece>
+void for_each_clipped(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, size_t t, Counts& st,
                       Piece&& piece) {
     const Tri& tri = mesh.tris[t];
     for_each_clipped(view, mesh.positions, verts, tri.v[0], tri.v[1], tri.v[2], st, static_cast<Piece&&>(piece));
