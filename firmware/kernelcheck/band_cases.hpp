@@ -1,10 +1,10 @@
-// Random small scenes drawn band by band, shared by the kernelcheck firmware and its host twin: each case
-// is a draw case (draw_cases.hpp: a frame up to 24 x 24, 40 random triangles, some clipped, a quarter of
-// them repeating an earlier one so that depths tie) rendered by
-// the band renderer (binned.hpp), culled or not, in bands of 1 to 6 rows with 0 to 5 carried slots, so set-ups are
-// carried, resumed, refused a slot and set up again. run_band_cases() draws each case through `draw`
-// (on ARMv7-M with the assembly band loop) and `twin` (the C++ loop) and folds every band's colour and
-// depth, the frame's statistics and the carried-slot figures into one digest per case.
+// Random small scenes drawn band by band, shared by the kernelcheck firmware and its host twin. Each
+// case is a draw case (draw_cases.hpp: a frame up to 24 x 24, 40 random triangles, some clipped), a
+// quarter of its triangles repeating an earlier one so that depths tie, culled or not, drawn by the band
+// renderer (binned.hpp) in bands of 1 to 6 rows with 0 to 5 carried slots: set-ups are carried,
+// resumed, refused a slot and set up again. run_band_cases() draws each case through `draw` (on ARMv7-M
+// with the assembly band loop) and `twin` (the C++ loop) and digests every band, the frame's statistics
+// and the carried-slot figures.
 #pragma once
 #include <hider/raster/binned.hpp>
 

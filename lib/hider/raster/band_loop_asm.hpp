@@ -1,12 +1,8 @@
-// The band renderer's loop over one band (binned.hpp) in Thumb-2 for ARMv7-M, merging in mesh order the
-// triangles carried over from the band above (their rows of this band, then their slot to the next band
-// or back to the free ones) with the band's list (per triangle the kernel set-up into a free slot, the
-// headlight colour and the rows of the band; the slot goes to the next band when rows remain). GCC kept
-// the band's state in memory and spent about 150 instructions around the two calls of a listed triangle
-// and 65 around a resumed one's; here the list, the vertices and the slot stay in registers. Triangles
-// with a vertex outside a clip plane, those without a free slot and those the set-up calls generic go
-// back to the C++ loop, which does exactly what it did before.
-// firmware/kernelcheck draws random meshes in bands both ways and compares the frames and statistics.
+// The band renderer's loop over one band (binned.hpp) in Thumb-2 for ARMv7-M: merges in mesh order the
+// set-ups carried from the band above (their rows, then their slot onward or back) with the band's list
+// (set-up into a free slot, headlight colour, rows). GCC kept the band's state in memory around the
+// calls; here the list, the vertices and the slot stay in registers. Clipped triangles, those without a
+// free slot and generic set-ups go back to the C++ loop. firmware/kernelcheck compares both loops.
 #pragma once
 #include <hider/mesh.hpp>
 #include <hider/raster/kernel_triangle.hpp>
@@ -37,9 +33,17 @@ struct BandLoopArm {
     const uint8_t* cur;               ///< 88, in and out: this band's carried slots still to resume
     const uint8_t* cur_end;           ///< 92
 };
-static_assert(sizeof(void*) != 4 || (offsetof(BandLoopArm, view_z) == 20 && offsetof(BandLoopArm, target) == 60 &&
-                                     offsetof(BandLoopArm, drawn) == 84 && offsetof(BandLoopArm, cur_end) == 92),
-              "band loop layout");
+static_assert(sizeof(void*) != 4 ||
+                  (offsetof(BandLoopArm, verts) == 4 && offsetof(BandLoopArm, next) == 8 && offsetof(BandLoopArm, io) == 12 &&
+                   offsetof(BandLoopArm, normals_offset) == 16 && offsetof(BandLoopArm, view_z) == 20 &&
+                   offsetof(BandLoopArm, base_r) == 32 && offsetof(BandLoopArm, depth) == 44 &&
+                   offsetof(BandLoopArm, y0) == 48 && offsetof(BandLoopArm, stride_bytes) == 52 &&
+                   offsetof(BandLoopArm, y1) == 56 && offsetof(BandLoopArm, target) == 60 &&
+                   offsetof(BandLoopArm, pool) == 64 && offsetof(BandLoopArm, free_base) == 68 &&
+                   offsetof(BandLoopArm, free_top) == 72 && offsetof(BandLoopArm, nxt) == 76 &&
+                   offsetof(BandLoopArm, count_from) == 80 && offsetof(BandLoopArm, drawn) == 84 &&
+                   offsetof(BandLoopArm, cur) == 88 && offsetof(BandLoopArm, cur_end) == 92),
+              "band loop layout: every offset the assembly uses");
 static_assert(sizeof(Tri) == 6 && sizeof(Normal14) == 6, "a triangle's normal sits a fixed offset from it");
 static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records are 96 bytes");
 }  // namespace detail
@@ -112,8 +116,8 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "rsb    r2, r0, r2, asr #16\n\t"        // cy - ay
         "mul    r10, r12, r2\n\t"
         "mls    r10, lr, r1, r10\n\t"           // signed_area(a, b, c)
-        "str    r10, [r9, #4]\n\t"              // io->area
-        "str    r11, [r9, #8]\n\t"              // io->out
+        "str    r10, [r9, %[io_area]]\n\t"
+        "str    r11, [r9, %[io_out]]\n\t"
         "ldm    sp, {r0, r1, r2}\n\t"
         "mov    r3, r9\n\t"
         "bl     %c[setup]\n\t"
@@ -245,7 +249,8 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         : [setup] "i"(kernel_setup_v7m), [kernel] "i"(run_kernel_triangle_v7m),
           [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
           [end] "i"(offsetof(KernelTriangle, end)), [color] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, color)),
-          [tri] "i"(offsetof(KernelTriangle, tri)));
+          [tri] "i"(offsetof(KernelTriangle, tri)), [io_area] "i"(offsetof(KernelSetupIo, area)),
+          [io_out] "i"(offsetof(KernelSetupIo, out)));
 }
 #endif
 

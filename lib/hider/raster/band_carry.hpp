@@ -1,0 +1,285 @@
+// The band renderer's carried set-ups (binned.hpp): a flat RGB565 triangle inside the columns is set
+// up once into a slot (kernel_triangle.hpp: edges, depth, the next short edge) and resumed by the next
+// bands without any division; each band merges them in mesh order with its own list. KernelBands draws
+// the bands; on ARMv7-M through the assembly loop of band_loop_asm.hpp.
+#pragma once
+#include <hider/raster/band_lists.hpp>
+#include <hider/raster/band_loop_asm.hpp>
+
+namespace hider {
+
+namespace detail {
+/// The carried set-ups of KernelBands: slots in use this band (mesh order) from `cur` to
+/// `cur_end`, the next band's from `nxt` (growing), and a stack of free slots below `free_top`.
+struct CarriedSlots {
+    KernelTriangle* pool;
+    const uint8_t* cur;
+    const uint8_t* cur_end;
+    uint8_t* nxt;
+    uint8_t* free_top;
+};
+
+/// Where a band's kernel rows go: the target, the band's first depth row and its end row.
+struct KernelBandTarget {
+    KernelTarget target;
+    uint16_t* zrow;
+    int32_t row_end;
+};
+
+/// The mesh triangle of the first carried set-up still to resume this band (kNoTriangle: none).
+inline uint32_t pending_carried(const CarriedSlots& cs) { return cs.cur != cs.cur_end ? cs.pool[*cs.cur].tri : kNoTriangle; }
+
+/// Resumes the carried set-ups whose triangle comes before `limit`: draws their rows of the band (each
+/// is on the band's first row) and moves each to the next band's slots or back to the free ones.
+/// Returns pending_carried() after them. Out of line with few live values, so GCC keeps the loop in
+/// registers.
+__attribute__((noinline)) inline uint32_t resume_carried(CarriedSlots& cs, uint32_t limit, const KernelBandTarget& bt) {
+    KernelTriangle* const pool = cs.pool;
+    const uint8_t* cur = cs.cur;
+    const uint8_t* const end = cs.cur_end;
+    uint8_t* nxt = cs.nxt;
+    uint8_t* free_top = cs.free_top;
+    uint32_t pending = kNoTriangle;
+    for (; cur != end; ++cur) {
+        const uint8_t s = *cur;
+        KernelTriangle& kt = pool[s];
+        if (kt.tri >= limit) {
+            pending = kt.tri;
+            break;
+        }
+        run_kernel_triangle(kt, bt.zrow, bt.row_end, bt.target);
+        if (kt.row < kt.end) *nxt++ = s;
+        else *free_top++ = s;
+    }
+    cs.cur = cur;
+    cs.nxt = nxt;
+    cs.free_top = free_top;
+    return pending;
+}
+
+/// The bands of draw_zbuffer_binned() for flat RGB565 over 16-bit depth: kernel set-ups carried in
+/// slots. A class rather than lambdas: the per-triangle code reaches the band's state through `this`
+/// (GCC rebuilt a closure of sixteen references per triangle). kAsmLoop: on ARMv7-M, runs of listed
+/// triangles go through draw_band_v7m() (headlight shading with normals); false keeps it out (the
+/// kernelcheck firmware compares both).
+template <bool kAsmLoop>
+class KernelBands {
+public:
+    KernelBands(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                const FrameView<Rgb565Format, uint16_t>& buffers, const DrawOptions& opt, const BinnedScratch& scratch,
+                BinnedStats& out, FrameStats& st)
+        : view_(view), mesh_(mesh), verts_(verts), buffers_(buffers), opt_(opt), shading_(view, opt), out_(out), st_(st),
+          next_(scratch.next.data()), head_(scratch.head.data()), pool_(scratch.carried.data()),
+          free_base_(scratch.slots.data() + 2 * scratch.carried.size()),
+          kband_(kernel_band(buffers.width, buffers.height, 0, buffers.height, buffers.stride * 2)),
+          bt_{{static_cast<intptr_t>(reinterpret_cast<uintptr_t>(buffers.color) - reinterpret_cast<uintptr_t>(buffers.depth)),
+               kband_.stride_bytes},
+              buffers.depth, 0},
+          io_{&kband_, 0, &spare_} {
+        const uint8_t capacity = static_cast<uint8_t>(scratch.carried.size());
+        for (uint8_t k = 0; k < capacity; ++k) free_base_[k] = k;
+        cs_ = {pool_, scratch.slots.data(), scratch.slots.data(), scratch.slots.data() + capacity, free_base_ + capacity};
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+        use_asm_ = kAsmLoop && opt.shade == Shade::headlight && !mesh.normals.empty();
+        loop_.tris = mesh.tris.data();
+        loop_.verts = verts.data();
+        loop_.next = next_;
+        loop_.io = &io_;
+        loop_.normals_offset = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(mesh.normals.data()) -
+                                                     reinterpret_cast<uintptr_t>(mesh.tris.data()));
+        for (int j = 0; j < 3; ++j) loop_.view_z[j] = shading_.view_z(j);
+        loop_.base_r = opt.base.r;
+        loop_.base_g = opt.base.g;
+        loop_.base_b = opt.base.b;
+        loop_.stride_bytes = kband_.stride_bytes;
+        loop_.target = &bt_.target;
+        loop_.pool = pool_;
+        loop_.free_base = free_base_;
+#endif
+    }
+
+    /// Draws band b (rows [y0, y1)) after clearing it; false when done() refuses it.
+    template <class BandDone>
+    bool band(size_t b, size_t bands, int32_t y0, int32_t y1, Rgb background, BandDone& done) {
+        band_ = band_view<Rgb565Format, uint16_t>(buffers_.color, buffers_.depth, buffers_.width, buffers_.height, y0, y1);
+        clear_band(background);
+        band_bb_ = band_bounds(band_);
+        kband_.row_from = y0;
+        bt_.row_end = y1;
+        count_from_ = y0 == 0 ? INT32_MIN : y0;
+        next_head_ = b + 1 < bands ? &head_[b + 1] : nullptr;
+        insert_prev_ = kNoTriangle;
+        const uint8_t* const band_cur = cs_.cur;
+        uint8_t* const band_nxt = cs_.nxt;
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+        if (use_asm_) {  // the band in assembly but for the listed triangles it hands back
+            loop_.depth = band_.depth;
+            loop_.y0 = y0;
+            loop_.y1 = y1;
+            loop_.count_from = count_from_;
+            loop_.drawn = 0;
+            loop_.cur = cs_.cur;
+            loop_.cur_end = cs_.cur_end;
+            for (uint32_t t = head_[b];;) {
+                loop_.free_top = cs_.free_top;
+                loop_.nxt = cs_.nxt;
+                t = draw_band_v7m(t, &loop_);
+                cs_.free_top = loop_.free_top;
+                cs_.nxt = loop_.nxt;
+                if (t == kNoTriangle) break;
+                const uint16_t tri = static_cast<uint16_t>(t);
+                t = next_[t];
+                new_triangle(tri);
+            }
+            cs_.cur = loop_.cur;
+            st_.triangles_drawn += loop_.drawn;
+        } else
+#endif
+        {
+            uint32_t pending = pending_carried(cs_);
+            for (uint32_t t = head_[b];;) {
+                if (pending < t) pending = resume_carried(cs_, t, bt_);  // the carried triangles before t, in mesh order
+                if (t == kNoTriangle) break;
+                const uint16_t tri = static_cast<uint16_t>(t);
+                t = next_[t];
+                new_triangle(tri);
+            }
+        }
+        out_.carried += static_cast<uint32_t>(cs_.cur - band_cur);
+        out_.carried_high_water = max<uint32_t>(out_.carried_high_water, static_cast<uint32_t>(cs_.nxt - band_nxt));
+        cs_.cur = band_nxt;  // the next band resumes what this one carried
+        cs_.cur_end = cs_.nxt;
+        cs_.nxt = const_cast<uint8_t*>(band_cur);
+        return done(band_);
+    }
+
+private:
+    /// clear() of the band: whole words straight to fill_words() when both buffers are word-aligned and
+    /// the band holds an even number of pixels (clear() and fill() cost a band more around the stores).
+    void clear_band(Rgb background) {
+        const size_t n = static_cast<size_t>(band_.width) * static_cast<size_t>(band_.rows());
+        if ((n & 1u) != 0 || ((reinterpret_cast<uintptr_t>(band_.color) | reinterpret_cast<uintptr_t>(band_.depth)) & 3u) != 0) {
+            clear(band_, background);
+            return;
+        }
+        fill_words(band_.color, n / 2, uint32_t{Rgb565Format::pack(background)} * 0x00010001u);
+        fill_words(band_.depth, n / 2, 0xFFFFFFFFu);
+    }
+
+    /// A triangle of this band's list: set up in a free slot (or the spare), its rows drawn; continuing
+    /// into the next band in its slot, or re-linked there when it has none.
+#if defined(__ARM_ARCH_6M__)
+    __attribute__((noinline))  // Thumb-1's low registers cannot hold the band loop's values and this one's
+#else
+    __attribute__((always_inline))  // in the band loop: no call, no registers saved per triangle
+#endif
+    void new_triangle(uint16_t tri) {
+        const Tri& t = mesh_.tris[tri];
+        const ScreenVertex& a = verts_[t.v[0]];
+        const ScreenVertex& b = verts_[t.v[1]];
+        const ScreenVertex& c = verts_[t.v[2]];
+        bool continues;
+        if (a.z != 0 && b.z != 0 && c.z != 0) {
+            continues = whole(a, b, c, tri);
+        } else {  // clipped pieces are set up again in every band
+            continues_ = false;
+            for_each_piece(view_, mesh_, verts_, tri, [this, tri](const ScreenVertex& pa, const ScreenVertex& pb,
+                                                                 const ScreenVertex& pc) { piece(pa, pb, pc, tri); });
+            continues = continues_;
+        }
+        if (!continues) return;
+        ++out_.set_up_again;
+        if (next_head_ != nullptr) insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
+    }
+
+    /// A whole triangle of the lists (bin_triangles() linked only those of non-zero area, not culled),
+    /// set up in a free slot or the spare; true when it continues into the next band without a slot.
+    __attribute__((always_inline)) bool whole(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                                              uint16_t tri) {
+        const int32_t area = TriangleRaster::signed_area(a, b, c);
+        const bool slot = cs_.free_top != free_base_;
+        KernelTriangle& kt = slot ? pool_[cs_.free_top[-1]] : spare_;
+        io_.area = area;
+        io_.out = &kt;
+        const KernelSetup s = kernel_setup(a, b, c, io_);
+        if (s == KernelSetup::kernel) {
+            // Binned by its top row (re-linked ones start above the band): drawn here when top >= y0.
+            st_.triangles_drawn += kt.top >= count_from_;
+            if (!run_set_up(kt, tri, area)) return false;
+            if (!slot) return true;
+            *cs_.nxt++ = *--cs_.free_top;
+            return false;
+        }
+        return s == KernelSetup::generic && draw_generic(a, b, c, area, tri);
+    }
+
+    /// A piece of a clipped triangle: set up in the spare, drawn; sets continues_ when it reaches the
+    /// next band.
+    __attribute__((noinline)) void piece(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint16_t tri) {
+        const int32_t area = TriangleRaster::signed_area(a, b, c);
+        if (area == 0 || (opt_.cull && area > 0)) return;
+        io_.area = area;
+        io_.out = &spare_;
+        const KernelSetup s = kernel_setup(a, b, c, io_);
+        bool continues = false;
+        if (s == KernelSetup::kernel) {
+            // A piece may start in a later band than its triangle's bin: drawn in the band of its top row.
+            st_.triangles_drawn += spare_.top >= count_from_ && spare_.top < band_.y1;
+            continues = run_set_up(spare_, tri, area);
+        } else if (s == KernelSetup::generic) {
+            continues = draw_generic(a, b, c, area, tri);
+        }
+        continues_ = continues_ || continues;
+    }
+
+    /// Draws the rows of this band of a kernel set-up (its callers count it as drawn in the band of its
+    /// first row, clamped to the frame); true when rows remain for the next band.
+    __attribute__((always_inline)) bool run_set_up(KernelTriangle& kt, uint16_t tri, int32_t area) {
+        if (kt.row >= kt.end) return false;
+        kt.k.color = shading_.color565(mesh_, tri, area < 0);
+        kt.tri = tri;
+        run_kernel_triangle(kt, band_.depth + static_cast<ptrdiff_t>(kt.row - band_.y0) * band_.stride, band_.y1,
+                            bt_.target);
+        return kt.row < kt.end;
+    }
+
+    /// A triangle the kernel set-up leaves to TriangleRaster (it crosses the side columns, or a steep
+    /// plane); true when it reaches below the band.
+    __attribute__((noinline)) bool draw_generic(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                                                int32_t area, uint16_t tri) {
+        draw_raster<false>(a, b, c, area, tri, band_, band_bb_, false, mesh_, shading_, opt_, st_);
+        const int32_t y_max = max<int32_t>(a.y, max<int32_t>(b.y, c.y));
+        return ((y_max - band_bb_.y_origin + kSubpixel - 1) >> kSubpixelBits) > band_.y1;
+    }
+
+    const View& view_;
+    const Mesh& mesh_;
+    Span<const ScreenVertex> verts_;
+    const FrameView<Rgb565Format, uint16_t>& buffers_;
+    const DrawOptions& opt_;
+    const FaceShading shading_;
+    BinnedStats& out_;
+    FrameStats& st_;
+    uint16_t* const next_;
+    uint16_t* const head_;
+    KernelTriangle* const pool_;
+    uint8_t* const free_base_;
+    CarriedSlots cs_{};
+    KernelBand kband_;
+    KernelBandTarget bt_;
+    KernelTriangle spare_;  // a set-up without a free slot: drawn here, set up again in the next band
+    KernelSetupIo io_;
+    FrameView<Rgb565Format, uint16_t> band_{};
+    BandBounds band_bb_{};
+    uint16_t* next_head_ = nullptr;
+    uint16_t insert_prev_ = kNoTriangle;
+    int32_t count_from_ = 0;  // a set-up counts as drawn in this band from this top row on (INT32_MIN: band 0)
+    bool continues_ = false;
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    bool use_asm_ = false;
+    BandLoopArm loop_{};
+#endif
+};
+}  // namespace detail
+
+}  // namespace hider
