@@ -1,5 +1,6 @@
 // Shared C++ runtime start: .data copy, .bss zeroing, static constructors, main(), and the exit
-// status through semihosting. Also measures the stack high-water mark by painting the stack.
+// status through semihosting. Also measures the stack high-water mark by painting the stack, and fails
+// a run that used all but the last 32 bytes of it (it may have overrun into .bss).
 // Symbols come from firmware/common/{cortex_m,riscv}.ld.
 #include "common/runtime.hpp"
 #include "semihost/semihost.hpp"
@@ -22,6 +23,7 @@ namespace {
 
 constexpr uint32_t kStackPaint = 0x5AC3A55Cu;
 constexpr uintptr_t kPaintMargin = 64;  // bytes below the current sp left unpainted (our own frame)
+constexpr uint32_t kStackReserve = 32;  // a run that leaves fewer bytes of its stack untouched fails
 
 void paint_stack() {
     uint32_t here = 0;
@@ -47,12 +49,18 @@ extern "C" void hider_reset() {
     const int status = main();
 
     namespace sh = hider::semihost;
+    const uint32_t used = stack_used_bytes();
+    const uint32_t size = static_cast<uint32_t>(reinterpret_cast<uintptr_t>(__stack_top__) -
+                                                reinterpret_cast<uintptr_t>(__stack_bottom__));
     sh::print("hider: stack high-water ");
-    sh::print_u32(stack_used_bytes());
+    sh::print_u32(used);
     sh::print(" of ");
-    sh::print_u32(static_cast<uint32_t>(reinterpret_cast<uintptr_t>(__stack_top__) -
-                                        reinterpret_cast<uintptr_t>(__stack_bottom__)));
+    sh::print_u32(size);
     sh::print(" bytes\n");
+    if (size - used < kStackReserve) {  // the stack may have run into the data below it: not a pass
+        sh::print("hider: stack exhausted (fewer than 32 bytes never used): give the firmware more stack\n");
+        sh::exit(status != 0 ? status : 4);
+    }
     sh::exit(status);
 }
 
