@@ -4,12 +4,20 @@
 // the stack (CMakeLists.txt) within the 16 KB.
 #include "bands/bands.hpp"
 #include "bands/sizes.hpp"
-#include "common/scenes/torus_160x128.hpp"
 #include "spin/semihost_io.hpp"
+#if defined(BANDS_CITY)  // bands_city: the deepest stack path, clipped triangles in bands (CMakeLists.txt)
+#include "common/scenes/city_street_160x128.hpp"
+#else
+#include "common/scenes/torus_160x128.hpp"
+#endif
 
 namespace {
 
+#if defined(BANDS_CITY)
+namespace scene = hider::scenes::city_street_160x128;
+#else
 namespace scene = hider::scenes::torus_160x128;
+#endif
 // 6-row bands leave the 16 KB room for more carried slots than this frame holds at any band boundary;
 // 8-row bands left too few, and a continuation without a slot is set up again, which costs more than
 // the extra bands (README.md, "Bands").

@@ -1,5 +1,5 @@
-// Host twin of the bands firmware (argument 160) and bands320 (argument 320): writes bands.ppm or
-// bands320.ppm with the same band renderer and PPM sink, after checking on the host that band-by-band
+// Host twin of the bands firmware (argument 160), bands320 (argument 320) and bands_city (argument city):
+// writes bands.ppm or bands320.ppm with the same band renderer and PPM sink, after checking on the host that band-by-band
 // rendering (several band heights and carried-slot counts) gives exactly the bytes of the full-frame
 // render of the same scene. Exit 0 ok, 1 on a failure or a mismatch, 2 on a bad argument.
 #include <cstdio>
@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bands/bands.hpp"
+#include "common/scenes/city_street_160x128.hpp"
 #include "common/scenes/torus_160x128.hpp"
 #include "common/scenes/torus_320x240.hpp"
 #include "spin/app.hpp"
@@ -92,6 +93,10 @@ int main(int argc, char** argv) {
         namespace sc = hider::scenes::torus_320x240;
         return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands320.ppm", 3, 43);
     }
-    std::fputs("usage: bands_reference 160|320\n", stderr);
+    if (argc == 2 && std::strcmp(argv[1], "city") == 0) {
+        namespace sc = hider::scenes::city_street_160x128;
+        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands.ppm", 6, 44);  // as bands_city
+    }
+    std::fputs("usage: bands_reference 160|320|city\n", stderr);
     return 2;
 }
