@@ -5,7 +5,7 @@
 // free slot and generic set-ups go back to the C++ loop. firmware/kernelcheck compares both loops.
 #pragma once
 #include <hider/mesh.hpp>
-#include <hider/raster/kernel_triangle.hpp>
+#include <hider/raster/draw_loop_asm.hpp>
 
 namespace hider {
 
@@ -44,7 +44,6 @@ static_assert(sizeof(void*) != 4 ||
                    offsetof(BandLoopArm, count_from) == 80 && offsetof(BandLoopArm, drawn) == 84 &&
                    offsetof(BandLoopArm, cur) == 88 && offsetof(BandLoopArm, cur_end) == 92),
               "band loop layout: every offset the assembly uses");
-static_assert(sizeof(Tri) == 6 && sizeof(Normal14) == 6, "a triangle's normal sits a fixed offset from it");
 static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records are 96 bytes");
 }  // namespace detail
 
@@ -102,20 +101,7 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "ldr    r12, [r5, #64]\n\t"
         "add    r3, r3, r3, lsl #1\n\t"
         "add    r11, r12, r3, lsl #5\n\t"       // its record: pool + 96 s
-        "stm    sp, {r0, r1, r2}\n\t"
-        "ldr    r0, [r0]\n\t"                   // x | y << 16 of each
-        "ldr    r1, [r1]\n\t"
-        "ldr    r2, [r2]\n\t"
-        "sxth   r3, r0\n\t"                     // ax
-        "sxth   r12, r1\n\t"
-        "sub    r12, r12, r3\n\t"               // bx - ax
-        "sxth   lr, r2\n\t"
-        "sub    lr, lr, r3\n\t"                 // cx - ax
-        "asr    r0, r0, #16\n\t"                // ay
-        "rsb    r1, r0, r1, asr #16\n\t"        // by - ay
-        "rsb    r2, r0, r2, asr #16\n\t"        // cy - ay
-        "mul    r10, r12, r2\n\t"
-        "mls    r10, lr, r1, r10\n\t"           // signed_area(a, b, c)
+        HIDER_V7M_AREA
         "str    r10, [r9, %[io_area]]\n\t"
         "str    r11, [r9, %[io_out]]\n\t"
         "ldm    sp, {r0, r1, r2}\n\t"
@@ -149,37 +135,7 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "add    r1, r8, r1, lsl #1\n\t"
         "ldr    r2, [r5, #16]\n\t"
         "add    r1, r1, r2\n\t"                 // the triangle's normal
-        "ldrsh  r2, [r1]\n\t"
-        "ldr    r3, [r5, #20]\n\t"
-        "mul    r2, r3, r2\n\t"
-        "ldrsh  lr, [r1, #2]\n\t"
-        "ldr    r3, [r5, #24]\n\t"
-        "mla    r2, r3, lr, r2\n\t"
-        "ldrsh  lr, [r1, #4]\n\t"
-        "ldr    r3, [r5, #28]\n\t"
-        "mla    r2, r3, lr, r2\n\t"
-        "asr    r2, r2, #12\n\t"
-        "cmp    r10, #0\n\t"
-        "it     ge\n\t"
-        "rsbge  r2, r2, #0\n\t"                 // a back face: -N.z
-        "cmp    r2, #0\n\t"
-        "it     lt\n\t"
-        "movlt  r2, #0\n\t"
-        "cmp    r2, #65536\n\t"
-        "it     gt\n\t"
-        "movgt  r2, #65536\n\t"
-        "mov    r3, #32768\n\t"
-        "ldr    r1, [r5, #32]\n\t"
-        "mla    r1, r2, r1, r3\n\t"
-        "lsr    r1, r1, #19\n\t"
-        "lsl    r1, r1, #11\n\t"                // red
-        "ldr    lr, [r5, #36]\n\t"
-        "mla    lr, r2, lr, r3\n\t"
-        "lsr    lr, lr, #18\n\t"
-        "orr    r1, r1, lr, lsl #5\n\t"         // green
-        "ldr    lr, [r5, #40]\n\t"
-        "mla    lr, r2, lr, r3\n\t"
-        "orr    r1, r1, lr, lsr #19\n\t"        // blue
+        HIDER_V7M_COLOR565
         "str    r1, [r11, %[color]]\n\t"        // k.color
         "strh   r4, [r11, %[tri]]\n\t"          // the mesh triangle
         "ldr    r1, [r5, #48]\n\t"
@@ -250,7 +206,10 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
           [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
           [end] "i"(offsetof(KernelTriangle, end)), [color] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, color)),
           [tri] "i"(offsetof(KernelTriangle, tri)), [io_area] "i"(offsetof(KernelSetupIo, area)),
-          [io_out] "i"(offsetof(KernelSetupIo, out)));
+          [io_out] "i"(offsetof(KernelSetupIo, out)), [view_z0] "i"(offsetof(detail::BandLoopArm, view_z)),
+          [view_z1] "i"(offsetof(detail::BandLoopArm, view_z) + 4), [view_z2] "i"(offsetof(detail::BandLoopArm, view_z) + 8),
+          [base_r] "i"(offsetof(detail::BandLoopArm, base_r)), [base_g] "i"(offsetof(detail::BandLoopArm, base_g)),
+          [base_b] "i"(offsetof(detail::BandLoopArm, base_b)));
 }
 #endif
 

@@ -233,6 +233,61 @@ __attribute__((naked, noinline)) inline const Tri* draw_flat_v6m(const Tri*, det
 #endif
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+/// Thumb-2 text shared by draw_flat_v7m() and draw_band_v7m() (band_loop_asm.hpp). HIDER_V7M_AREA:
+/// stores the vertex pointers r0 r1 r2 at sp and leaves signed_area() of their vertices in r10 (r0-r3,
+/// r12 and lr clobbered).
+#define HIDER_V7M_AREA \
+    "stm    sp, {r0, r1, r2}\n\t" \
+    "ldr    r0, [r0]\n\t"             /* x | y << 16 of each */ \
+    "ldr    r1, [r1]\n\t" \
+    "ldr    r2, [r2]\n\t" \
+    "sxth   r3, r0\n\t"               /* ax */ \
+    "sxth   r12, r1\n\t" \
+    "sub    r12, r12, r3\n\t"         /* bx - ax */ \
+    "sxth   lr, r2\n\t" \
+    "sub    lr, lr, r3\n\t"           /* cx - ax */ \
+    "asr    r0, r0, #16\n\t"          /* ay */ \
+    "rsb    r1, r0, r1, asr #16\n\t"  /* by - ay */ \
+    "rsb    r2, r0, r2, asr #16\n\t"  /* cy - ay */ \
+    "mul    r10, r12, r2\n\t" \
+    "mls    r10, lr, r1, r10\n\t"     /* signed_area(a, b, c) */
+
+/// HIDER_V7M_COLOR565: FaceShading::color565() of the face whose Normal14 r1 points to, back facing when
+/// r10 >= 0, into r1 (r2, r3 and lr clobbered); the asm statement gives the offsets of the view's z row
+/// and the base colour from r5 as operands view_z0..2 and base_r, base_g, base_b.
+#define HIDER_V7M_COLOR565 \
+    "ldrsh  r2, [r1]\n\t" \
+    "ldr    r3, [r5, %[view_z0]]\n\t" \
+    "mul    r2, r3, r2\n\t" \
+    "ldrsh  lr, [r1, #2]\n\t" \
+    "ldr    r3, [r5, %[view_z1]]\n\t" \
+    "mla    r2, r3, lr, r2\n\t" \
+    "ldrsh  lr, [r1, #4]\n\t" \
+    "ldr    r3, [r5, %[view_z2]]\n\t" \
+    "mla    r2, r3, lr, r2\n\t" \
+    "asr    r2, r2, #12\n\t" \
+    "cmp    r10, #0\n\t" \
+    "it     ge\n\t" \
+    "rsbge  r2, r2, #0\n\t"            /* a back face: -N.z */ \
+    "cmp    r2, #0\n\t" \
+    "it     lt\n\t" \
+    "movlt  r2, #0\n\t" \
+    "cmp    r2, #65536\n\t" \
+    "it     gt\n\t" \
+    "movgt  r2, #65536\n\t" \
+    "mov    r3, #32768\n\t" \
+    "ldr    r1, [r5, %[base_r]]\n\t" \
+    "mla    r1, r2, r1, r3\n\t" \
+    "lsr    r1, r1, #19\n\t" \
+    "lsl    r1, r1, #11\n\t"           /* red */ \
+    "ldr    lr, [r5, %[base_g]]\n\t" \
+    "mla    lr, r2, lr, r3\n\t" \
+    "lsr    lr, lr, #18\n\t" \
+    "orr    r1, r1, lr, lsl #5\n\t"    /* green */ \
+    "ldr    lr, [r5, %[base_b]]\n\t" \
+    "mla    lr, r2, lr, r3\n\t" \
+    "orr    r1, r1, lr, lsr #19\n\t"   /* blue */
+
 /// The same loop in Thumb-2 around kernel_setup_v7m() and run_kernel_triangle_v7m(). Registers: r4 the
 /// triangle, r5 d, r6 the end, r7 the vertices, r8 the cull flag, r9 d->io, r10 the area, r11 the faces
 /// culled in this call; on the stack the three vertex pointers.
@@ -266,20 +321,7 @@ __attribute__((naked, noinline)) inline const Tri* draw_flat_v7m(const Tri*, det
         "it     ne\n\t"
         "cmpne  lr, #0\n\t"
         "beq    90f\n\t"                        // a vertex outside a clip plane: back to C++
-        "stm    sp, {r0, r1, r2}\n\t"
-        "ldr    r0, [r0]\n\t"                   // x | y << 16 of each
-        "ldr    r1, [r1]\n\t"
-        "ldr    r2, [r2]\n\t"
-        "sxth   r3, r0\n\t"                     // ax
-        "sxth   r12, r1\n\t"
-        "sub    r12, r12, r3\n\t"               // bx - ax
-        "sxth   lr, r2\n\t"
-        "sub    lr, lr, r3\n\t"                 // cx - ax
-        "asr    r0, r0, #16\n\t"                // ay
-        "rsb    r1, r0, r1, asr #16\n\t"        // by - ay
-        "rsb    r2, r0, r2, asr #16\n\t"        // cy - ay
-        "mul    r10, r12, r2\n\t"
-        "mls    r10, lr, r1, r10\n\t"           // signed_area(a, b, c)
+        HIDER_V7M_AREA
         "cmp    r10, #0\n\t"
         "beq    8f\n\t"                         // zero: nothing
         "bmi    2f\n\t"                         // counter-clockwise: drawn
@@ -311,37 +353,7 @@ __attribute__((naked, noinline)) inline const Tri* draw_flat_v7m(const Tri*, det
         // FaceShading::color565(), as in draw_flat_v6m.
         "ldr    r1, [r5, #24]\n\t"
         "add    r1, r1, r4\n\t"                 // the triangle's normal
-        "ldrsh  r2, [r1]\n\t"
-        "ldr    r3, [r5, #32]\n\t"
-        "mul    r2, r3, r2\n\t"
-        "ldrsh  lr, [r1, #2]\n\t"
-        "ldr    r3, [r5, #36]\n\t"
-        "mla    r2, r3, lr, r2\n\t"
-        "ldrsh  lr, [r1, #4]\n\t"
-        "ldr    r3, [r5, #40]\n\t"
-        "mla    r2, r3, lr, r2\n\t"
-        "asr    r2, r2, #12\n\t"
-        "cmp    r10, #0\n\t"
-        "it     ge\n\t"
-        "rsbge  r2, r2, #0\n\t"                 // a back face: -N.z
-        "cmp    r2, #0\n\t"
-        "it     lt\n\t"
-        "movlt  r2, #0\n\t"
-        "cmp    r2, #65536\n\t"
-        "it     gt\n\t"
-        "movgt  r2, #65536\n\t"
-        "mov    r3, #32768\n\t"
-        "ldr    r1, [r5, #44]\n\t"
-        "mla    r1, r2, r1, r3\n\t"
-        "lsr    r1, r1, #19\n\t"
-        "lsl    r1, r1, #11\n\t"                // red
-        "ldr    lr, [r5, #48]\n\t"
-        "mla    lr, r2, lr, r3\n\t"
-        "lsr    lr, lr, #18\n\t"
-        "orr    r1, r1, lr, lsl #5\n\t"         // green
-        "ldr    lr, [r5, #52]\n\t"
-        "mla    lr, r2, lr, r3\n\t"
-        "orr    r1, r1, lr, lsr #19\n\t"        // blue
+        HIDER_V7M_COLOR565
         "str    r1, [r12, #52]\n\t"             // k.color
         "ldr    r1, [r5, #60]\n\t"
         "sub    r0, r0, r1\n\t"
@@ -361,7 +373,10 @@ __attribute__((naked, noinline)) inline const Tri* draw_flat_v7m(const Tri*, det
         "add    sp, #12\n\t"
         "pop    {r4-r11, pc}\n"
         :
-        : [setup] "i"(kernel_setup_v7m), [kernel] "i"(run_kernel_triangle_v7m));
+        : [setup] "i"(kernel_setup_v7m), [kernel] "i"(run_kernel_triangle_v7m),
+          [view_z0] "i"(offsetof(detail::DrawLoopArm, view_z)), [view_z1] "i"(offsetof(detail::DrawLoopArm, view_z) + 4),
+          [view_z2] "i"(offsetof(detail::DrawLoopArm, view_z) + 8), [base_r] "i"(offsetof(detail::DrawLoopArm, base_r)),
+          [base_g] "i"(offsetof(detail::DrawLoopArm, base_g)), [base_b] "i"(offsetof(detail::DrawLoopArm, base_b)));
 }
 #endif
 
