@@ -62,14 +62,11 @@ int run_band_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
         s.scratch = {{next, kDrawTriangles}, {head, 24}, {carried, slot_count}, {slots, 3 * slot_count}};
         uint32_t digests[2];
         for (int pass = 0; pass < 2; ++pass) {
-            uint32_t h = 2166136261u;
-            auto add = [&h](uint32_t x) {
-                for (int k = 0; k < 4; ++k) { h ^= (x >> (8 * k)) & 0xFFu; h *= 16777619u; }
-            };
+            Fnv fnv;
             auto done = [&](const hider::FrameView<hider::Rgb565Format, uint16_t>& band) {
-                add(static_cast<uint32_t>(band.y0));
+                fnv.add(static_cast<uint32_t>(band.y0));
                 const uint32_t n = static_cast<uint32_t>(band.width * band.rows());
-                for (uint32_t k = 0; k < n; ++k) add(band.color[k] | (uint32_t{band.depth[k]} << 16));
+                for (uint32_t k = 0; k < n; ++k) fnv.add(band.color[k] | (uint32_t{band.depth[k]} << 16));
                 return true;
             };
             hider::BinnedStats bs;
@@ -77,8 +74,8 @@ int run_band_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
             const uint32_t counts[] = {static_cast<uint32_t>(st.status), st.triangles_in, st.triangles_drawn,
                                        st.triangles_culled, st.triangles_clipped, st.triangles_outside,
                                        bs.carried, bs.set_up_again, bs.carried_high_water};
-            for (uint32_t x : counts) add(x);
-            digests[pass] = h;
+            for (uint32_t x : counts) fnv.add(x);
+            digests[pass] = fnv.h;
         }
         out[i] = digests[0];
         if (digests[1] != digests[0] && first_difference < 0) first_difference = i;

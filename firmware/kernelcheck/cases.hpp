@@ -27,6 +27,14 @@ struct Rng {
     int32_t range(int32_t lo, int32_t hi) { return lo + static_cast<int32_t>(next() % static_cast<uint32_t>(hi - lo + 1)); }
 };
 
+/// FNV-1a over 32-bit words, a byte at a time from the least significant: every kernelcheck digest.
+struct Fnv {
+    uint32_t h = 2166136261u;
+    void add(uint32_t v) {
+        for (int i = 0; i < 4; ++i) { h ^= (v >> (8 * i)) & 0xFFu; h *= 16777619u; }
+    }
+};
+
 /// Buffers of one case: depth and colour rows share the stride, colour sits `offset` bytes after depth.
 struct Buffers {
     uint16_t depth[kMaxRows * kWidth];
@@ -110,22 +118,19 @@ inline Case make_case(Rng& rng, Buffers& b) {
 /// the first, so the digest is address-free).
 inline uint32_t digest(const Buffers& b, const Case& cs, const uint16_t* first_row, const uint16_t* after1,
                        const uint16_t* after2) {
-    uint32_t h = 2166136261u;
-    auto add = [&h](uint32_t v) {
-        for (int i = 0; i < 4; ++i) { h ^= (v >> (8 * i)) & 0xFFu; h *= 16777619u; }
-    };
-    for (int32_t i = 0; i < kMaxRows * kWidth; ++i) add(uint32_t{b.depth[i]} | (uint32_t{b.color[i]} << 16));
+    Fnv fnv;
+    for (int32_t i = 0; i < kMaxRows * kWidth; ++i) fnv.add(uint32_t{b.depth[i]} | (uint32_t{b.color[i]} << 16));
     const hider::RowKernel& k = cs.t.k;
     const uint32_t fields[] = {static_cast<uint32_t>(k.lx), static_cast<uint32_t>(k.lg), k.lz,
                                static_cast<uint32_t>(k.rx), static_cast<uint32_t>(k.rg), static_cast<uint32_t>(k.la),
                                static_cast<uint32_t>(k.lm), static_cast<uint32_t>(k.lstep), k.ldz,
                                static_cast<uint32_t>(k.ra), static_cast<uint32_t>(k.rm), static_cast<uint32_t>(k.rstep),
                                static_cast<uint32_t>(cs.t.row)};
-    for (uint32_t f : fields) add(f);
+    for (uint32_t f : fields) fnv.add(f);
     const intptr_t stride = cs.target.stride_bytes;
-    add(static_cast<uint32_t>((reinterpret_cast<intptr_t>(after1) - reinterpret_cast<intptr_t>(first_row)) / stride));
-    add(static_cast<uint32_t>((reinterpret_cast<intptr_t>(after2) - reinterpret_cast<intptr_t>(first_row)) / stride));
-    return h;
+    fnv.add(static_cast<uint32_t>((reinterpret_cast<intptr_t>(after1) - reinterpret_cast<intptr_t>(first_row)) / stride));
+    fnv.add(static_cast<uint32_t>((reinterpret_cast<intptr_t>(after2) - reinterpret_cast<intptr_t>(first_row)) / stride));
+    return fnv.h;
 }
 
 /// Digest of every case run through `run` (a function of (KernelTriangle&, zrow, row_stop, KernelTarget)

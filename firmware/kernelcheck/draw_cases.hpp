@@ -88,16 +88,13 @@ int run_draw_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
             hider::FrameStats st;
             if (pass == 0) draw(c.view, mesh, verts, frame, opt, st);
             else twin(c.view, mesh, verts, frame, opt, st);
-            uint32_t h = 2166136261u;
-            auto add = [&h](uint32_t x) {
-                for (int k = 0; k < 4; ++k) { h ^= (x >> (8 * k)) & 0xFFu; h *= 16777619u; }
-            };
+            Fnv fnv;
             const uint32_t n = static_cast<uint32_t>(c.view.width * c.view.height);
-            for (uint32_t k = 0; k < n; ++k) add(b.color[k] | (uint32_t{b.depth[k]} << 16));
+            for (uint32_t k = 0; k < n; ++k) fnv.add(b.color[k] | (uint32_t{b.depth[k]} << 16));
             const uint32_t counts[] = {st.triangles_in, st.triangles_drawn, st.triangles_culled, st.triangles_clipped,
                                        st.triangles_outside};
-            for (uint32_t x : counts) add(x);
-            digests[pass] = h;
+            for (uint32_t x : counts) fnv.add(x);
+            digests[pass] = fnv.h;
         }
         out[i] = digests[0];
         if (digests[1] != digests[0] && first_difference < 0) first_difference = i;

@@ -70,33 +70,30 @@ inline SetupCase make_setup_case(Rng& rng) {
 
 /// FNV-1a of a set-up's outcome and the fields the kernel reads (those the outcome defines).
 inline uint32_t setup_digest(hider::KernelSetup s, const hider::KernelTriangle& t) {
-    uint32_t h = 2166136261u;
-    auto add = [&h](uint32_t v) {
-        for (int i = 0; i < 4; ++i) { h ^= (v >> (8 * i)) & 0xFFu; h *= 16777619u; }
-    };
-    add(static_cast<uint32_t>(s));
-    if (s != hider::KernelSetup::kernel) return h;
+    Fnv fnv;
+    fnv.add(static_cast<uint32_t>(s));
+    if (s != hider::KernelSetup::kernel) return fnv.h;
     const int32_t rows[] = {t.top, t.row, t.mid, t.end};
-    for (int32_t r : rows) add(static_cast<uint32_t>(r));
-    if (t.row >= t.end) return h;
+    for (int32_t r : rows) fnv.add(static_cast<uint32_t>(r));
+    if (t.row >= t.end) return fnv.h;
     const hider::RowKernel& k = t.k;
     const uint32_t fields[] = {static_cast<uint32_t>(k.lx),    static_cast<uint32_t>(k.lg), k.lz,
                                static_cast<uint32_t>(k.rx),    static_cast<uint32_t>(k.rg), static_cast<uint32_t>(k.la),
                                static_cast<uint32_t>(k.lm),    static_cast<uint32_t>(k.lstep), k.ldz,
                                static_cast<uint32_t>(k.ra),    static_cast<uint32_t>(k.rm), static_cast<uint32_t>(k.rstep),
                                k.dzdx, t.next_left ? 1u : 0u};
-    for (uint32_t f : fields) add(f);
+    for (uint32_t f : fields) fnv.add(f);
     if (t.row < t.mid && t.mid < t.end) {  // the lower short edge takes over inside the rows
         const uint32_t next[] = {static_cast<uint32_t>(t.next_x), static_cast<uint32_t>(t.next_g),
                                  static_cast<uint32_t>(t.next_a), static_cast<uint32_t>(t.next_m),
                                  static_cast<uint32_t>(t.next_step)};
-        for (uint32_t f : next) add(f);
+        for (uint32_t f : next) fnv.add(f);
         if (t.next_left) {
-            add(t.next_z);
-            add(t.next_dz);
+            fnv.add(t.next_z);
+            fnv.add(t.next_dz);
         }
     }
-    return h;
+    return fnv.h;
 }
 
 /// Digest of every set-up case through `setup` (a function of (a, b, c, KernelSetupIo&) returning a

@@ -77,15 +77,13 @@ inline void make_vertex_case(Rng& rng, VertexCase& c) {
 
 /// FNV-1a of a batch's projected vertices.
 inline uint32_t vertex_digest(const hider::ScreenVertex* s) {
-    uint32_t h = 2166136261u;
+    Fnv fnv;
     for (int i = 0; i < kVertexBatch; ++i) {
-        const uint32_t words[] = {static_cast<uint32_t>(static_cast<uint16_t>(s[i].x)) |
-                                      (static_cast<uint32_t>(static_cast<uint16_t>(s[i].y)) << 16),
-                                  s[i].z};
-        for (uint32_t w : words)
-            for (int b = 0; b < 4; ++b) { h ^= (w >> (8 * b)) & 0xFFu; h *= 16777619u; }
+        fnv.add(static_cast<uint32_t>(static_cast<uint16_t>(s[i].x)) |
+                (static_cast<uint32_t>(static_cast<uint16_t>(s[i].y)) << 16));
+        fnv.add(s[i].z);
     }
-    return h;
+    return fnv.h;
 }
 
 /// The general per-position path (clip codes, then project()): the twin of the assembly loops.
