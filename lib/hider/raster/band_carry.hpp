@@ -91,8 +91,7 @@ public:
         loop_.base_r = opt.base.r;
         loop_.base_g = opt.base.g;
         loop_.base_b = opt.base.b;
-        loop_.stride_bytes = kband_.stride_bytes;
-        loop_.target = &bt_.target;
+        loop_.target = bt_.target;
         loop_.pool = pool_;
         loop_.free_base = free_base_;
 #endif

@@ -21,9 +21,8 @@ struct BandLoopArm {
     uint32_t base_r, base_g, base_b;  ///< 32, 36, 40
     uint16_t* depth;                  ///< 44: the band's first depth row
     int32_t y0;                       ///< 48: the band's first row
-    int32_t stride_bytes;             ///< 52
-    int32_t y1;                       ///< 56: the row after the band
-    const KernelTarget* target;       ///< 60
+    int32_t y1;                       ///< 52: the row after the band
+    KernelTarget target;              ///< 56: colour offset, 60: stride
     KernelTriangle* pool;             ///< 64: the carried slots
     const uint8_t* free_base;         ///< 68: the free-slot stack's bottom
     uint8_t* free_top;                ///< 72, in and out
@@ -37,12 +36,12 @@ static_assert(sizeof(void*) != 4 ||
                   (offsetof(BandLoopArm, verts) == 4 && offsetof(BandLoopArm, next) == 8 && offsetof(BandLoopArm, io) == 12 &&
                    offsetof(BandLoopArm, normals_offset) == 16 && offsetof(BandLoopArm, view_z) == 20 &&
                    offsetof(BandLoopArm, base_r) == 32 && offsetof(BandLoopArm, depth) == 44 &&
-                   offsetof(BandLoopArm, y0) == 48 && offsetof(BandLoopArm, stride_bytes) == 52 &&
-                   offsetof(BandLoopArm, y1) == 56 && offsetof(BandLoopArm, target) == 60 &&
-                   offsetof(BandLoopArm, pool) == 64 && offsetof(BandLoopArm, free_base) == 68 &&
-                   offsetof(BandLoopArm, free_top) == 72 && offsetof(BandLoopArm, nxt) == 76 &&
-                   offsetof(BandLoopArm, count_from) == 80 && offsetof(BandLoopArm, drawn) == 84 &&
-                   offsetof(BandLoopArm, cur) == 88 && offsetof(BandLoopArm, cur_end) == 92),
+                   offsetof(BandLoopArm, y0) == 48 && offsetof(BandLoopArm, y1) == 52 &&
+                   offsetof(BandLoopArm, target) == 56 && offsetof(BandLoopArm, pool) == 64 &&
+                   offsetof(BandLoopArm, free_base) == 68 && offsetof(BandLoopArm, free_top) == 72 &&
+                   offsetof(BandLoopArm, nxt) == 76 && offsetof(BandLoopArm, count_from) == 80 &&
+                   offsetof(BandLoopArm, drawn) == 84 && offsetof(BandLoopArm, cur) == 88 &&
+                   offsetof(BandLoopArm, cur_end) == 92),
               "band loop layout: every offset the assembly uses");
 static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records are 96 bytes");
 }  // namespace detail
@@ -53,16 +52,19 @@ static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records 
 /// carried set-ups are done, else a listed triangle it hands back (a vertex outside a clip plane, no free
 /// slot, a generic set-up), the carried ones before it resumed. Every listed triangle has a non-zero
 /// area and is not culled (bin_triangles()). Registers: r4 the listed triangle, r5 d, r6 the next carried
-/// triangle (0xFFFF: none; a resumed record while resuming), r7 the vertices, r8 the triangles, r9
-/// d->io, r10 the area (the slot order pointer while resuming), r11 the slot's record (its slot while
-/// resuming); on the stack the three vertex pointers.
+/// triangle (0xFFFF: none), r7 the vertices, r8 the triangles, r9 d->io, r10 the area, r11 the slot's
+/// record; on the stack the three vertex pointers, then d and the listed triangle. A run of resumes
+/// keeps its state on the stack and in d (the slot order pointer at sp + 12) and draws each record's
+/// rows with run_kernel_triangle_v7m()'s row loop (HIDER_V7M_ROWS) inline: every one is on the band's
+/// first row.
 __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"
-        "sub    sp, #12\n\t"
+        "sub    sp, #24\n\t"
         "mov    r4, r0\n\t"
         "mov    r5, r1\n\t"
+        "str    r5, [sp, #16]\n\t"
         "ldr    r8, [r5, #0]\n\t"
         "ldr    r7, [r5, #4]\n\t"
         "ldr    r9, [r5, #12]\n\t"
@@ -140,12 +142,12 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "strh   r4, [r11, %[tri]]\n\t"          // the mesh triangle
         "ldr    r1, [r5, #48]\n\t"
         "sub    r0, r0, r1\n\t"
-        "ldr    r1, [r5, #52]\n\t"
+        "ldr    r1, [r5, #60]\n\t"
         "ldr    r2, [r5, #44]\n\t"
         "mla    r1, r0, r1, r2\n\t"             // the depth row of `row`
         "mov    r0, r11\n\t"
-        "ldr    r2, [r5, #56]\n\t"
-        "ldr    r3, [r5, #60]\n\t"
+        "ldr    r2, [r5, #52]\n\t"
+        "add    r3, r5, #56\n\t"
         "bl     %c[kernel]\n\t"
         "ldrsh  r0, [r11, %[row]]\n\t"
         "ldrsh  r1, [r11, %[end]]\n\t"
@@ -158,53 +160,97 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "strb   r1, [r2], #1\n\t"               // for the next band
         "str    r2, [r5, #76]\n\t"
         "b      8b\n"
+        "90:\n\t"
+        "mov    r0, r4\n\t"
+        "add    sp, #24\n\t"
+        "pop    {r4-r11, pc}\n"
         "50:\n\t"                               // resume the carried set-ups before r4
         "movw   r0, #0xFFFF\n\t"
         "cmp    r6, r0\n\t"
-        "beq    90f\n\t"                        // none left: r4 is the list's end
+        "beq    90b\n\t"                        // none left: r4 is the list's end
+        "str    r4, [sp, #20]\n\t"
+        "mov    r12, r5\n\t"
         "ldr    r10, [r5, #88]\n"
-        "51:\n\t"
-        "ldrb   r11, [r10]\n\t"                 // its slot
-        "ldr    r1, [r5, #64]\n\t"
-        "add    r0, r11, r11, lsl #1\n\t"
-        "add    r6, r1, r0, lsl #5\n\t"        // its record
-        "ldrh   r0, [r6, %[tri]]\n\t"
-        "cmp    r0, r4\n\t"
-        "bhs    55f\n\t"                        // after the listed triangle: stop
-        "mov    r0, r6\n\t"
-        "ldr    r1, [r5, #44]\n\t"              // it is on the band's first row
-        "ldr    r2, [r5, #56]\n\t"
-        "ldr    r3, [r5, #60]\n\t"
-        "bl     %c[kernel]\n\t"
-        "ldrsh  r0, [r6, %[row]]\n\t"
-        "ldrsh  r1, [r6, %[end]]\n\t"
-        "cmp    r0, r1\n\t"
+        "61:\n\t"                               // r10 the slot order, r12 d, r4 the listed triangle
+        "ldrb   r11, [r10], #1\n\t"             // its slot
+        "ldr    r0, [r12, #64]\n\t"
+        "add    r9, r11, r11, lsl #1\n\t"
+        "add    r0, r0, r9, lsl #5\n\t"         // its record
+        "ldrh   r9, [r0, %[tri]]\n\t"
+        "cmp    r9, r4\n\t"
+        "bhs    65f\n\t"                        // after the listed triangle: stop
+        "str    r10, [sp, #12]\n\t"
+        // run_kernel_triangle_v7m()'s entry for a record on the band's first row, to the band's end.
+        "ldrsh  r6, [r0, %[end]]\n\t"
+        "ldrsh  r5, [r0, %[mid]]\n\t"
+        "ldrd   r4, r2, [r12, #48]\n\t"         // y0, y1
+        "ldr    r9, [r12, #44]\n\t"             // the depth row of y0
+        "ldrd   r7, r3, [r12, #56]\n\t"         // colour offset, stride
+        "cmp    r6, r2\n\t"
+        "it     gt\n\t"
+        "movgt  r6, r2\n\t"                     // stop = min(end, y1)
+        "strh   r6, [r0, %[row]]\n\t"           // the row after this band
+        "sub    r6, r6, r4\n\t"                 // n rows (a carried set-up has some left)
+        "mla    r11, r6, r3, r9\n\t"            // the depth row after the last
+        "mov    r8, #-1\n\t"                    // rows after a switch: none
+        "subs   r1, r5, r4\n\t"                 // m = mid - y0
+        "ble    62f\n\t"                        // on or below the middle row
+        "ldrsh  r2, [r0, %[end]]\n\t"
+        "cmp    r5, r2\n\t"
+        "bge    62f\n\t"                        // no lower short edge
+        "cmp    r1, r6\n\t"
+        "bgt    62f\n\t"                        // the middle row lies past this band
+        "sub    r8, r6, r1\n\t"
+        "mov    r6, r1\n\t"
+        "mla    r1, r1, r3, r9\n\t"
+        "str    r1, [sp]\n"                     // the middle row's depth row
+        "62:\n\t"
+        "strd   r8, r11, [sp, #4]\n\t"
+        "ldrd   r8, r10, [r0, %[dzdx]]\n\t"     // dzdx, colour
+        "ldm    r0, {r1-r5}\n\t"                // lx lg lz rx rg
+        "add    r1, r1, r9\n\t"                 // lp
+        "add    r4, r4, r9\n\t"                 // rp
+        "add    r0, r0, %[ra]\n"
+        HIDER_V7M_ROWS
+        "ldrsh  r1, [r0, %[row]]\n\t"
+        "ldrsh  r2, [r0, %[end]]\n\t"
+        "ldrd   r10, r12, [sp, #12]\n\t"        // the slot order, d
+        "ldrb   r11, [r10, #-1]\n\t"            // the record's slot
+        "cmp    r1, r2\n\t"
         "ite    lt\n\t"
-        "ldrlt  r0, [r5, #76]\n\t"              // rows remain: to the next band's slots
-        "ldrge  r0, [r5, #72]\n\t"              // done: back to the free slots
-        "strb   r11, [r0], #1\n\t"
-        "ite    lt\n\t"
-        "strlt  r0, [r5, #76]\n\t"
-        "strge  r0, [r5, #72]\n\t"
-        "add    r10, r10, #1\n\t"
-        "ldr    r0, [r5, #92]\n\t"
-        "cmp    r10, r0\n\t"
-        "bne    51b\n\t"
-        "movw   r6, #0xFFFF\n\t"               // all resumed
-        "b      56f\n"
-        "55:\n\t"
-        "mov    r6, r0\n"                       // the next carried triangle
-        "56:\n\t"
-        "str    r10, [r5, #88]\n\t"
+        "addlt  r3, r12, #76\n\t"               // rows remain: to the next band's slots
+        "addge  r3, r12, #72\n\t"               // done: back to the free slots
+        "ldr    r2, [r3]\n\t"
+        "strb   r11, [r2], #1\n\t"
+        "str    r2, [r3]\n\t"
+        "ldr    r4, [sp, #20]\n\t"
+        "ldr    r11, [r12, #92]\n\t"
+        "cmp    r10, r11\n\t"
+        "bne    61b\n\t"
+        "movw   r6, #0xFFFF\n\t"                // all resumed
+        "b      66f\n"
+        "65:\n\t"
+        "mov    r6, r9\n\t"                     // the next carried triangle
+        "sub    r10, r10, #1\n"                 // its slot stays in the order
+        "66:\n\t"
+        "str    r10, [r12, #88]\n\t"
+        "mov    r5, r12\n\t"
+        "ldr    r8, [r5, #0]\n\t"
+        "ldr    r7, [r5, #4]\n\t"
+        "ldr    r9, [r5, #12]\n\t"
         "b      1b\n"
-        "90:\n\t"
-        "mov    r0, r4\n\t"
-        "add    sp, #12\n\t"
-        "pop    {r4-r11, pc}\n"
         :
         : [setup] "i"(kernel_setup_v7m), [kernel] "i"(run_kernel_triangle_v7m),
           [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
-          [end] "i"(offsetof(KernelTriangle, end)), [color] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, color)),
+          [mid] "i"(offsetof(KernelTriangle, mid)), [end] "i"(offsetof(KernelTriangle, end)),
+          [color] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, color)),
+          [dzdx] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, dzdx)), [ra] "i"(offsetof(RowKernel, ra)),
+          [n_left] "i"(offsetof(KernelTriangle, next_left) - offsetof(RowKernel, ra)),
+          [n_x] "i"(offsetof(KernelTriangle, next_x) - offsetof(RowKernel, ra)),
+          [n_g] "i"(offsetof(KernelTriangle, next_g) - offsetof(RowKernel, ra)),
+          [n_a] "i"(offsetof(KernelTriangle, next_a) - offsetof(RowKernel, ra)),
+          [n_z] "i"(offsetof(KernelTriangle, next_z) - offsetof(RowKernel, ra)),
+          [n_dz] "i"(offsetof(KernelTriangle, next_dz) - offsetof(RowKernel, ra)),
           [tri] "i"(offsetof(KernelTriangle, tri)), [io_area] "i"(offsetof(KernelSetupIo, area)),
           [io_out] "i"(offsetof(KernelSetupIo, out)), [view_z0] "i"(offsetof(detail::BandLoopArm, view_z)),
           [view_z1] "i"(offsetof(detail::BandLoopArm, view_z) + 4), [view_z2] "i"(offsetof(detail::BandLoopArm, view_z) + 8),

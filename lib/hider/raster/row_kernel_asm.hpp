@@ -12,6 +12,83 @@
 namespace hider {
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+/// HIDER_V7M_ROWS: the row loop of run_kernel_triangle_v7m(), shared with draw_band_v7m()'s resumes
+/// (band_loop_asm.hpp). Entry: r0 the record + ra, r1..r5 lp lg lz rp rg, r6 rows before a switch, r7
+/// the colour offset, r8 dzdx, r10 the colour; at sp the middle row's depth pointer, the rows after the
+/// switch (-1: none) and the depth row after the last. Exit: the record (r0) holds the next row's edges
+/// and depth, r12 that row's depth pointer (every other register clobbered). Uses local labels 2..9 and
+/// the operands ra, n_left, n_x, n_g, n_a, n_z, n_dz.
+#define HIDER_V7M_ROWS \
+    "2:\n\t"                                 /* row */ \
+    "subs   r11, r1, r4\n\t"                 /* lp - rp: negative, counts up to 0 */ \
+    "bge    4f\n\t"                          /* empty span */ \
+    "add    r9, r4, r7\n\t"                  /* the colour end */ \
+    "mov    lr, r3\n"                        /* z = lz */ \
+    "3:\n\t"                                 /* pixel */ \
+    "ldrh   r12, [r4, r11]\n\t" \
+    "cmp    r12, lr, lsr #16\n\t" \
+    "bls    5f\n\t"                          /* stored depth <= ours: keep it */ \
+    "lsr    r12, lr, #16\n\t" \
+    "strh   r12, [r4, r11]\n\t" \
+    "strh   r10, [r9, r11]\n" \
+    "5:\n\t" \
+    "add    lr, lr, r8\n\t" \
+    "adds   r11, r11, #2\n\t" \
+    "bne    3b\n" \
+    "4:\n\t"                                 /* left edge: g += m, p += step, z += dz_row, then correct */ \
+    "ldmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
+    "adds   r2, r2, r11\n\t" \
+    "add    r1, r1, r12\n\t" \
+    "add    r3, r3, lr\n\t" \
+    "bmi    5f\n\t"                          /* g < 0: no correction */ \
+    "sub    r2, r2, r9\n\t" \
+    "sub    r1, r1, #2\n\t" \
+    "sub    r3, r3, r8\n"                    /* z -= dzdx */ \
+    "5:\n\t"                                 /* right edge */ \
+    "ldm    r0, {r9, r11, r12}\n\t"          /* ra rm rstep */ \
+    "adds   r5, r5, r11\n\t" \
+    "add    r4, r4, r12\n\t" \
+    "bmi    6f\n\t" \
+    "sub    r5, r5, r9\n\t" \
+    "sub    r4, r4, #2\n" \
+    "6:\n\t" \
+    "subs   r6, r6, #1\n\t" \
+    "bne    2b\n\t" \
+    "ldr    r6, [sp, #4]\n\t"                /* rows after the switch */ \
+    "cmp    r6, #0\n\t" \
+    "blt    8f\n\t"                          /* no switch in this call */ \
+    "ldr    r12, [sp]\n\t"                   /* the middle row */ \
+    "ldrb   r9, [r0, %[n_left]]\n\t" \
+    "cmp    r9, #0\n\t" \
+    "beq    7f\n\t" \
+    "ldr    r9, [r0, %[n_x]]\n\t"            /* the lower edge on the left */ \
+    "add    r1, r12, r9\n\t" \
+    "ldr    r2, [r0, %[n_g]]\n\t" \
+    "ldr    r3, [r0, %[n_z]]\n\t" \
+    "add    r9, r0, %[n_a]\n\t" \
+    "ldm    r9, {r9, r11, r12}\n\t"          /* a m step */ \
+    "ldr    lr, [r0, %[n_dz]]\n\t" \
+    "stmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
+    "b      9f\n" \
+    "7:\n\t" \
+    "ldr    r9, [r0, %[n_x]]\n\t"            /* the lower edge on the right */ \
+    "add    r4, r12, r9\n\t" \
+    "ldr    r5, [r0, %[n_g]]\n\t" \
+    "add    r9, r0, %[n_a]\n\t" \
+    "ldm    r9, {r9, r11, r12}\n\t" \
+    "stm    r0, {r9, r11, r12}\n"            /* ra rm rstep */ \
+    "9:\n\t" \
+    "mov    r9, #-1\n\t" \
+    "str    r9, [sp, #4]\n\t"                /* switched */ \
+    "cmp    r6, #0\n\t" \
+    "bne    2b\n" \
+    "8:\n\t" \
+    "ldr    r12, [sp, #8]\n\t"               /* the depth row after the last */ \
+    "sub    r1, r1, r12\n\t"                 /* back to offsets in that row */ \
+    "sub    r4, r4, r12\n\t" \
+    "sub    r0, r0, %[ra]\n\t" \
+    "stm    r0, {r1-r5}\n\t"
+
 /// Thumb-2. In the row loop: r0 the right edge's constants (offset 36) with the left edge's just below
 /// (load-multiple decrement-before) and `next` above, r1..r5 lp lg lz rp rg, r6 rows left in this
 /// phase, r7 colour offset, r8 dz, r10 colour; on the stack the middle row's depth pointer, the rows
@@ -32,100 +109,31 @@ __attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_v7m(Kernel
         "subs   r2, r6, r4\n\t"             // n rows
         "ble    95f\n\t"
         "strh   r6, [r0, %[row]]\n\t"       // the row after this call
+        "ldrd   r9, r12, [r3]\n\t"          // colour offset, stride
         "mov    r6, r2\n\t"                 // rows before a switch: all
         "mov    r8, #-1\n\t"                // rows after it: none
         "subs   r7, r5, r4\n\t"             // m = mid - row
         "ble    1f\n\t"                     // on or below the middle row
-        "ldrsh  r9, [r0, %[end]]\n\t"
-        "cmp    r5, r9\n\t"
+        "ldrsh  r11, [r0, %[end]]\n\t"
+        "cmp    r5, r11\n\t"
         "bge    1f\n\t"                     // no lower short edge
         "cmp    r7, r2\n\t"
         "bgt    1f\n\t"                     // the middle row lies past this call
         "mov    r6, r7\n\t"
-        "sub    r8, r2, r7\n"
+        "sub    r8, r2, r7\n\t"
+        "mla    r7, r7, r12, r1\n"           // the middle row's depth row
         "1:\n\t"
-        "ldrd   r9, r12, [r3]\n\t"          // colour offset, stride
         "mla    r11, r2, r12, r1\n\t"       // the depth row after the last
-        "mla    r7, r7, r12, r1\n\t"        // the middle row's (with a switch)
         "push   {r7, r8, r11}\n\t"
         "mov    r7, r9\n\t"
         "mov    r9, r1\n\t"
-        "ldr    r8, [r0, %[dzdx]]\n\t"
-        "ldr    r10, [r0, %[color]]\n\t"
+        "ldrd   r8, r10, [r0, %[dzdx]]\n\t" // dzdx, colour
         "ldm    r0, {r1-r5}\n\t"            // lx lg lz rx rg
         "add    r1, r1, r9\n\t"             // lp
         "add    r4, r4, r9\n\t"             // rp
         "add    r0, r0, %[ra]\n"            // r0: the right edge's constants
-        "2:\n\t"                            // row
-        "subs   r11, r1, r4\n\t"            // lp - rp: negative, counts up to 0
-        "bge    4f\n\t"                     // empty span
-        "add    r9, r4, r7\n\t"             // the colour end
-        "mov    lr, r3\n"                   // z = lz
-        "3:\n\t"                            // pixel
-        "ldrh   r12, [r4, r11]\n\t"
-        "cmp    r12, lr, lsr #16\n\t"
-        "bls    5f\n\t"                     // stored depth <= ours: keep it
-        "lsr    r12, lr, #16\n\t"
-        "strh   r12, [r4, r11]\n\t"
-        "strh   r10, [r9, r11]\n"
-        "5:\n\t"
-        "add    lr, lr, r8\n\t"
-        "adds   r11, r11, #2\n\t"
-        "bne    3b\n"
-        "4:\n\t"                            // left edge: g += m, p += step, z += dz_row, then correct
-        "ldmdb  r0, {r9, r11, r12, lr}\n\t" // la lm lstep ldz
-        "adds   r2, r2, r11\n\t"
-        "add    r1, r1, r12\n\t"
-        "add    r3, r3, lr\n\t"
-        "bmi    5f\n\t"                     // g < 0: no correction
-        "sub    r2, r2, r9\n\t"
-        "sub    r1, r1, #2\n\t"
-        "sub    r3, r3, r8\n"               // z -= dzdx
-        "5:\n\t"                            // right edge
-        "ldm    r0, {r9, r11, r12}\n\t"     // ra rm rstep
-        "adds   r5, r5, r11\n\t"
-        "add    r4, r4, r12\n\t"
-        "bmi    6f\n\t"
-        "sub    r5, r5, r9\n\t"
-        "sub    r4, r4, #2\n"
-        "6:\n\t"
-        "subs   r6, r6, #1\n\t"
-        "bne    2b\n\t"
-        "ldr    r6, [sp, #4]\n\t"           // rows after the switch
-        "cmp    r6, #0\n\t"
-        "blt    8f\n\t"                     // no switch in this call
-        "ldr    r12, [sp]\n\t"              // the middle row
-        "ldrb   r9, [r0, %[n_left]]\n\t"
-        "cmp    r9, #0\n\t"
-        "beq    7f\n\t"
-        "ldr    r9, [r0, %[n_x]]\n\t"       // the lower edge on the left
-        "add    r1, r12, r9\n\t"
-        "ldr    r2, [r0, %[n_g]]\n\t"
-        "ldr    r3, [r0, %[n_z]]\n\t"
-        "add    r9, r0, %[n_a]\n\t"
-        "ldm    r9, {r9, r11, r12}\n\t"     // a m step
-        "ldr    lr, [r0, %[n_dz]]\n\t"
-        "stmdb  r0, {r9, r11, r12, lr}\n\t" // la lm lstep ldz
-        "b      9f\n"
-        "7:\n\t"
-        "ldr    r9, [r0, %[n_x]]\n\t"       // the lower edge on the right
-        "add    r4, r12, r9\n\t"
-        "ldr    r5, [r0, %[n_g]]\n\t"
-        "add    r9, r0, %[n_a]\n\t"
-        "ldm    r9, {r9, r11, r12}\n\t"
-        "stm    r0, {r9, r11, r12}\n"       // ra rm rstep
-        "9:\n\t"
-        "mov    r9, #-1\n\t"
-        "str    r9, [sp, #4]\n\t"           // switched
-        "cmp    r6, #0\n\t"
-        "bne    2b\n"
-        "8:\n\t"
-        "ldr    r12, [sp, #8]\n\t"          // the depth row after the last
+        HIDER_V7M_ROWS
         "add    sp, sp, #12\n\t"
-        "sub    r1, r1, r12\n\t"            // back to offsets in that row
-        "sub    r4, r4, r12\n\t"
-        "sub    r0, r0, %[ra]\n\t"
-        "stm    r0, {r1-r5}\n\t"
         "mov    r0, r12\n\t"
         "pop    {r4-r11, pc}\n"
         "95:\n\t"
