@@ -44,6 +44,7 @@ static_assert(sizeof(void*) != 4 ||
                    offsetof(BandLoopArm, cur_end) == 92),
               "band loop layout: every offset the assembly uses");
 static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records are 96 bytes");
+static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(KernelSetupIo, area) + sizeof(int32_t), "io area and out: one strd");
 }  // namespace detail
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
@@ -95,8 +96,7 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "cbz    r3, 91f\n\t"
         "ldr    r3, [r2, #4]\n\t"
         "cbz    r3, 91f\n\t"
-        "ldr    r3, [r5, #72]\n\t"              // free_top
-        "ldr    r12, [r5, #68]\n\t"             // free_base
+        "ldrd   r12, r3, [r5, #68]\n\t"         // free_base, free_top
         "cmp    r3, r12\n\t"
         "beq    90f\n\t"                        // no free slot: back to C++ (the spare)
         "ldrb   r3, [r3, #-1]\n\t"              // the slot on top
@@ -104,8 +104,7 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "add    r3, r3, r3, lsl #1\n\t"
         "add    r11, r12, r3, lsl #5\n\t"       // its record: pool + 96 s
         HIDER_V7M_AREA
-        "str    r10, [r9, %[io_area]]\n\t"
-        "str    r11, [r9, %[io_out]]\n\t"
+        "strd   r10, r11, [r9, %[io_area]]\n\t" // io->area, io->out
         "ldm    sp, {r0, r1, r2}\n\t"
         "mov    r3, r9\n\t"
         "bl     %c[setup]\n\t"
@@ -121,17 +120,13 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "b      90f\n"                           // within the reach of cbz
         "3:\n\t"
         "ldrsh  r0, [r11, %[top]]\n\t"
-        "ldr    r1, [r5, #80]\n\t"
+        "ldrd   r1, r2, [r5, #80]\n\t"          // count_from, drawn
         "cmp    r0, r1\n\t"
-        "blt    4f\n\t"
-        "ldr    r1, [r5, #84]\n\t"
-        "adds   r1, r1, #1\n\t"
-        "str    r1, [r5, #84]\n"                // drawn: its first row is in this band
-        "4:\n\t"
-        "ldrsh  r0, [r11, %[row]]\n\t"
-        "ldrsh  r1, [r11, %[end]]\n\t"
-        "cmp    r0, r1\n\t"
-        "bge    8b\n\t"                         // no row: the slot stays free
+        "itt    ge\n\t"
+        "addge  r2, r2, #1\n\t"
+        "strge  r2, [r5, #84]\n\t"              // drawn: its first row is in this band
+        // A set-up without a row in the band is rare: the kernel returns at once and the test after it
+        // keeps the slot free.
         // FaceShading::color565(), as in draw_flat_v7m.
         "add    r1, r4, r4, lsl #1\n\t"
         "add    r1, r8, r1, lsl #1\n\t"
@@ -140,10 +135,10 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         HIDER_V7M_COLOR565
         "str    r1, [r11, %[color]]\n\t"        // k.color
         "strh   r4, [r11, %[tri]]\n\t"          // the mesh triangle
-        "ldr    r1, [r5, #48]\n\t"
+        "ldrsh  r0, [r11, %[row]]\n\t"
+        "ldrd   r2, r1, [r5, #44]\n\t"          // the band's first depth row, y0
         "sub    r0, r0, r1\n\t"
         "ldr    r1, [r5, #60]\n\t"
-        "ldr    r2, [r5, #44]\n\t"
         "mla    r1, r0, r1, r2\n\t"             // the depth row of `row`
         "mov    r0, r11\n\t"
         "ldr    r2, [r5, #52]\n\t"
