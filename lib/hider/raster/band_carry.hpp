@@ -127,8 +127,10 @@ public:
                 cs_.nxt = loop_.nxt;
                 if (t == kNoTriangle) break;
                 const uint16_t tri = static_cast<uint16_t>(t);
-                t = next_[t];
-                new_triangle(tri);
+                const uint32_t flags = t;
+                t = next_[tri];
+                if ((flags & kGenericHandBack) != 0) generic_again(tri);  // the assembly's set-up said generic
+                else new_triangle(tri);
             }
             cs_.cur = loop_.cur;
             st_.triangles_drawn += loop_.drawn;
@@ -190,6 +192,20 @@ private:
         ++out_.set_up_again;
         if (next_head_ != nullptr) insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
     }
+
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    /// A listed triangle whose set-up draw_band_v7m() found generic: drawn by draw_generic() and
+    /// re-linked when it continues, as new_triangle() does after its own set-up.
+    __attribute__((noinline)) void generic_again(uint16_t tri) {
+        const Tri& t = mesh_.tris[tri];
+        const ScreenVertex& a = verts_[t.v[0]];
+        const ScreenVertex& b = verts_[t.v[1]];
+        const ScreenVertex& c = verts_[t.v[2]];
+        if (!draw_generic(a, b, c, TriangleRaster::signed_area(a, b, c), tri)) return;
+        ++out_.set_up_again;
+        if (next_head_ != nullptr) insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
+    }
+#endif
 
     /// A whole triangle of the lists (bin_triangles() linked only those of non-zero area, not culled),
     /// set up in a free slot or the spare; true when it continues into the next band without a slot.

@@ -44,6 +44,8 @@ static_assert(sizeof(void*) != 4 ||
                    offsetof(BandLoopArm, cur_end) == 92),
               "band loop layout: every offset the assembly uses");
 static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records are 96 bytes");
+/// draw_band_v7m() hands a listed triangle back with this bit set when its set-up said generic.
+constexpr uint32_t kGenericHandBack = 0x10000;
 static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(KernelSetupIo, area) + sizeof(int32_t), "io area and out: one strd");
 }  // namespace detail
 
@@ -51,7 +53,7 @@ static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(Ker
 /// Draws the band from listed triangle t on (following d->next), resuming every carried set-up from
 /// d->cur whose triangle comes before the next listed one; returns kNoTriangle when the list and the
 /// carried set-ups are done, else a listed triangle it hands back (a vertex outside a clip plane, no free
-/// slot, a generic set-up), the carried ones before it resumed. Every listed triangle has a non-zero
+/// slot, a generic set-up: with kGenericHandBack set), the carried ones before it resumed. Every listed triangle has a non-zero
 /// area and is not culled (bin_triangles()). Registers: r4 the listed triangle, r5 d, r6 the next carried
 /// triangle (0xFFFF: none), r7 the vertices, r8 the triangles, r9 d->io, r10 the area, r11 the slot's
 /// record; on the stack the three vertex pointers, then d and the listed triangle. A run of resumes
@@ -111,7 +113,7 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "cmp    r0, #1\n\t"
         "beq    3f\n\t"
         "cmp    r0, #0\n\t"
-        "bne    90f\n"                          // generic: back to C++
+        "bne    92f\n"                          // generic: back to C++, flagged
         "8:\n\t"                                // the next listed triangle
         "ldr    r0, [r5, #8]\n\t"
         "ldrh   r4, [r0, r4, lsl #1]\n\t"
@@ -155,10 +157,13 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "strb   r1, [r2], #1\n\t"               // for the next band
         "str    r2, [r5, #76]\n\t"
         "b      8b\n"
+        "92:\n\t"
+        "orr    r4, r4, #0x10000\n"             // kGenericHandBack: C++ draws it without another set-up
         "90:\n\t"
         "mov    r0, r4\n\t"
         "add    sp, #24\n\t"
         "pop    {r4-r11, pc}\n"
+
         "50:\n\t"                               // resume the carried set-ups before r4
         "movw   r0, #0xFFFF\n\t"
         "cmp    r6, r0\n\t"
