@@ -35,7 +35,7 @@ int run_band_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
     static DrawCase c;
     static hider::ScreenVertex verts[kVertexBatch];
     static uint16_t next[kDrawTriangles];
-    static uint16_t head[24];
+    static uint16_t head[24 + 1];  // one past the most bands: a list head the binning must never write
     static hider::KernelTriangle carried[kMaxSlots];
     static uint8_t slots[3 * kMaxSlots];
     for (int i = 0; i < kBandCases; ++i) {
@@ -59,7 +59,8 @@ int run_band_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
                                                                      hider::min(rows, c.view.height));
         s.opt.cull = c.cull;
         s.opt.base = {static_cast<uint8_t>(rng.next()), static_cast<uint8_t>(rng.next()), static_cast<uint8_t>(rng.next())};
-        s.scratch = {{next, kDrawTriangles}, {head, 24}, {carried, slot_count}, {slots, 3 * slot_count}};
+        const size_t bands = static_cast<size_t>((c.view.height + s.buffers.y1 - 1) / s.buffers.y1);
+        s.scratch = {{next, kDrawTriangles}, {head, bands}, {carried, slot_count}, {slots, 3 * slot_count}};
         uint32_t digests[2];
         for (int pass = 0; pass < 2; ++pass) {
             Fnv fnv;
@@ -69,12 +70,14 @@ int run_band_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
                 for (uint32_t k = 0; k < n; ++k) fnv.add(band.color[k] | (uint32_t{band.depth[k]} << 16));
                 return true;
             };
+            for (size_t k = bands; k < 25; ++k) head[k] = 0x5A5A;  // past the scratch: must stay as it is
             hider::BinnedStats bs;
             const hider::FrameStats st = pass == 0 ? draw(c.view, mesh, verts, s, done, bs) : twin(c.view, mesh, verts, s, done, bs);
             const uint32_t counts[] = {static_cast<uint32_t>(st.status), st.triangles_in, st.triangles_drawn,
                                        st.triangles_culled, st.triangles_clipped, st.triangles_outside,
                                        bs.carried, bs.set_up_again, bs.carried_high_water};
             for (uint32_t x : counts) fnv.add(x);
+            for (size_t k = bands; k < 25; ++k) fnv.add(head[k]);
             digests[pass] = fnv.h;
         }
         out[i] = digests[0];

@@ -2,6 +2,7 @@
 // triangle into the list of the band holding its first row, through a caller array indexed by
 // triangle, back to front so that each list runs in mesh order.
 #pragma once
+#include <hider/raster/band_loop_asm.hpp>
 #include <hider/raster/zbuffer.hpp>
 
 namespace hider {
@@ -102,10 +103,13 @@ __attribute__((always_inline)) inline ScreenXY screen_xy(const ScreenVertex& v) 
 /// Links every drawable triangle of the mesh (non-zero area, not culled) into the list of the band
 /// holding its first row, back to front so each list runs in mesh order; counts culled, clipped and outside triangles as draw_zbuffer()
 /// does on a whole frame. band_scale = ceil(2^20 / rows): band = first row * band_scale >> 20, exact for
-/// rows of frames up to 1,024. Out of line with few live values, so the loop stays in registers.
-__attribute__((noinline)) inline void bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
-                                                    const BandBounds& bb, int32_t height, uint32_t band_scale, uint16_t* next,
-                                                    uint16_t* head, FrameStats& st) {
+/// rows of frames up to 1,024. Out of line with few live values, so the loop stays in registers. kAsm: on
+/// ARMv7-M the whole triangles go through bin_triangles_v7m() (false keeps it out: kernelcheck compares
+/// both).
+template <bool kAsm = true>
+__attribute__((noinline)) void bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
+                                             const BandBounds& bb, int32_t height, uint32_t band_scale, uint16_t* next,
+                                             uint16_t* head, FrameStats& st) {
     const ScreenVertex* const vp = verts.data();
     // first_row_in_frame() with the rounding folded into the origin: rows from (y - y_lift) >> 4, y_lift
     // = y_origin - 15.
@@ -114,6 +118,21 @@ __attribute__((noinline)) inline void bin_triangles(const View& view, const Mesh
     const int32_t cull_above = cull ? 0 : INT32_MAX;
     uint32_t culled = 0;
     const ClippedBinning clipped{view, mesh, verts, cull, bb, height, st};
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    if constexpr (kAsm) {
+        BinLoopArm d{mesh.tris.data(), vp, y_lift, last, cull_above, band_scale, next, head, 0};
+        for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); (i = bin_triangles_v7m(i, &d)) != 0;) {
+            --i;  // a vertex of triangle i lies outside a clip plane
+            const int32_t first = first_row_clipped(clipped, i);
+            if (first > last) continue;
+            const uint32_t band = (static_cast<uint32_t>(first) * band_scale) >> 20;
+            next[i] = head[band];
+            head[band] = static_cast<uint16_t>(i);
+        }
+        st.triangles_culled += d.culled;
+        return;
+    }
+#endif
     const Tri* tri = mesh.tris.data() + mesh.tris.size();
     for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); i != 0;) {
         --i;
