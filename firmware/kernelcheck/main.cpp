@@ -4,8 +4,9 @@
 // - kernelcheck::kSetupCases triangle set-ups (setup_cases.hpp) through kernel_setup() (the Thumb-2 set-up
 //   on ARMv7-M) and kernel_setup_portable(): same outcome and kernel fields for every case.
 // - kernelcheck::kVertexCases batches of positions (vertex_cases.hpp) through project_vertices() (on
-//   ARMv6-M the Thumb-1 loop, elsewhere project_common()) and the general per-position path: same
-//   vertices; on ARMv6-M the loop must also refuse no position inside the view volume with w < 2^29.
+//   ARMv6-M the Thumb-1 loop, on ARMv7-M the Thumb-2 loop, elsewhere project_common()) and the general
+//   per-position path: same vertices; the Thumb-1 loop must also refuse no position inside the view
+//   volume with w < 2^29, the Thumb-2 loop none that project_common() projects.
 // - kernelcheck::kDrawCases random small scenes (draw_cases.hpp) through draw_flat_kernel() with and
 //   without the assembly draw loop (Thumb-1 on ARMv6-M, Thumb-2 on ARMv7-M; on RV32 both are the C++
 //   loop): same frame and counts.
@@ -81,6 +82,18 @@ int main() {
                 const hider::ViewPoint q = hider::to_view_point(c.view, *p);
                 refused_inside += hider::outcode(c.view, q) == 0 && q.w < (int32_t{1} << 29);
             }
+#elif defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+            // Walk the Thumb-2 loop itself: it may stop only at a position project_common() refuses.
+            static hider::ScreenVertex out[kernelcheck::kVertexBatch];
+            const hider::detail::VertexPrepV7m prep = hider::detail::vertex_prep_v7m(c.view);
+            const hider::Vec3q16* const end = c.p + kernelcheck::kVertexBatch;
+            for (const hider::Vec3q16* p = c.p; p != end; ++p) {
+                const hider::Vec3q16* const stop = hider::project_common_v7m(&prep, p, out + (p - c.p), end);
+                accepted += static_cast<uint32_t>(stop - p);
+                if ((p = stop) == end) break;
+                hider::ScreenVertex v;
+                refused_inside += hider::detail::project_common(c.view, hider::to_view_point(c.view, *p), v);
+            }
 #else
             (void)c;
             (void)accepted;
@@ -155,8 +168,8 @@ int main() {
     sh::print(" scenes the C++ draw loop, ");
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kBandCases));
     sh::print(" banded scenes the C++ band loop");
-#if defined(__ARM_ARCH_6M__)
-    sh::print(" (the Thumb-1 loop projected ");
+#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    sh::print(" (the assembly vertex loop projected ");
     sh::print_u32(accepted);
     sh::print(")");
 #endif
