@@ -100,6 +100,28 @@ inline void make_vertex_case(Rng& rng, VertexCase& c) {
     }
 }
 
+/// The first case, not random: an axis-aligned 160 x 120 view with near 4096 (raw) where view point
+/// (+-44,089, +-44,089, -65,543) makes project_common()'s screen quotient estimate one too low by exactly
+/// w (remainder = w: the correction's boundary, which random positions practically never reach), and
+/// depths at near times powers of two for n 2^31 / w's digit tests.
+inline void make_directed_case(VertexCase& c) {
+    using hider::Q16;
+    hider::Camera cam;
+    cam.eye = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)};
+    cam.target = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(-65536)};
+    cam.up = {Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)};
+    cam.fovy = hider::Angle::from_bam(0x2AAAAAAAu);  // 60 degrees
+    cam.near = Q16::from_raw(4096);
+    cam.far = Q16::from_raw(4096 << 9);
+    (void)hider::make_view(cam, 160, 120, c.view);
+    const int32_t q[4][2] = {{44089, 0}, {-44089, 0}, {0, 44089}, {44089, -44089}};
+    for (int i = 0; i < kVertexBatch; ++i) {
+        const bool quotient = i < 4;
+        const int32_t w = quotient ? 65543 : 4096 << (i - 4) % 10;
+        c.p[i] = {Q16::from_raw(quotient ? q[i][0] : i * 97), Q16::from_raw(quotient ? q[i][1] : -i * 89), Q16::from_raw(-w)};
+    }
+}
+
 /// FNV-1a of a batch's projected vertices.
 inline uint32_t vertex_digest(const hider::ScreenVertex* s) {
     Fnv fnv;
@@ -126,7 +148,8 @@ int run_vertex_cases(Project&& project, Twin&& twin, Check&& check, uint32_t* ou
     static VertexCase c;
     static hider::ScreenVertex a[kVertexBatch], b[kVertexBatch];
     for (int i = 0; i < kVertexCases; ++i) {
-        make_vertex_case(rng, c);
+        if (i == 0) make_directed_case(c);
+        else make_vertex_case(rng, c);
         project(c.view, c.p, a);
         twin(c.view, c.p, b);
         out[i] = vertex_digest(a);

@@ -188,7 +188,12 @@ private:
                                                                  const ScreenVertex& pc) { piece(pa, pb, pc, tri); });
             continues = continues_;
         }
-        if (!continues) return;
+        if (continues) relink(tri);
+    }
+
+    /// A triangle that continues below the band without a slot: linked into the next band's list, to be
+    /// set up there again.
+    __attribute__((always_inline)) void relink(uint16_t tri) {
         ++out_.set_up_again;
         if (next_head_ != nullptr) insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
     }
@@ -201,9 +206,7 @@ private:
         const ScreenVertex& a = verts_[t.v[0]];
         const ScreenVertex& b = verts_[t.v[1]];
         const ScreenVertex& c = verts_[t.v[2]];
-        if (!draw_generic(a, b, c, TriangleRaster::signed_area(a, b, c), tri)) return;
-        ++out_.set_up_again;
-        if (next_head_ != nullptr) insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
+        if (draw_generic(a, b, c, TriangleRaster::signed_area(a, b, c), tri)) relink(tri);
     }
 #endif
 

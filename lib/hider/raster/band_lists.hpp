@@ -2,7 +2,7 @@
 // triangle into the list of the band holding its first row, through a caller array indexed by
 // triangle, back to front so that each list runs in mesh order.
 #pragma once
-#include <hider/raster/band_loop_asm.hpp>
+#include <hider/raster/band_bin_asm.hpp>
 #include <hider/raster/zbuffer.hpp>
 
 namespace hider {

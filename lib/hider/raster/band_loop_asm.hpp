@@ -1,8 +1,9 @@
 // The band renderer's loop over one band (binned.hpp) in Thumb-2 for ARMv7-M: merges in mesh order the
-// set-ups carried from the band above (their rows, then their slot onward or back) with the band's list
-// (set-up into a free slot, headlight colour, rows). GCC kept the band's state in memory around the
-// calls; here the list, the vertices and the slot stay in registers. Clipped triangles, those without a
-// free slot and generic set-ups go back to the C++ loop. firmware/kernelcheck compares both loops.
+// set-ups carried from the band above (a run of them resumed with the row kernel's loop inline, each
+// slot then onward or back) with the band's list (set-up into a free slot, headlight colour, rows). In
+// assembly so that the list, the vertices and the slot stay in registers. Clipped triangles, those
+// without a free slot and generic set-ups (flagged) go back to the C++ loop. firmware/kernelcheck
+// compares both loops.
 #pragma once
 #include <hider/mesh.hpp>
 #include <hider/raster/draw_loop_asm.hpp>
@@ -49,111 +50,6 @@ constexpr uint32_t kGenericHandBack = 0x10000;
 static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(KernelSetupIo, area) + sizeof(int32_t), "io area and out: one strd");
 }  // namespace detail
 
-namespace detail {
-/// Constants and in/out values of the binning loop (the layout is its contract).
-struct BinLoopArm {
-    const Tri* tris;            ///< 0
-    const ScreenVertex* verts;  ///< 4
-    int32_t y_lift;             ///< 8: rows from (y - y_lift) >> 4
-    int32_t last;               ///< 12: the frame's last row
-    int32_t cull_above;         ///< 16: culled when the area is above it
-    uint32_t band_scale;        ///< 20: band = row * band_scale >> 20
-    uint16_t* next;             ///< 24
-    uint16_t* head;             ///< 28
-    uint32_t culled;            ///< 32, counted up
-};
-static_assert(sizeof(void*) != 4 ||
-                  (offsetof(BinLoopArm, verts) == 4 && offsetof(BinLoopArm, y_lift) == 8 && offsetof(BinLoopArm, last) == 12 &&
-                   offsetof(BinLoopArm, cull_above) == 16 && offsetof(BinLoopArm, band_scale) == 20 &&
-                   offsetof(BinLoopArm, next) == 24 && offsetof(BinLoopArm, head) == 28 && offsetof(BinLoopArm, culled) == 32),
-              "binning loop layout: every offset the assembly uses");
-static_assert(sizeof(Tri) == 6 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVertex, z) == 4 && kSubpixelBits == 4,
-              "the binning loop's strides and shifts");
-}  // namespace detail
-
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-/// bin_triangles()'s loop in Thumb-2 (GCC reloaded its constants per triangle): links triangles count - 1
-/// down to 0 as bin_triangles() does and counts the culled ones into d->culled; returns t + 1 for the
-/// first triangle t with a vertex outside a clip plane (bin_triangles() bins it in C++ and goes on from
-/// t), 0 when done. Registers: r4 the triangle, r5 its Tri, r6 the vertices, r7 y_lift, r8 the last row,
-/// r9 cull_above, r10 the culled count, r11 d.
-__attribute__((naked, noinline)) inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
-    __asm__ volatile(
-        ".syntax unified\n\t"
-        "push   {r4-r11, lr}\n\t"
-        "subs   r4, r0, #1\n\t"
-        "bmi    9f\n\t"                          // no triangle left
-        "mov    r11, r1\n\t"
-        "ldm    r11, {r5-r9}\n\t"               // tris, verts, y_lift, last, cull_above
-        "ldr    r10, [r11, #32]\n\t"
-        "add    r0, r4, r4, lsl #1\n\t"
-        "add    r5, r5, r0, lsl #1\n"            // tris + 6 t
-        "1:\n\t"
-        "ldrh   r0, [r5]\n\t"
-        "ldrh   r1, [r5, #2]\n\t"
-        "ldrh   r2, [r5, #4]\n\t"
-        "add    r0, r6, r0, lsl #3\n\t"
-        "add    r1, r6, r1, lsl #3\n\t"
-        "add    r2, r6, r2, lsl #3\n\t"
-        "ldr    r3, [r0, #4]\n\t"
-        "cbz    r3, 8f\n\t"                      // z = 0: outside a clip plane
-        "ldr    r3, [r1, #4]\n\t"
-        "cbz    r3, 8f\n\t"
-        "ldr    r3, [r2, #4]\n\t"
-        "cbnz   r3, 2f\n"
-        "8:\n\t"                                 // back to C++ with t + 1
-        "str    r10, [r11, #32]\n\t"
-        "add    r0, r4, #1\n\t"
-        "pop    {r4-r11, pc}\n"
-        "2:\n\t"
-        "ldrsh  r3, [r0]\n\t"                    // ax
-        "ldrsh  r12, [r0, #2]\n\t"               // ay
-        "ldrsh  r0, [r1]\n\t"                    // bx
-        "ldrsh  r1, [r1, #2]\n\t"                // by
-        "ldrsh  lr, [r2]\n\t"                    // cx
-        "ldrsh  r2, [r2, #2]\n\t"                // cy
-        "sub    r0, r0, r3\n\t"
-        "sub    lr, lr, r3\n\t"
-        "sub    r3, r2, r12\n\t"
-        "mul    r0, r0, r3\n\t"                  // (bx - ax) (cy - ay)
-        "sub    r3, r1, r12\n\t"
-        "mls    r0, lr, r3, r0\n\t"              // - (cx - ax) (by - ay): signed_area()
-        "cbz    r0, 6f\n\t"                      // no area: not drawn
-        "cmp    r0, r9\n\t"
-        "bgt    5f\n\t"                          // culled
-        "cmp    r1, r12\n\t"
-        "it     lt\n\t"
-        "movlt  r12, r1\n\t"
-        "cmp    r2, r12\n\t"
-        "it     lt\n\t"
-        "movlt  r12, r2\n\t"                     // the top vertex's y
-        "sub    r12, r12, r7\n\t"
-        "asr    r12, r12, #4\n\t"                // its first row
-        "bic    r12, r12, r12, asr #31\n\t"      // at least 0
-        "cmp    r12, r8\n\t"
-        "it     gt\n\t"
-        "movgt  r12, r8\n\t"                     // at most the last row
-        "ldrd   r0, r1, [r11, #20]\n\t"          // band_scale, next
-        "mul    r12, r12, r0\n\t"
-        "lsr    r12, r12, #20\n\t"               // its band
-        "ldr    r2, [r11, #28]\n\t"
-        "ldrh   r0, [r2, r12, lsl #1]\n\t"
-        "strh   r0, [r1, r4, lsl #1]\n\t"        // next[t] = head[band]
-        "strh   r4, [r2, r12, lsl #1]\n\t"       // head[band] = t
-        "b      6f\n"
-        "5:\n\t"
-        "add    r10, r10, #1\n"
-        "6:\n\t"
-        "sub    r5, r5, #6\n\t"
-        "subs   r4, r4, #1\n\t"
-        "bpl    1b\n\t"
-        "str    r10, [r11, #32]\n"
-        "9:\n\t"
-        "mov    r0, #0\n\t"
-        "pop    {r4-r11, pc}\n");
-}
-#endif
-
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 /// Draws the band from listed triangle t on (following d->next), resuming every carried set-up from
 /// d->cur whose triangle comes before the next listed one; returns kNoTriangle when the list and the
@@ -169,7 +65,7 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"
-        "sub    sp, #24\n\t"
+        "sub    sp, #28\n\t"                         // 36 + 28: the calls see an 8-byte aligned stack
         "mov    r4, r0\n\t"
         "mov    r5, r1\n\t"
         "str    r5, [sp, #16]\n\t"
@@ -266,7 +162,7 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "orr    r4, r4, #0x10000\n"             // kGenericHandBack: C++ draws it without another set-up
         "90:\n\t"
         "mov    r0, r4\n\t"
-        "add    sp, #24\n\t"
+        "add    sp, #28\n\t"
         "pop    {r4-r11, pc}\n"
 
         "50:\n\t"                               // resume the carried set-ups before r4
@@ -357,7 +253,7 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
           [n_z] "i"(offsetof(KernelTriangle, next_z) - offsetof(RowKernel, ra)),
           [n_dz] "i"(offsetof(KernelTriangle, next_dz) - offsetof(RowKernel, ra)),
           [tri] "i"(offsetof(KernelTriangle, tri)), [io_area] "i"(offsetof(KernelSetupIo, area)),
-          [io_out] "i"(offsetof(KernelSetupIo, out)), [view_z0] "i"(offsetof(detail::BandLoopArm, view_z)),
+          [view_z0] "i"(offsetof(detail::BandLoopArm, view_z)),
           [view_z1] "i"(offsetof(detail::BandLoopArm, view_z) + 4), [view_z2] "i"(offsetof(detail::BandLoopArm, view_z) + 8),
           [base_r] "i"(offsetof(detail::BandLoopArm, base_r)), [base_g] "i"(offsetof(detail::BandLoopArm, base_g)),
           [base_b] "i"(offsetof(detail::BandLoopArm, base_b)));

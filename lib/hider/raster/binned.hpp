@@ -56,7 +56,8 @@ __attribute__((noinline)) void draw_bands_generic(const View& view, const Mesh& 
     }
 }
 
-/// draw_zbuffer_binned(); kAsmLoop false keeps the assembly band loop out (kernelcheck compares both).
+/// draw_zbuffer_binned(); kAsmLoop false keeps the assembly band and binning loops out (kernelcheck
+/// compares both).
 template <bool kAsmLoop, class Format, class Depth, class BandDone>
 FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, const FrameView<Format, Depth>& buffers,
                        const DrawOptions& opt, Rgb background, const BinnedScratch& scratch, BandDone& done, BinnedStats* bs) {

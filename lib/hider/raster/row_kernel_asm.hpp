@@ -16,51 +16,52 @@ namespace hider {
 /// (band_loop_asm.hpp). Entry: r0 the record + ra, r1..r5 lp lg lz rp rg, r6 rows before a switch, r7
 /// the colour offset, r8 dzdx, r10 the colour; at sp the middle row's depth pointer, the rows after the
 /// switch (-1: none) and the depth row after the last. Exit: the record (r0) holds the next row's edges
-/// and depth, r12 that row's depth pointer (every other register clobbered). Uses local labels 2..9 and
-/// the operands ra, n_left, n_x, n_g, n_a, n_z, n_dz.
+/// and depth, r12 that row's depth pointer (every other register clobbered). r6 must be at least 1 (the
+/// row loop tests after its first row). Uses local labels 71..79 and the operands ra, n_left, n_x, n_g,
+/// n_a, n_z, n_dz.
 #define HIDER_V7M_ROWS \
-    "2:\n\t"                                 /* row */ \
+    "72:\n\t"                                /* row */ \
     "subs   r11, r1, r4\n\t"                 /* lp - rp: negative, counts up to 0 */ \
-    "bge    4f\n\t"                          /* empty span */ \
+    "bge    74f\n\t"                         /* empty span */ \
     "add    r9, r4, r7\n\t"                  /* the colour end */ \
     "mov    lr, r3\n"                        /* z = lz */ \
-    "3:\n\t"                                 /* pixel */ \
+    "73:\n\t"                                /* pixel */ \
     "ldrh   r12, [r4, r11]\n\t" \
     "cmp    r12, lr, lsr #16\n\t" \
-    "bls    5f\n\t"                          /* stored depth <= ours: keep it */ \
+    "bls    75f\n\t"                         /* stored depth <= ours: keep it */ \
     "lsr    r12, lr, #16\n\t" \
     "strh   r12, [r4, r11]\n\t" \
     "strh   r10, [r9, r11]\n" \
-    "5:\n\t" \
+    "75:\n\t" \
     "add    lr, lr, r8\n\t" \
     "adds   r11, r11, #2\n\t" \
-    "bne    3b\n" \
-    "4:\n\t"                                 /* left edge: g += m, p += step, z += dz_row, then correct */ \
+    "bne    73b\n" \
+    "74:\n\t"                                /* left edge: g += m, p += step, z += dz_row, then correct */ \
     "ldmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
     "adds   r2, r2, r11\n\t" \
     "add    r1, r1, r12\n\t" \
     "add    r3, r3, lr\n\t" \
-    "bmi    5f\n\t"                          /* g < 0: no correction */ \
+    "bmi    71f\n\t"                         /* g < 0: no correction */ \
     "sub    r2, r2, r9\n\t" \
     "sub    r1, r1, #2\n\t" \
     "sub    r3, r3, r8\n"                    /* z -= dzdx */ \
-    "5:\n\t"                                 /* right edge */ \
+    "71:\n\t"                                /* right edge */ \
     "ldm    r0, {r9, r11, r12}\n\t"          /* ra rm rstep */ \
     "adds   r5, r5, r11\n\t" \
     "add    r4, r4, r12\n\t" \
-    "bmi    6f\n\t" \
+    "bmi    76f\n\t" \
     "sub    r5, r5, r9\n\t" \
     "sub    r4, r4, #2\n" \
-    "6:\n\t" \
+    "76:\n\t" \
     "subs   r6, r6, #1\n\t" \
-    "bne    2b\n\t" \
+    "bne    72b\n\t" \
     "ldr    r6, [sp, #4]\n\t"                /* rows after the switch */ \
     "cmp    r6, #0\n\t" \
-    "blt    8f\n\t"                          /* no switch in this call */ \
+    "blt    78f\n\t"                         /* no switch in this call */ \
     "ldr    r12, [sp]\n\t"                   /* the middle row */ \
     "ldrb   r9, [r0, %[n_left]]\n\t" \
     "cmp    r9, #0\n\t" \
-    "beq    7f\n\t" \
+    "beq    77f\n\t" \
     "ldr    r9, [r0, %[n_x]]\n\t"            /* the lower edge on the left */ \
     "add    r1, r12, r9\n\t" \
     "ldr    r2, [r0, %[n_g]]\n\t" \
@@ -69,20 +70,20 @@ namespace hider {
     "ldm    r9, {r9, r11, r12}\n\t"          /* a m step */ \
     "ldr    lr, [r0, %[n_dz]]\n\t" \
     "stmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
-    "b      9f\n" \
-    "7:\n\t" \
+    "b      79f\n" \
+    "77:\n\t" \
     "ldr    r9, [r0, %[n_x]]\n\t"            /* the lower edge on the right */ \
     "add    r4, r12, r9\n\t" \
     "ldr    r5, [r0, %[n_g]]\n\t" \
     "add    r9, r0, %[n_a]\n\t" \
     "ldm    r9, {r9, r11, r12}\n\t" \
     "stm    r0, {r9, r11, r12}\n"            /* ra rm rstep */ \
-    "9:\n\t" \
+    "79:\n\t" \
     "mov    r9, #-1\n\t" \
     "str    r9, [sp, #4]\n\t"                /* switched */ \
     "cmp    r6, #0\n\t" \
-    "bne    2b\n" \
-    "8:\n\t" \
+    "bne    72b\n" \
+    "78:\n\t" \
     "ldr    r12, [sp, #8]\n\t"               /* the depth row after the last */ \
     "sub    r1, r1, r12\n\t"                 /* back to offsets in that row */ \
     "sub    r4, r4, r12\n\t" \
@@ -142,7 +143,7 @@ __attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_v7m(Kernel
         :
         : [row] "i"(offsetof(KernelTriangle, row)), [mid] "i"(offsetof(KernelTriangle, mid)),
           [end] "i"(offsetof(KernelTriangle, end)), [dzdx] "i"(offsetof(RowKernel, dzdx)),
-          [color] "i"(offsetof(RowKernel, color)), [ra] "i"(offsetof(RowKernel, ra)),
+          [ra] "i"(offsetof(RowKernel, ra)),
           [n_left] "i"(offsetof(KernelTriangle, next_left) - offsetof(RowKernel, ra)),
           [n_x] "i"(offsetof(KernelTriangle, next_x) - offsetof(RowKernel, ra)),
           [n_g] "i"(offsetof(KernelTriangle, next_g) - offsetof(RowKernel, ra)),

@@ -110,23 +110,33 @@ inline void project_one(const View& view, const ViewPoint& p, ScreenVertex& o) {
 }
 }  // namespace detail
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 namespace detail {
-/// project_vertices() on ARMv7-M: the Thumb-2 loop runs until a position it refuses (outside
-/// project_common()'s volume), which goes the general way. Out of line: its constants stay off the
-/// caller's frame, which a band renderer keeps through the frame.
-__attribute__((noinline)) inline void project_all_v7m(const View& view, Span<const Vec3q16> positions, ScreenVertex* out) {
-    const VertexPrepV7m prep = vertex_prep_v7m(view);
+/// The assembly vertex loops' driver: `loop` projects positions until one it refuses (outside its
+/// volume), which goes the general way through `to_view` (the View or a PreparedTransform of it).
+template <class Prep, class Loop, class ToView>
+__attribute__((always_inline)) inline void project_by_loop(const View& view, const Prep& prep, Loop loop, const ToView& to_view,
+                                                           Span<const Vec3q16> positions, ScreenVertex* out) {
     const Vec3q16* const first = positions.data();
     const Vec3q16* const end = first + positions.size();
     for (const Vec3q16* p = first; p != end; ++p) {
-        p = project_common_v7m(&prep, p, out + (p - first), end);
+        p = loop(&prep, p, out + (p - first), end);
         if (p == end) break;
-        project_one(view, to_view_point(view, *p), out[p - first]);
+        project_one(view, to_view_point(to_view, *p), out[p - first]);
     }
 }
-}  // namespace detail
+
+#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+/// project_vertices() through the chip's assembly loop. Out of line: the loop's constants stay off the
+/// caller's frame, which a band renderer keeps through the frame.
+__attribute__((noinline)) inline void project_all(const View& view, Span<const Vec3q16> positions, ScreenVertex* out) {
+#if defined(__ARM_ARCH_6M__)
+    project_by_loop(view, vertex_prep(view), project_common_v6m, PreparedTransform(view.to_view), positions, out);
+#else
+    project_by_loop(view, vertex_prep_v7m(view), project_common_v7m, view, positions, out);
 #endif
+}
+#endif
+}  // namespace detail
 
 /// Transforms and projects every position into `out` (same index); vertices outside a clip plane are
 /// marked (ScreenVertex::outside()) and clipped per triangle later. Returns invalid_argument if out is
@@ -137,19 +147,8 @@ __attribute__((noinline)) inline void project_all_v7m(const View& view, Span<con
 inline Status project_vertices(const View& view, Span<const Vec3q16> positions, Span<ScreenVertex> out,
                                DepthRange* range = nullptr) {
     if (out.size() < positions.size()) return Status::invalid_argument;
-#if defined(__ARM_ARCH_6M__)
-    const PreparedTransform to_view(view.to_view);
-    // The assembly loop runs until a position it refuses; that one goes the general way.
-    const detail::VertexPrep prep = detail::vertex_prep(view);
-    const Vec3q16* const first = positions.data();
-    const Vec3q16* const end = first + positions.size();
-    for (const Vec3q16* p = first; p != end; ++p) {
-        p = project_common_v6m(&prep, p, out.data() + (p - first), end);
-        if (p == end) break;
-        detail::project_one(view, to_view_point(to_view, *p), out[static_cast<size_t>(p - first)]);
-    }
-#elif defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-    detail::project_all_v7m(view, positions, out.data());
+#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    detail::project_all(view, positions, out.data());
 #else
     const PreparedTransform to_view(view.to_view);
     for (size_t i = 0; i < positions.size(); ++i) {

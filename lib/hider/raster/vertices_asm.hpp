@@ -472,7 +472,7 @@ struct VertexPrepV7m {
     uint32_t guard;            ///< 60: kGuardBand 256
     uint32_t scale_lo, scale_hi;  ///< 64, 68: depth_scale_q31
 };
-static_assert(sizeof(void*) != 4 || (offsetof(VertexPrepV7m, near_raw) == 48 && offsetof(VertexPrepV7m, scale_lo) == 64),
+static_assert(offsetof(VertexPrepV7m, near_raw) == 48 && offsetof(VertexPrepV7m, scale_lo) == 64,
               "Thumb-2 vertex loop constants layout");
 static_assert(sizeof(Vec3q16) == 12 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVertex, y) == 2 &&
                   offsetof(ScreenVertex, z) == 4,
@@ -497,8 +497,8 @@ inline VertexPrepV7m vertex_prep_v7m(const View& v) {
 }  // namespace detail
 
 /// project_common() (vertices.hpp) in Thumb-2 for positions [p, end) until one it refuses; returns that
-/// one (end when it projected them all): the same vertices, GCC having kept the transform's constants
-/// and the quotients' values on the stack. Per vertex: the transform (three load-multiples of a row and
+/// one (end when it projected them all), having written the same vertices as project_common(). In
+/// assembly so that the transform's constants and the quotients stay in registers. Per vertex: the transform (three load-multiples of a row and
 /// its translation, nine long multiplies), w against near and min(far, 2^30 - 1), the guard band, the
 /// screen quotients with one division each, n 2^31 / w in two 16-bit digits (ratio_q31()), the depth.
 /// Registers: r0 the constants (+48 after the transform); on the stack p (advanced), out and end.
@@ -513,16 +513,18 @@ __attribute__((naked, noinline)) inline const Vec3q16* project_common_v7m(const 
         "1:\n\t"
         "ldm    r1!, {r4, r5, r6}\n\t"         // x y z
         "str    r1, [sp]\n\t"
-        ".irp   res, r1, r2, r3\n\t"            // the three rows: floor(sum / 2^30) + t
+        ".irp   res, r1, r2, r3\n\t"            // each row: floor(sum / 2^30) (then + t)
         "ldm    r0!, {r7, r8, r9, r10}\n\t"
         "smull  r11, r12, r7, r4\n\t"
         "smlal  r11, r12, r8, r5\n\t"
         "smlal  r11, r12, r9, r6\n\t"
         "lsr    r11, r11, #30\n\t"
         "orr    r11, r11, r12, lsl #2\n\t"
-        "add    \\res, r11, r10\n\t"
+        ".ifnc  \\res, r3\n\t"
+        "add    \\res, r11, r10\n\t"           // x, y: + t
+        ".endif\n\t"
         ".endr\n\t"
-        "sub    r3, r10, r11\n\t"               // w = -t_z - floor(sum / 2^30): row 2 again
+        "sub    r3, r10, r11\n\t"               // w = -t_z - floor(sum / 2^30)
         "ldm    r0, {r7, r8, r9, r10}\n\t"     // near, far_fast, k, guard
         "cmp    r3, r7\n\t"
         "blt    8f\n\t"
