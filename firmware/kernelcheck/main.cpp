@@ -71,29 +71,20 @@ int main() {
         kernelcheck::project_each,
         [&](const kernelcheck::VertexCase& c) {
 #if defined(__ARM_ARCH_6M__)
-            // Walk the Thumb-1 loop itself: every position it stops at must be one it may refuse.
-            static hider::ScreenVertex out[kernelcheck::kVertexBatch];
-            const hider::detail::VertexPrep prep = hider::detail::vertex_prep(c.view);
-            const hider::Vec3q16* const end = c.p + kernelcheck::kVertexBatch;
-            for (const hider::Vec3q16* p = c.p; p != end; ++p) {
-                const hider::Vec3q16* const stop = hider::project_common_v6m(&prep, p, out + (p - c.p), end);
-                accepted += static_cast<uint32_t>(stop - p);
-                if ((p = stop) == end) break;
-                const hider::ViewPoint q = hider::to_view_point(c.view, *p);
-                refused_inside += hider::outcode(c.view, q) == 0 && q.w < (int32_t{1} << 29);
-            }
+            // The Thumb-1 loop may stop only outside the view volume or at w >= 2^29.
+            kernelcheck::walk_vertex_loop(c, hider::detail::vertex_prep(c.view), hider::project_common_v6m,
+                                          [&](const hider::ViewPoint& q) {
+                                              return hider::outcode(c.view, q) == 0 && q.w < (int32_t{1} << 29);
+                                          },
+                                          accepted, refused_inside);
 #elif defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-            // Walk the Thumb-2 loop itself: it may stop only at a position project_common() refuses.
-            static hider::ScreenVertex out[kernelcheck::kVertexBatch];
-            const hider::detail::VertexPrepV7m prep = hider::detail::vertex_prep_v7m(c.view);
-            const hider::Vec3q16* const end = c.p + kernelcheck::kVertexBatch;
-            for (const hider::Vec3q16* p = c.p; p != end; ++p) {
-                const hider::Vec3q16* const stop = hider::project_common_v7m(&prep, p, out + (p - c.p), end);
-                accepted += static_cast<uint32_t>(stop - p);
-                if ((p = stop) == end) break;
-                hider::ScreenVertex v;
-                refused_inside += hider::detail::project_common(c.view, hider::to_view_point(c.view, *p), v);
-            }
+            // The Thumb-2 loop may stop only at a position project_common() refuses.
+            kernelcheck::walk_vertex_loop(c, hider::detail::vertex_prep_v7m(c.view), hider::project_common_v7m,
+                                          [&](const hider::ViewPoint& q) {
+                                              hider::ScreenVertex v;
+                                              return hider::detail::project_common(c.view, q, v);
+                                          },
+                                          accepted, refused_inside);
 #else
             (void)c;
             (void)accepted;

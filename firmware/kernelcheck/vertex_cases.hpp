@@ -138,6 +138,22 @@ inline void project_each(const hider::View& v, const hider::Vec3q16* p, hider::S
     for (int i = 0; i < kVertexBatch; ++i) hider::detail::project_one(v, hider::to_view_point(v, p[i]), out[i]);
 }
 
+/// Walks an assembly vertex loop (`loop` with constants `prep`, as project_vertices() drives it) over case
+/// c: adds the positions it projected to `accepted`, and to `refused_inside` those it stopped at although
+/// `projectable(view point)` says it should have projected them.
+template <class Prep, class Loop, class Projectable>
+void walk_vertex_loop(const VertexCase& c, const Prep& prep, Loop loop, Projectable projectable, uint32_t& accepted,
+                      uint32_t& refused_inside) {
+    static hider::ScreenVertex out[kVertexBatch];
+    const hider::Vec3q16* const end = c.p + kVertexBatch;
+    for (const hider::Vec3q16* p = c.p; p != end; ++p) {
+        const hider::Vec3q16* const stop = loop(&prep, p, out + (p - c.p), end);
+        accepted += static_cast<uint32_t>(stop - p);
+        if ((p = stop) == end) break;
+        refused_inside += projectable(hider::to_view_point(c.view, *p)) ? 1u : 0u;
+    }
+}
+
 /// Digest of every vertex case through `project` (a function of (view, positions, out)) into
 /// out[kVertexCases], each case also through `twin`; returns the first case whose digests differ, or -1.
 /// `check` sees each case after it ran (the chip counts what its loop refused).
