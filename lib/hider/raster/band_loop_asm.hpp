@@ -187,6 +187,7 @@ __attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail:
         "ldrd   r4, r2, [r12, #48]\n\t"         // y0, y1
         "ldr    r9, [r12, #44]\n\t"             // the depth row of y0
         "ldrd   r7, r3, [r12, #56]\n\t"         // colour offset, stride
+        "sub    r7, r7, #2\n\t"                 // less HIDER_V7M_ROWS's post-increment
         "cmp    r6, r2\n\t"
         "it     gt\n\t"
         "movgt  r6, r2\n\t"                     // stop = min(end, y1)

@@ -14,27 +14,38 @@ namespace hider {
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 /// HIDER_V7M_ROWS: the row loop of run_kernel_triangle_v7m(), shared with draw_band_v7m()'s resumes
 /// (band_loop_asm.hpp). Entry: r0 the record + ra, r1..r5 lp lg lz rp rg, r6 rows before a switch, r7
-/// the colour offset, r8 dzdx, r10 the colour; at sp the middle row's depth pointer, the rows after the
+/// the colour offset less 2, r8 dzdx, r10 the colour; at sp the middle row's depth pointer, the rows after the
 /// switch (-1: none) and the depth row after the last. Exit: the record (r0) holds the next row's edges
 /// and depth, r12 that row's depth pointer (every other register clobbered). r6 must be at least 1 (the
-/// row loop tests after its first row). Uses local labels 71..79 and the operands ra, n_left, n_x, n_g,
+/// row loop tests after its first row). Uses local labels 69..79 and the operands ra, n_left, n_x, n_g,
 /// n_a, n_z, n_dz.
 #define HIDER_V7M_ROWS \
     "72:\n\t"                                /* row */ \
-    "subs   r11, r1, r4\n\t"                 /* lp - rp: negative, counts up to 0 */ \
-    "bge    74f\n\t"                         /* empty span */ \
-    "add    r9, r4, r7\n\t"                  /* the colour end */ \
-    "mov    lr, r3\n"                        /* z = lz */ \
-    "73:\n\t"                                /* pixel */ \
-    "ldrh   r12, [r4, r11]\n\t" \
+    "subs   r11, r4, r1\n\t"                 /* rp - lp: twice the pixels */ \
+    "ble    74f\n\t"                         /* empty span */ \
+    "mov    r9, r1\n\t"                      /* p = lp */ \
+    "mov    lr, r3\n\t"                      /* z = lz */ \
+    "lsls   r11, r11, #31\n\t"               /* C: an odd number of pixels */ \
+    "bcs    70f\n"                           /* the first one alone */ \
+    "73:\n\t"                                /* two pixels */ \
+    "ldrh   r12, [r9], #2\n\t" \
     "cmp    r12, lr, lsr #16\n\t" \
     "bls    75f\n\t"                         /* stored depth <= ours: keep it */ \
     "lsr    r12, lr, #16\n\t" \
-    "strh   r12, [r4, r11]\n\t" \
-    "strh   r10, [r9, r11]\n" \
+    "strh   r12, [r9, #-2]\n\t" \
+    "strh   r10, [r9, r7]\n" \
     "75:\n\t" \
+    "add    lr, lr, r8\n" \
+    "70:\n\t" \
+    "ldrh   r12, [r9], #2\n\t" \
+    "cmp    r12, lr, lsr #16\n\t" \
+    "bls    69f\n\t" \
+    "lsr    r12, lr, #16\n\t" \
+    "strh   r12, [r9, #-2]\n\t" \
+    "strh   r10, [r9, r7]\n" \
+    "69:\n\t" \
     "add    lr, lr, r8\n\t" \
-    "adds   r11, r11, #2\n\t" \
+    "cmp    r9, r4\n\t" \
     "bne    73b\n" \
     "74:\n\t"                                /* left edge: g += m, p += step, z += dz_row, then correct */ \
     "ldmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
@@ -92,10 +103,11 @@ namespace hider {
 
 /// Thumb-2. In the row loop: r0 the right edge's constants (offset 36) with the left edge's just below
 /// (load-multiple decrement-before) and `next` above, r1..r5 lp lg lz rp rg, r6 rows left in this
-/// phase, r7 colour offset, r8 dz, r10 colour; on the stack the middle row's depth pointer, the rows
-/// after the switch (-1: none) and the depth row after the last. Pixel loop: r11 = lp - rp counting up
-/// to 0, r4 and r9 the depth and colour ends, lr z, r12 scratch (9 instructions a written pixel, 6 a
-/// rejected one). Per row outside the pixels: 15, plus 3 and 2 for edge corrections.
+/// phase, r7 colour offset less 2, r8 dz, r10 colour; on the stack the middle row's depth pointer, the
+/// rows after the switch (-1: none) and the depth row after the last. Pixel loop, two pixels a turn
+/// (an odd span enters at the second): r9 the depth pointer, post-incremented, ending at rp (r4), the
+/// colour at r9 + r7, lr z, r12 scratch (7 instructions a written pixel, 4 a rejected one, 2 a pair).
+/// Per row outside the pixels: 17, plus 3 and 2 for edge corrections.
 __attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_v7m(KernelTriangle*, uint16_t*, int32_t,
                                                                           const KernelTarget*) {
     __asm__ volatile(
@@ -126,7 +138,7 @@ __attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_v7m(Kernel
         "1:\n\t"
         "mla    r11, r2, r12, r1\n\t"       // the depth row after the last
         "push   {r7, r8, r11}\n\t"
-        "mov    r7, r9\n\t"
+        "sub    r7, r9, #2\n\t"             // colour offset, less the post-increment
         "mov    r9, r1\n\t"
         "ldrd   r8, r10, [r0, %[dzdx]]\n\t" // dzdx, colour
         "ldm    r0, {r1-r5}\n\t"            // lx lg lz rx rg
