@@ -65,14 +65,14 @@ public:
     template <class Pixel, class Shader>
     uint32_t paint_span(Pixel* crow, int32_t y, int32_t x0, int32_t x1, uint32_t z, uint32_t dz, const Shader& shader) {
         const Shader shade = shader;  // a local copy: the pixel stores cannot alias it, so a flat colour stays in a register
-        uint32_t* cov = words_ + static_cast<ptrdiff_t>(y - y0_) * wpr_;
+        uint32_t* cw = words_ + static_cast<ptrdiff_t>(y - y0_) * wpr_ + (x0 >> 5);  // the word of x0
         uint32_t written = 0;
-        int32_t x = x0;
-        while (x < x1) {
-            const int32_t w = x >> 5, bit = x & 31;
-            const int32_t n = min(x1 - x, 32 - bit);  // pixels of this span in word w
-            const uint32_t want = (n == 32 ? 0xFFFFFFFFu : ((uint32_t{1} << n) - 1)) << bit;
-            const uint32_t todo = want & ~cov[w];
+        for (int32_t x = x0; x < x1;) {
+            const int32_t bit = x & 31;
+            const int32_t n = min(x1 - x, 32 - bit);  // pixels of this span in this word
+            const uint32_t want = (0xFFFFFFFFu >> (32 - n)) << bit;  // n in [1, 32]: shifts in [0, 31]
+            const uint32_t have = *cw;
+            const uint32_t todo = want & ~have;
             if (todo == want) {  // nothing covered yet: the whole run
                 for (int32_t k = 0; k < n; ++k, z += dz) crow[x + k] = shade(z);
                 written += static_cast<uint32_t>(n);
@@ -87,7 +87,7 @@ public:
             } else {
                 z += dz * static_cast<uint32_t>(n);
             }
-            cov[w] |= want;
+            *cw++ = have | want;
             x += n;
         }
         remaining_ -= written;
