@@ -3,6 +3,7 @@
 #   hider_add_host_program()    builds a host program with the host C++ compiler (reference outputs)
 #   hider_compare_with_host()   ctest: the firmware's semihosted files == the host program's, byte for byte
 #   hider_add_insncount_test()  ctest: instruction count of bench_begin..bench_end is nonzero and repeatable
+#   hider_add_insncount_budget() ctest: an instruction count (or a ratio of two) within a met target
 include_guard(GLOBAL)
 
 if(NOT DEFINED HIDER_ARCH OR NOT DEFINED HIDER_QEMU_BIG OR NOT DEFINED HIDER_QEMU_SMALL)
@@ -219,4 +220,28 @@ function(hider_add_insncount_test)
             ${CMAKE_BINARY_DIR}/insncount/${IC_FIRMWARE}.test ${machine})
   set_tests_properties(${IC_FIRMWARE}.insncount_deterministic PROPERTIES
     TIMEOUT 120 PASS_REGULAR_EXPRESSION "deterministic, region=[1-9]" LABELS "firmware;${HIDER_TARGET}")
+endfunction()
+
+# hider_add_insncount_budget(NAME <test> FIRMWARE <fw> FIELD region|pair0 NUM <n> [DEN <d>]
+#                            [AGAINST <fw2> AGAINST_FIELD region|pair0])
+# ctest <test>: the firmware's instruction count (bench region, or its first pair) times DEN is at
+# most NUM, or at most NUM times the count of AGAINST (a ratio NUM / DEN): an issue's met target kept
+# under test (tools/qemu-insncount/check_budget.sh). Each firmware runs on its own machine.
+function(hider_add_insncount_budget)
+  cmake_parse_arguments(PARSE_ARGV 0 IB "" "NAME;FIRMWARE;FIELD;NUM;DEN;AGAINST;AGAINST_FIELD" "")
+  if(NOT IB_DEN)
+    set(IB_DEN 1)
+  endif()
+  get_target_property(machine ${IB_FIRMWARE} HIDER_MACHINE)
+  set(args $<TARGET_FILE:${IB_FIRMWARE}> ${machine} ${IB_FIELD})
+  if(IB_AGAINST)
+    get_target_property(machine_b ${IB_AGAINST} HIDER_MACHINE)
+    list(APPEND args $<TARGET_FILE:${IB_AGAINST}> ${machine_b} ${IB_AGAINST_FIELD})
+  endif()
+  add_test(NAME ${IB_NAME}
+    COMMAND ${CMAKE_COMMAND} -E env INSNCOUNT_PLUGIN=${HIDER_INSNCOUNT_PLUGIN} NM=${CMAKE_NM}
+            sh ${HIDER_INSNCOUNT_DIR}/check_budget.sh ${HIDER_TARGET} ${CMAKE_BINARY_DIR}/insncount/${IB_NAME}
+            ${IB_NUM} ${IB_DEN} ${args})
+  set_tests_properties(${IB_NAME} PROPERTIES
+    TIMEOUT 180 PASS_REGULAR_EXPRESSION "within budget" LABELS "firmware;${HIDER_TARGET};budget")
 endfunction()
