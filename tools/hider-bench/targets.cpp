@@ -256,7 +256,7 @@ int targets_command(const Args& args) {
 
     // Frames per second from the cycle model (ARM only): cycles lo..hi of one frame.
     std::printf("\nCycles from the plugin's cycle model (model=m0plus: exact per its manual; model=m3: a lower and an\n"
-                "upper bound, see tools/qemu-insncount/README.md for what it leaves out), one frame each: the torus\n"
+                "upper bound, see tools/qemu-insncount/arm_cycles.h for what it leaves out), one frame each: the torus\n"
                 "320x240 (spin320), the torus 160x128 (spin's frame 0), bands (160x128 in 6-row bands) and\n"
                 "bands320; frames per second at 48 MHz (Cortex-M0+) and 72 MHz (Cortex-M3). Estimates for\n"
                 "zero wait-state memory: flash wait states (a real part at these clocks has them) lower them.\n\n");

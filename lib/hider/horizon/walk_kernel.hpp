@@ -5,8 +5,7 @@
 // goes back to C++ (cross()). Queueing changes nothing: a later column's hidden test may then see a
 // horizon not yet widened by a queued one, but only its own column's horizons matter to it, and drawing
 // re-reads them. Portable C++, except on ARMv6-M, where GCC at -Os spills the walk's state: there a
-// Thumb-1 loop keeps it in registers (about 10 instructions a point in the same column, 55 a closed
-// hidden column). Both give the same results (firmware/horizoncheck compares them on random curves).
+// Thumb-1 loop keeps it in registers. Both give the same results (firmware/horizoncheck compares them on random curves).
 #pragma once
 #include <hider/horizon/point.hpp>
 

@@ -1,8 +1,8 @@
 // The z-buffer's triangle loop for the row kernel on Cortex-M (Thumb-1 on ARMv6-M, Thumb-2 on ARMv7-M):
 // per mesh triangle the drawable test, the snapped area and the cull, then for the drawn ones the chip's
 // kernel set-up, the headlight colour (FaceShading::color565()) and its run_kernel_triangle. GCC kept
-// the loop's state on the stack (about 60 instructions a culled face and 120 around each drawn one's
-// calls on the M0+); here the triangle, the context and the vertex array stay in registers. Triangles
+// the loop's state on the stack (loads and stores around every face and call on the M0+); here the
+// triangle, the context and the vertex array stay in registers. Triangles
 // with a vertex outside a clip plane and those the set-up calls generic go back to the C++ loop
 // (zbuffer.hpp), which does exactly what it did before.
 // firmware/kernelcheck draws random meshes both ways and compares the frames and statistics.

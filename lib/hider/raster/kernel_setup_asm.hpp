@@ -863,7 +863,7 @@ __attribute__((naked, noinline)) inline uint32_t kernel_setup_v6m(const ScreenVe
         "bx     lr\n"
         // floor(n / a) and n - floor(n / a) a for a > 0: r0 n, r1 a -> r0, r1. __aeabi_uidivmod (its
         // quotients here are small, where the library's shift-subtract exits early: a reciprocal of
-        // dy per walker measured about 10 instructions a walker more).
+        // dy per walker cost more).
         "50:\n\t"
         "cmp    r0, #0\n\t"
         "blt    52f\n\t"

@@ -16,7 +16,7 @@ struct FlatShader {
 /// Depth-test span: writes colour and depth where the fragment is nearer. Returns pixels written
 /// when kCount (the count costs one add per written pixel; the default path does not count).
 /// Precondition: x0 < x1. Kept out of line so the loop owns the registers: at -Os on Cortex-M, inlining it into the row
-/// walk spilled its pointers to the stack (17 instructions a pixel instead of 10).
+/// walk spilled its pointers to the stack (loads and stores in every pixel).
 template <bool kCount, class Depth, class Pixel, class Shader>
 __attribute__((noinline)) uint32_t span_depth_test(Pixel* crow, Depth* zrow, int32_t x0, int32_t x1, uint32_t z_q32,
                                                   uint32_t dz_q32, const Shader& shade) {

@@ -21,7 +21,7 @@ constexpr int leading_zeros_smeared(uint32_t v) {
 }
 
 /// clz32(v) for v != 0: on RISC-V without Zbb leading_zeros_smeared() (libgcc's __clzsi2 and the spills
-/// around the call cost about 14 instructions more a vertex), else the instruction.
+/// around the call cost more), else the instruction.
 __attribute__((always_inline)) inline int leading_zeros(uint32_t v) {
 #if defined(__riscv) && !defined(__riscv_zbb)
     return leading_zeros_smeared(v);

@@ -1,6 +1,6 @@
 // The common vertex of project_vertices() (vertices.hpp) in assembly where GCC cannot keep it in
-// registers: Thumb-1 for ARMv6-M (no long multiply, no divide; GCC's C++ took about 940 instructions a
-// vertex, mostly calls and stack traffic around 64-bit products by parts). Same results as outcode() and
+// registers: Thumb-1 for ARMv6-M (no long multiply, no divide; GCC's C++ spent most of a vertex in calls
+// and stack traffic around 64-bit products by parts). Same results as outcode() and
 // project() for every vertex it accepts; it stops at the first one it refuses, which the caller projects
 // in C++. firmware/kernelcheck compares it with the C++ path on random views and points.
 #pragma once
