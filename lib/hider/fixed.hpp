@@ -187,7 +187,7 @@ inline constexpr const uint16_t* kReciprocalTableData = detail::kReciprocalTable
 /// with 32-bit multiplies and no division: a table and one Newton step give 2^48 / d to about 16 bits,
 /// a remainder step with two 32-bit products refines it to a few units, and the exact 64-bit remainder
 /// then corrects it (the last step alone makes the result exact for any estimate; the estimate only
-/// keeps it to a few iterations). On ARMv6-M a fraction of udiv64_32's cost (README.md gives the figures).
+/// keeps it to a few iterations). On ARMv6-M far cheaper than udiv64_32, whose loop it replaces.
 constexpr uint32_t reciprocal_word(uint32_t d) {
     const uint64_t r = (uint64_t{~d} << 32) | 0xFFFFFFFFu;  // 2^64 - 1 - d 2^32: v = floor(r / d)
     // 2^32 / dh for the top 16 bits dh: table (9 bits), then x1 = x0 + x0 e / 2^32 with e = 2^32 - dh x0.

@@ -15,38 +15,45 @@ fi
 here=$(cd "$(dirname "$0")" && pwd)
 preset=$1 work=$2 num=$3 den=$4
 shift 4
+for n in "$num" "$den"; do
+    case $n in '' | *[!0-9]* | 0) echo "$0: budget '$num/$den' must be positive integers" >&2; exit 2 ;; esac
+done
+[ ${#num} -le 8 ] && [ ${#den} -le 8 ] || { echo "$0: budget '$num/$den': at most 8 digits each" >&2; exit 2; }
+for f in "$3" ${6:+"$6"}; do
+    case $f in region | pair0) ;; *) echo "$0: unknown field '$f' (region or pair0)" >&2; exit 2 ;; esac
+done
 mkdir -p "$work"
 cd "$work"
 
 # count <elf> <machine> <field> <name>: prints the chosen count of one run
 count() {
-    INSNCOUNT_ARGS=pairs=1 sh "$here/run.sh" "$preset" "$1" "$4.txt" "$2" >/dev/null
+    if ! INSNCOUNT_ARGS=pairs=1 sh "$here/run.sh" "$preset" "$1" "$4.txt" "$2" >/dev/null; then
+        echo "FAIL: $1 did not run to a clean exit under QEMU" >&2
+        exit 1
+    fi
     case "$3" in
         region) v=$(sed -n 's/^insncount .* region=\([0-9]*\).*/\1/p' "$4.txt") ;;
-        pair0) v=$(sed -n 's/^pair 0 insns=\([0-9]*\).*/\1/p' "$4.txt") ;;
-        *) echo "$0: unknown field '$3'" >&2; exit 2 ;;
+        *) v=$(sed -n 's/^pair 0 insns=\([0-9]*\).*/\1/p' "$4.txt") ;;
     esac
-    if [ -z "$v" ] || [ "$v" -eq 0 ]; then
-        echo "FAIL: no $3 count for $1" >&2
+    if [ -z "$v" ] || [ "$v" -eq 0 ] || [ ${#v} -gt 10 ]; then
+        echo "FAIL: no $3 count (or one over 10 digits) for $1" >&2
         exit 1
     fi
     echo "$v"
 }
 
-a=$(count "$1" "$2" "$3" a)
+# (each count is checked here, not only by set -e: bash as sh does not stop inside $(...))
+a=$(count "$1" "$2" "$3" a) || exit 1
 echo "A: $(basename "$1") $3 = $a"
+b=1 limit_text="$num/$den" ratio=""
 if [ $# -eq 6 ]; then
-    b=$(count "$4" "$5" "$6" b)
+    b=$(count "$4" "$5" "$6" b) || exit 1
     echo "B: $(basename "$4") $6 = $b"
     limit_text="$num/$den x B"
-else
-    b=1
-    limit_text="$num/$den"
+    ratio=" (A / B = $(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", a / b }'))"
 fi
-ratio=""
-[ "$b" -ne 1 ] && ratio=" (A / B = $(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", a / b }'))"
-# awk: exact in doubles (counts below 2^31 times budgets below 2^21)
-if awk -v a="$a" -v b="$b" -v n="$num" -v d="$den" 'BEGIN { exit !(a * d <= n * b) }'; then
+# the shell's 64-bit arithmetic, exact: counts of at most 10 digits times budgets of at most 8
+if [ $((a * den <= num * b)) -eq 1 ]; then
     echo "within budget: A <= $limit_text$ratio"
 else
     echo "FAIL: over budget: A = $a > $limit_text$ratio" >&2

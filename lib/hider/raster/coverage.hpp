@@ -65,13 +65,13 @@ public:
     template <class Pixel, class Shader>
     uint32_t paint_span(Pixel* crow, int32_t y, int32_t x0, int32_t x1, uint32_t z, uint32_t dz, const Shader& shader) {
         const Shader shade = shader;  // a local copy: the pixel stores cannot alias it, so a flat colour stays in a register
-        uint32_t* cw = words_ + static_cast<ptrdiff_t>(y - y0_) * wpr_ + (x0 >> 5);  // the word of x0
+        uint32_t* word = words_ + static_cast<ptrdiff_t>(y - y0_) * wpr_ + (x0 >> 5);  // the word of x0
         uint32_t written = 0;
         for (int32_t x = x0; x < x1;) {
             const int32_t bit = x & 31;
             const int32_t n = min(x1 - x, 32 - bit);  // pixels of this span in this word
             const uint32_t want = (0xFFFFFFFFu >> (32 - n)) << bit;  // n in [1, 32]: shifts in [0, 31]
-            const uint32_t have = *cw;
+            const uint32_t have = *word;
             const uint32_t todo = want & ~have;
             if (todo == want) {  // nothing covered yet: the whole run
                 for (int32_t k = 0; k < n; ++k, z += dz) crow[x + k] = shade(z);
@@ -87,7 +87,7 @@ public:
             } else {
                 z += dz * static_cast<uint32_t>(n);
             }
-            *cw++ = have | want;
+            *word++ = have | want;
             x += n;
         }
         remaining_ -= written;

@@ -3,7 +3,8 @@
 // edge on the middle row. Both edges are kept as pointers into the current depth row (x + the row's
 // start, stepped by x's step, which holds the stride), so a row costs the span's set-up, two edge steps
 // and the loop: no depth-row pointer of its own. Spans index back from their end with a negative byte
-// count up to 0 (ARM) or walk a pointer (RV32, which has no register-offset addressing). Also defines
+// count up to 0 (Thumb-1) or walk a pointer (Thumb-2, post-incremented; RV32, which has no
+// register-offset addressing). Also defines
 // run_kernel_triangle(), which picks the kernel for the target; row_kernel.hpp includes this header at
 // its end. firmware/kernelcheck compares each with the portable twin on random states.
 #pragma once
