@@ -268,10 +268,12 @@ private:
                  bool in_heap) {
         grid_.remove(id, polys_[id]);
         if (in_heap) heap_remove(id);
-        polys_[id] = far;
+        ScreenPoly f = far, n = near;  // boxes that hold every pixel the pieces draw
+        piece_box(polys_[id], cuts(), far_cut.line, f);
+        piece_box(polys_[id], cuts(), near_cut.line, n);
+        polys_[id] = f;
         polys_[id].cut = static_cast<uint32_t>(cuts_.size());
         cuts_.push_back(far_cut);
-        ScreenPoly n = near;
         n.cut = static_cast<uint32_t>(cuts_.size());
         cuts_.push_back(near_cut);
         const bool added = polys_.push_back(n);  // room checked by compare
@@ -296,7 +298,8 @@ private:
         chain_len_ = 0;
     }
 
-    Span<const PieceCut> cuts() const { return {cuts_.data(), cuts_.size()}; }
+    // Inlined by hand: at -Os GCC made it a call once replace() grew (piece_box), costing a call per use.
+    __attribute__((always_inline)) Span<const PieceCut> cuts() const { return {cuts_.data(), cuts_.size()}; }
 
     /// The next candidate: the farther of the sorted input's next waiting polygon and the heap's top
     /// (kNone when both are empty). Input entries of polygons moved or cut since are skipped.
