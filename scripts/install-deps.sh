@@ -3,7 +3,7 @@
 #   host: compiler, CMake, Ninja (enough to render the demo)
 #   web:  host + clang 14 for wasm32-wasi (wasi-libc, libc++ and compiler-rt for wasm32, lld) and python3:
 #         builds and serves the web playground (scripts/demo.sh --web)
-#   all:  host + web + doctest, valgrind, clang's x86-64 runtimes (libFuzzer, ASan, UBSan: the BSP fuzzer),
+#   all:  host + web + doctest, valgrind, clang's x86-64 runtimes (libFuzzer, ASan, UBSan: the fuzzers),
 #         the ARM and RISC-V cross compilers, QEMU and Chromium (every test)
 set -euo pipefail
 want=(g++ cmake ninja-build)

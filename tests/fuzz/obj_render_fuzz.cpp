@@ -1,11 +1,8 @@
-// libFuzzer target (clang -fsanitize=fuzzer,address,undefined): arbitrary bytes as an OBJ file, through
-// the whole host pipeline a user's file meets: parse_obj() (small limits, so each limit is reachable),
-// build_scene() with the framing camera and with the eye inside the model's box, then every algorithm
-// at a small size, whole and in 3-row bands. Any crash or sanitizer report fails; so does a broken
-// promise the tests make on their own scenes, here on scenes nobody chose: a failure without a reason,
-// a band render that differs from the whole frame, a reverse painter or front-to-back BSP walk that
-// writes a pixel twice, or a status that is not ok while the render reports success with nothing said.
-// Run by ctest (obj_render_fuzz, host-asan preset) for a bounded time.
+// libFuzzer target (clang, ASan, UBSan): arbitrary bytes as an OBJ file through parse_obj() (small
+// limits), build_scene() (the framing camera, culled; an eye inside the model's box, not culled) and every
+// algorithm at 24x17, whole and in 3-row bands. Fails on a crash or sanitizer report, a failure without a
+// reason, bands whose bytes differ from the whole frame's, or a pixel written twice by the reverse
+// painter or bsp-front. Run by ctest (obj_render_fuzz, host-asan preset) for a bounded time.
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -58,9 +55,7 @@ void exercise(const Scene& scene, bool cull) {
         if (!ok) continue;
         const size_t bytes = static_cast<size_t>(scene.width) * scene.height * 3;
         if (whole.rgb.size() != bytes || banded.rgb.size() != bytes) fail("frame of the wrong size", name_of(algo), 0);
-        // Cuts Newell had no room for are reported (pool_needed, newell.dropped) and may differ by band.
-        if (whole.rgb != banded.rgb && whole.newell.dropped == 0 && banded.newell.dropped == 0)
-            fail("bands differ from the whole frame", name_of(algo), 3);
+        if (whole.rgb != banded.rgb) fail("bands differ from the whole frame", name_of(algo), 3);
         if ((algo == Algo::reverse || algo == Algo::bsp_front) && whole.stats.status == Status::ok &&
             whole.stats.pixels_written != whole.pixels_covered)
             fail("a pixel written twice", name_of(algo), 0);
@@ -81,6 +76,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (err.what.empty() || err.line < 0) fail("parse_obj failed without a reason", "-", 0);
         return 0;
     }
+    size_t triangles = 0;  // a face of n vertices is a fan of n - 2: keep each input to a few milliseconds
+    for (const ObjFace& f : model.faces) triangles += f.v.size() - 2;
+    if (triangles > 128) return 0;
     for (int camera = 0; camera < 2; ++camera) {
         CameraArgs args;
         args.width = 24;
@@ -89,7 +87,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             // The eye inside the model's box, looking at its first vertex: near-plane crossings.
             Vec3d lo = model.vertices[0], hi = lo;
             for (const auto& v : model.vertices)
-                for (int k = 0; k < 3; ++k) lo[k] = v[k] < lo[k] ? v[k] : lo[k], hi[k] = v[k] > hi[k] ? v[k] : hi[k];
+                for (int k = 0; k < 3; ++k) {
+                    lo[k] = v[k] < lo[k] ? v[k] : lo[k];
+                    hi[k] = v[k] > hi[k] ? v[k] : hi[k];
+                }
             args.eye = Vec3d{lo[0] + (hi[0] - lo[0]) * 0.4, lo[1] + (hi[1] - lo[1]) * 0.55, lo[2] + (hi[2] - lo[2]) * 0.45};
             args.target = model.vertices[0];
         }

@@ -1,8 +1,7 @@
-// libFuzzer target (clang -fsanitize=fuzzer,address,undefined): arbitrary bytes as a PGM height map for
-// hider-plot, through read_pgm(), heightmap_grid() (the image's own grid and a resampled one), the
-// default camera and the floating-horizon plot at 32x24, whole and in 3-row bands, plain and with the
-// mesh. Any crash or sanitizer report fails; so does a failure without a reason or bands whose bytes
-// differ from the whole frame's. Run by ctest (pgm_plot_fuzz, host-asan preset) for a bounded time.
+// libFuzzer target (clang, ASan, UBSan): arbitrary bytes as a PGM height map (hider-plot --heightmap)
+// through read_pgm(), heightmap_grid() (the image's own grid; 7x11 with the mesh), the default camera and
+// the floating horizon at 32x24, whole and in 3-row bands. Fails on a crash or sanitizer report, a failure
+// without a reason, or bands whose bytes differ from the whole frame's (ctest pgm_plot_fuzz).
 #include <unistd.h>
 
 #include <cstdio>
@@ -51,8 +50,9 @@ void plot(const HeightGrid& grid, bool mesh) {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    char path[] = "/tmp/hider-pgm-fuzz-XXXXXX";
-    const int fd = mkstemp(path);
+    const char* tmp = std::getenv("TMPDIR");
+    std::string path = std::string(tmp != nullptr && *tmp != 0 ? tmp : "/tmp") + "/hider-pgm-fuzz-XXXXXX";
+    const int fd = mkstemp(path.data());
     if (fd < 0) fail("cannot make a temporary file");
     close(fd);
     g_path = path;

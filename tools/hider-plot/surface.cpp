@@ -133,7 +133,7 @@ bool read_pgm(const std::string& path, Pgm& out, std::string& error) {
     out.width = static_cast<int>(width);
     out.height = static_cast<int>(height);
     out.maxval = static_cast<int>(maxval);
-    out.values.assign(count, 0);
+    out.values.clear();  // filled as values are read: a header that promises more than the file holds costs nothing
     if (binary) {
         // Exactly one whitespace byte ends the header; then 1 or 2 (big-endian) bytes per value.
         if (pos >= data.size()) return fail("truncated: no pixel data");
@@ -142,6 +142,7 @@ bool read_pgm(const std::string& path, Pgm& out, std::string& error) {
         const size_t have = (data.size() - pos) / bytes;
         if (have < count)
             return fail("truncated: " + std::to_string(have) + " of " + std::to_string(count) + " pixel values");
+        out.values.assign(count, 0);
         for (size_t i = 0; i < count; ++i) {
             const auto b = [&](size_t k) { return static_cast<int>(static_cast<unsigned char>(data[pos + i * bytes + k])); };
             out.values[i] = bytes == 1 ? b(0) : b(0) << 8 | b(1);
@@ -153,7 +154,7 @@ bool read_pgm(const std::string& path, Pgm& out, std::string& error) {
                 return fail("truncated: " + std::to_string(i) + " of " + std::to_string(count) + " pixel values");
             long v = 0;
             if (!to_count(token, v)) return fail("bad pixel value '" + token + "' (pixel " + std::to_string(i) + ")");
-            out.values[i] = static_cast<int>(std::min<long>(v, 1L << 30));
+            out.values.push_back(static_cast<int>(std::min<long>(v, 1L << 30)));
         }
     }
     for (size_t i = 0; i < count; ++i)

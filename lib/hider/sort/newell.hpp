@@ -12,6 +12,7 @@
 #pragma once
 #include <hider/sort/grid.hpp>
 #include <hider/sort/painter.hpp>
+#include <hider/sort/piece_box.hpp>
 #include <hider/sort/plane.hpp>
 
 namespace hider {
@@ -298,7 +299,7 @@ private:
         chain_len_ = 0;
     }
 
-    // Inlined by hand: at -Os GCC made it a call once replace() grew (piece_box), costing a call per use.
+    // always_inline: at -Os it would otherwise become a call, paid at every use in the pair tests.
     __attribute__((always_inline)) Span<const PieceCut> cuts() const { return {cuts_.data(), cuts_.size()}; }
 
     /// The next candidate: the farther of the sorted input's next waiting polygon and the heap's top

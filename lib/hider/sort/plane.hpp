@@ -112,26 +112,6 @@ inline void clip_outline(Outline& o, const CutLine& line) {
     for (int i = 0; i < n; ++i) o.v[i] = r[i];
     o.count = n;
 }
-
-/// The line of c as a x + b y + c0 (cut_side(c, x, y) for integer points), kept side >= 0. Endpoints
-/// within kCoordLimit (2^14) give |a|, |b| < 2^15 and |c0| <= 2^30.
-struct LineEquation {
-    int64_t a, b, c0;
-};
-constexpr LineEquation line_equation(const CutLine& c) {
-    return {-(int64_t{c.y1} - c.y0), int64_t{c.x1} - c.x0, (int64_t{c.y1} - c.y0) * c.x0 - (int64_t{c.x1} - c.x0) * c.y0};
-}
-
-/// floor(n / d) and ceil(n / d) for 0 < d < 2^32 and |n| < d * 2^31 (quotients within int32), by one
-/// udiv64_32() (no 64-bit library division).
-inline void floor_ceil(int64_t n, int64_t d, int32_t& lo, int32_t& hi) {
-    uint32_t r = 0;
-    const int32_t q = static_cast<int32_t>(udiv64_32(n < 0 ? 0 - static_cast<uint64_t>(n) : static_cast<uint64_t>(n),
-                                                     static_cast<uint32_t>(d), r));
-    const int32_t inexact = r != 0 ? 1 : 0;
-    lo = n < 0 ? -q - inexact : q;
-    hi = n < 0 ? -q : q + inexact;
-}
 }  // namespace detail
 
 /// The outline of polygon p (cut chain in `cuts`).
@@ -252,63 +232,6 @@ inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, CutLine& f
     return true;
 }
 
-/// Sets the box of `piece`, cut from p by `line` (its newest cut record's line), to hold every pixel
-/// centre PieceRaster draws for it: the bounding box of p's triangle clipped by p's cut chain and
-/// `line`, from exact rational vertices (floor and ceiling), one subpixel wider, within p's box.
-/// cut_polygon()'s box, from the outline's rounded points, is not enough: a cut point rounded on one
-/// cut line drifts far along a later cut that meets it at a shallow angle. Cost: for L = 4 + the cuts
-/// lines, L^2 / 2 crossings tested against up to L lines each (about 30 tests for one cut), and two
-/// 64/32-bit divisions per vertex, so Newell runs it only for the pieces it keeps.
-inline void piece_box(const ScreenPoly& p, Span<const PieceCut> cuts, const CutLine& line, ScreenPoly& piece) {
-    // The region is the intersection of closed half-planes: the triangle's edges (oriented to keep its
-    // inside), `line` and p's cuts. Its vertices are the crossings of two of these lines that every
-    // other keeps; each is exact as (x / d, y / d) with d <= 2^31 and |x|, |y| <= 2^46, so a side value
-    // a x + b y + c0 d stays below 2^62 + 2^61 in int64. No outline is stored: 8 bytes a line of stack.
-    CutLine lines[4 + kMaxPieceCuts];
-    const int64_t turn = cut_side({p.v[0].x, p.v[0].y, p.v[1].x, p.v[1].y}, p.v[2].x, p.v[2].y);
-    if (turn == 0) return;  // a degenerate triangle draws nothing
-    for (int i = 0; i < 3; ++i) {
-        const ScreenVertex &s = p.v[i], &t = p.v[i == 2 ? 0 : i + 1];
-        const CutLine edge{s.x, s.y, t.x, t.y};
-        lines[i] = turn > 0 ? edge : reversed(edge);
-    }
-    lines[3] = line;
-    int n = 4;
-    for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev) {
-        if (n == 4 + kMaxPieceCuts) return;  // longer than any chain cut_polygon() makes: keep the box
-        lines[n++] = cuts[c].line;
-    }
-    int32_t x0 = INT32_MAX, x1 = INT32_MIN, y0 = INT32_MAX, y1 = INT32_MIN;
-    for (int i = 0; i < n; ++i) {
-        const detail::LineEquation li = detail::line_equation(lines[i]);
-        for (int j = i + 1; j < n; ++j) {
-            const detail::LineEquation lj = detail::line_equation(lines[j]);
-            int64_t d = li.a * lj.b - lj.a * li.b, x = li.b * lj.c0 - lj.b * li.c0, y = li.c0 * lj.a - lj.c0 * li.a;
-            if (d == 0) continue;  // parallel
-            if (d < 0) d = -d, x = -x, y = -y;
-            bool kept = true;
-            for (int k = 0; k < n && kept; ++k) {
-                if (k == i || k == j) continue;
-                const detail::LineEquation lk = detail::line_equation(lines[k]);
-                kept = lk.a * x + lk.b * y + lk.c0 * d >= 0;
-            }
-            if (!kept) continue;
-            int32_t lo, hi;
-            detail::floor_ceil(x, d, lo, hi);
-            x0 = min(x0, lo);
-            x1 = max(x1, hi);
-            detail::floor_ceil(y, d, lo, hi);
-            y0 = min(y0, lo);
-            y1 = max(y1, hi);
-        }
-    }
-    if (x0 > x1) return;  // an empty region: no pixel centre, any box will do
-    piece.xmin = static_cast<int16_t>(max<int32_t>(x0 - 1, p.xmin));
-    piece.xmax = static_cast<int16_t>(min<int32_t>(x1 + 1, p.xmax));
-    piece.ymin = static_cast<int16_t>(max<int32_t>(y0 - 1, p.ymin));
-    piece.ymax = static_cast<int16_t>(min<int32_t>(y1 + 1, p.ymax));
-}
-
 /// How one polygon's cut by a plane went.
 enum class CutResult : uint8_t {
     cut,        ///< two pieces, each wholly on one side
@@ -321,7 +244,8 @@ enum class CutResult : uint8_t {
 /// Cuts polygon p by plane pl (the plane of mesh triangle plane_tri) into far and near pieces, each
 /// keeping p's triangle, tri and flags, with one more cut record in far_cut / near_cut. The caller
 /// stores the records in the pool `cuts` holds p's chain in and sets far.cut / near.cut to their indices.
-/// The pieces' boxes come from the rounded outline; piece_box() gives a piece that is kept its exact box.
+/// The pieces' boxes come from the rounded outline; piece_box() (sort/piece_box.hpp) gives a piece that
+/// is kept the box of its exact region.
 inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, const ScreenPlane& pl, uint32_t plane_tri,
                              ScreenPoly& far, ScreenPoly& near, PieceCut& far_cut, PieceCut& near_cut) {
     int depth = 0;
