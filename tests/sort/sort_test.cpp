@@ -14,6 +14,18 @@
 
 using namespace hider;
 
+namespace {
+/// The bounds of a whole w x h frame, geometry only (no buffers): what with_poly_raster() needs.
+FrameView<Grey8Format> whole_frame(int w, int h) {
+    FrameView<Grey8Format> f;
+    f.width = w;
+    f.height = h;
+    f.y0 = 0;
+    f.y1 = h;
+    return f;
+}
+}  // namespace
+
 TEST_CASE("mul128 and Int128 sums are exact (checked against unsigned __int128 on the host)") {
     std::mt19937_64 rng(5);
     for (int i = 0; i < 100000; ++i) {
@@ -85,11 +97,7 @@ TEST_CASE("a plane classifies its own vertices as on it and cuts a straddling tr
     // The two pieces cover exactly the stick's pixels, each once (a 100x50 frame around it).
     const int w = 100, h = 50;
     std::vector<int> count(w * h, 0), want(w * h, 0);
-    FrameView<Grey8Format> frame;
-    frame.width = w;
-    frame.height = h;
-    frame.y0 = 0;
-    frame.y1 = h;
+    const FrameView<Grey8Format> frame = whole_frame(w, h);
     const BandBounds bb = band_bounds(frame);
     auto cover = [&](const ScreenPoly& p, std::vector<int>& c) {
         with_poly_raster(p, {cuts.data(), cuts.size()}, bb, frame, [&](const auto& r, int32_t y0, int32_t y1) {
@@ -134,11 +142,7 @@ TEST_CASE("a piece's box holds every pixel centre it draws, after chains of cuts
     // must cover exactly its pixels. Cut points rounded to the grid drift far along a cut that meets an
     // earlier one at a shallow angle, so a box taken from the rounded outline is not enough.
     const int w = 48, h = 40;
-    FrameView<Grey8Format> frame;
-    frame.width = w;
-    frame.height = h;
-    frame.y0 = 0;
-    frame.y1 = h;
+    const FrameView<Grey8Format> frame = whole_frame(w, h);
     const BandBounds bb = band_bounds(frame);
     const int32_t ox = kSubpixel / 2 - w * (kSubpixel / 2), oy = kSubpixel / 2 - h * (kSubpixel / 2);
     auto sv = [](int32_t x, int32_t y, uint32_t z) { ScreenVertex v; v.x = static_cast<int16_t>(x); v.y = static_cast<int16_t>(y); v.z = z; return v; };
