@@ -1,7 +1,7 @@
-// The box of a piece's exact region, for the pieces Newell keeps. cut_polygon() (plane.hpp) takes a
-// piece's box from its outline, whose cut points are rounded to the grid: a point rounded on one cut
-// line drifts far along a later cut that meets it at a shallow angle, and the box can then miss a row
-// the piece draws, which the band test (with_poly_raster) and Newell's extent tests and grid trust.
+// The box of a piece's exact region, for the pieces Newell keeps: the band test (with_poly_raster) and
+// Newell's extent tests and grid trust it to hold every pixel the piece draws. A box taken from the
+// piece's outline (plane.hpp), whose cut points are rounded to the grid, is not enough: a point rounded
+// on one cut line drifts far along a later cut that meets it at a shallow angle.
 #pragma once
 #include <hider/sort/plane.hpp>
 

@@ -244,8 +244,8 @@ enum class CutResult : uint8_t {
 /// Cuts polygon p by plane pl (the plane of mesh triangle plane_tri) into far and near pieces, each
 /// keeping p's triangle, tri and flags, with one more cut record in far_cut / near_cut. The caller
 /// stores the records in the pool `cuts` holds p's chain in and sets far.cut / near.cut to their indices.
-/// The pieces' boxes come from the rounded outline; piece_box() (sort/piece_box.hpp) gives a piece that
-/// is kept the box of its exact region.
+/// The pieces keep p's box, which holds them; piece_box() (sort/piece_box.hpp) gives a piece that is
+/// kept the box of its exact region (a trial cut needs no box).
 inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, const ScreenPlane& pl, uint32_t plane_tri,
                              ScreenPoly& far, ScreenPoly& near, PieceCut& far_cut, PieceCut& near_cut) {
     int depth = 0;
@@ -264,25 +264,15 @@ inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, con
     far_cut = {line, p.cut, plane_tri | kCutFar};
     near_cut = {reversed(line), p.cut, plane_tri};
     auto make = [&p](const Outline& o, ScreenPoly& out) {
-        out = p;
+        out = p;  // p's box holds the piece; piece_box() narrows it for a piece that is kept
         out.cut = kNoCut;
         out.moved_at = kNotMoved;
         out.zmin = o.v[0].z;
         out.zmax = o.v[0].z;
-        int32_t x0 = o.v[0].x, x1 = o.v[0].x, y0 = o.v[0].y, y1 = o.v[0].y;
         for (int i = 1; i < o.count; ++i) {
             out.zmin = min(out.zmin, o.v[i].z);
             out.zmax = max(out.zmax, o.v[i].z);
-            x0 = min<int32_t>(x0, o.v[i].x);
-            x1 = max<int32_t>(x1, o.v[i].x);
-            y0 = min<int32_t>(y0, o.v[i].y);
-            y1 = max<int32_t>(y1, o.v[i].y);
         }
-        // The rounded outline's box, one subpixel wider: near the region, cheap for a trial cut.
-        out.xmin = static_cast<int16_t>(max<int32_t>(x0 - 1, p.xmin));
-        out.xmax = static_cast<int16_t>(min<int32_t>(x1 + 1, p.xmax));
-        out.ymin = static_cast<int16_t>(max<int32_t>(y0 - 1, p.ymin));
-        out.ymax = static_cast<int16_t>(min<int32_t>(y1 + 1, p.ymax));
     };
     make(fo, far);
     make(no, near);
