@@ -244,6 +244,15 @@ static InsnCost cost_m3_32(uint32_t hw, uint32_t hw2) {
     return cost_const(1, 1);
 }
 
+/* Size of the Thumb instruction whose first halfword is in `data`: 4 for the 32-bit encodings (first
+ * five bits 0b11101, 0b11110 or 0b11111), else 2. QEMU 7.2 reports a 16-bit instruction on the last
+ * halfword of a page as 4 bytes (it read the next halfword to tell), so the plugin takes the size from
+ * the encoding (firmware/cyclecheck's page_end). */
+static int thumb_insn_size(const uint8_t *data) {
+    const uint32_t hw = (uint32_t)data[0] | ((uint32_t)data[1] << 8);
+    return (hw >> 11) >= 0x1Du ? 4 : 2;
+}
+
 /* Cost of one instruction (its bytes in `data`, 2 or 4 of them) under `model`. */
 static InsnCost insn_cost(int model, const uint8_t *data, int size) {
     const uint32_t hw = (uint32_t)data[0] | ((uint32_t)data[1] << 8);

@@ -59,6 +59,7 @@ typedef struct Block {
     uint64_t lo, hi;
     uint64_t fallthrough;
     uint32_t taken_lo, taken_hi;
+    InsnCost first, last;   /* M3: the pairing rules across a fall-through from one block into the next */
     uint32_t n;
     uint64_t region_execs;  /* profile: executions that started inside the region */
     uint64_t *pcs;          /* profile: address of each instruction */
@@ -98,6 +99,13 @@ static void on_block(unsigned int vcpu, void *userdata) {
     if (prev != NULL && prev->taken_hi != 0 && prev->fallthrough != b->pcs[0]) {
         cyc_lo += prev->taken_lo;
         cyc_hi += prev->taken_hi;
+    }
+    if (model == MODEL_M3 && prev != NULL && prev->fallthrough == b->pcs[0]) {
+        /* QEMU ends blocks at page boundaries too: the pair across one costs what it would inside a block. */
+        InsnCost paired = b->first;
+        pair_m3(&prev->last, &paired);
+        cyc_lo += (uint64_t)((int64_t)paired.lo - (int64_t)b->first.lo);
+        cyc_hi += (uint64_t)((int64_t)paired.hi - (int64_t)b->first.hi);
     }
     cyc_lo += b->lo;
     cyc_hi += b->hi;
@@ -151,14 +159,17 @@ static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb *tb) {
         b->n = (uint32_t)n;
         for (size_t i = 0; i < n; ++i) {
             struct qemu_plugin_insn *insn = qemu_plugin_tb_get_insn(tb, i);
-            const int size = (int)qemu_plugin_insn_size(insn);
-            if (model != MODEL_NONE) cost[i] = insn_cost(model, (const uint8_t *)qemu_plugin_insn_data(insn), size);
+            const uint8_t *data = (const uint8_t *)qemu_plugin_insn_data(insn);
+            const int size = model != MODEL_NONE ? thumb_insn_size(data) : (int)qemu_plugin_insn_size(insn);
+            if (model != MODEL_NONE) cost[i] = insn_cost(model, data, size);
             if (model == MODEL_M3 && i > 0) pair_m3(&cost[i - 1], &cost[i]);
             b->pcs[i] = qemu_plugin_insn_vaddr(insn) & ~(uint64_t)1;
             b->costs[i] = cost[i].lo;
             b->lo += cost[i].lo;
             b->hi += cost[i].hi;
+            if (i == 0) b->first = cost[0];  /* before pairing inside the block: it has no predecessor here */
             if (i + 1 == n) {
+                b->last = cost[i];
                 b->fallthrough = b->pcs[i] + (uint64_t)size;
                 b->taken_lo = cost[i].taken_lo;
                 b->taken_hi = cost[i].taken_hi;
