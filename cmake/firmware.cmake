@@ -11,6 +11,7 @@ if(NOT DEFINED HIDER_ARCH OR NOT DEFINED HIDER_QEMU_BIG OR NOT DEFINED HIDER_QEM
 endif()
 
 find_program(HIDER_SIZE NAMES ${HIDER_TRIPLE}-size REQUIRED)
+find_program(HIDER_OBJDUMP NAMES ${HIDER_TRIPLE}-objdump REQUIRED)
 find_program(HIDER_TIMEOUT NAMES timeout REQUIRED)
 find_program(HIDER_HOST_CC NAMES cc gcc clang REQUIRED)
 find_program(HIDER_HOST_CXX NAMES c++ g++ clang++ REQUIRED)
@@ -52,17 +53,21 @@ endfunction()
 
 # hider_add_firmware(NAME <name> SOURCES <src>... MACHINE <big|small>
 #                    [RAM_BUDGET <ld size>] [STACK_SIZE <ld size, default 4K>] [STACK_LIMIT <bytes>]
-#                    [TIMEOUT <seconds, default 60>] [LIBRARIES <target>...] [NO_SYMBOL_CHECK] [NO_TEST])
+#                    [TIMEOUT <seconds, default 60>] [LIBRARIES <target>...] [NOT_POINTERS <object glob>...]
+#                    [NO_SYMBOL_CHECK] [NO_TEST])
 # Builds <name>.elf for the current target with the runtime (startup, mem*, bench markers,
 # semihosting) and hider::hider. After linking: the nm check (fails the build on float, heap,
 # exceptions or RTTI), `size`, and the -fstack-usage report (fails above STACK_LIMIT if given).
 # RAM_BUDGET caps data+bss+stack at link time. The ctest <name>.run runs the ELF on MACHINE under
 # `timeout`, in the working directory ${CMAKE_BINARY_DIR}/frames/<name>, where its semihosted files
-# land; it passes on exit status 0 and is the fixture <name>.run for comparisons.
+# land; it passes on exit status 0 and is the fixture <name>.run for comparisons. The ctest
+# <name>.stack_bound requires hider-stack's static worst-case stack (from the reset entry, every path)
+# to fit STACK_SIZE; NOT_POINTERS names data objects whose words are not function pointers (baked
+# data that holds integers equal to code addresses).
 # Also adds the target <name>_insncount (not in ALL): prints the bench_begin..bench_end count.
 function(hider_add_firmware)
   cmake_parse_arguments(PARSE_ARGV 0 FW "NO_SYMBOL_CHECK;NO_TEST"
-    "NAME;MACHINE;RAM_BUDGET;STACK_SIZE;STACK_LIMIT;TIMEOUT" "SOURCES;LIBRARIES")
+    "NAME;MACHINE;RAM_BUDGET;STACK_SIZE;STACK_LIMIT;TIMEOUT" "SOURCES;LIBRARIES;NOT_POINTERS")
   if(NOT FW_NAME OR NOT FW_SOURCES)
     message(FATAL_ERROR "hider_add_firmware: NAME and SOURCES are required")
   endif()
@@ -125,6 +130,36 @@ function(hider_add_firmware)
     HIDER_FRAMES_DIR ${frames}
     HIDER_MACHINE ${FW_MACHINE})
 
+  # The static stack bound against the reserved stack (ld sizes: bytes or <n>K).
+  if(FW_STACK_SIZE MATCHES "^([0-9]+)K$")
+    math(EXPR stack_bytes "${CMAKE_MATCH_1} * 1024")
+  elseif(FW_STACK_SIZE MATCHES "^[0-9]+$")
+    set(stack_bytes ${FW_STACK_SIZE})
+  else()
+    message(FATAL_ERROR "hider_add_firmware(${FW_NAME}): STACK_SIZE '${FW_STACK_SIZE}' is not <bytes> or <n>K")
+  endif()
+  if(HIDER_ARCH STREQUAL "arm")  # entry: the reset handler; the fault handler ends a run, it is no callee
+    set(bound_args --entry hider_reset --handler hider_fault_from_frame --not-pointers hider_vectors)
+  else()
+    set(bound_args --entry _start --handler hider_trap_handler)
+  endif()
+  foreach(object IN LISTS FW_NOT_POINTERS)
+    list(APPEND bound_args --not-pointers ${object})
+  endforeach()
+  get_target_property(hider_stack host_hider-stack HIDER_HOST_PROGRAM)
+  if(FW_NO_TEST)
+    set(measured -)
+  else()
+    set(measured ${frames}/stack.txt)
+  endif()
+  add_test(NAME ${FW_NAME}.stack_bound
+    COMMAND sh ${scripts}/check_stack_bound.sh ${HIDER_OBJDUMP} ${hider_stack} $<TARGET_FILE:${FW_NAME}>
+            ${CMAKE_CURRENT_BINARY_DIR}/${FW_NAME}.dump ${stack_bytes} ${measured} ${bound_args})
+  set_tests_properties(${FW_NAME}.stack_bound PROPERTIES TIMEOUT 60 LABELS "firmware;stack;${HIDER_TARGET}")
+  if(NOT FW_NO_TEST)
+    set_tests_properties(${FW_NAME}.stack_bound PROPERTIES FIXTURES_REQUIRED ${FW_NAME}.run)
+  endif()
+
   if(NOT FW_NO_TEST)
     add_test(NAME ${FW_NAME}.run COMMAND ${FW_NAME} WORKING_DIRECTORY ${frames})
     math(EXPR ctest_timeout "${FW_TIMEOUT} + 15")
@@ -180,6 +215,10 @@ function(hider_add_host_program)
   add_custom_target(host_${HP_NAME} ALL DEPENDS ${out})
   set_target_properties(host_${HP_NAME} PROPERTIES HIDER_HOST_PROGRAM ${out})
 endfunction()
+
+# hider-stack (tools/hider-stack), the static stack bound of every firmware's <name>.stack_bound test.
+hider_add_host_program(NAME hider-stack SOURCES ${PROJECT_SOURCE_DIR}/tools/hider-stack/main.cpp
+                       ${PROJECT_SOURCE_DIR}/tools/hider-stack/stack_bound.cpp)
 
 # hider_compare_with_host(FIRMWARE <fw> OUTPUTS <file>...
 #                         HOST_PROGRAM <name> [HOST_ARGS <arg>...] | HOST_COMMAND <cmd>...)

@@ -29,35 +29,37 @@ struct BandBuffers {
 /// carried-slot figures.
 inline hider::FrameStats render_in_bands(const spin::Scene& s, uint32_t frame, const BandBuffers& buf,
                                          const hider::port::BandSink& sink, hider::BinnedStats& carry) {
-    hider::FrameStats total;
+    auto failed = [](hider::Status why) {
+        hider::FrameStats st;
+        st.status = why;
+        return st;
+    };
     const size_t band_px = static_cast<size_t>(s.width) * static_cast<size_t>(buf.rows);
     if (!hider::port::is_complete(sink) || buf.rows < 1 || buf.color.size() < band_px || buf.depth.size() < band_px ||
-        s.width > UINT16_MAX || s.height > UINT16_MAX) {
-        total.status = hider::Status::invalid_argument;
-        return total;
-    }
-    if (!sink.begin_frame(sink.user, static_cast<uint16_t>(s.width), static_cast<uint16_t>(s.height))) {
-        total.status = hider::Status::invalid_argument;
-        return total;
-    }
+        s.width > UINT16_MAX || s.height > UINT16_MAX)
+        return failed(hider::Status::invalid_argument);
+    if (!sink.begin_frame(sink.user, static_cast<uint16_t>(s.width), static_cast<uint16_t>(s.height)))
+        return failed(hider::Status::invalid_argument);
     hider::View view;
     bench_begin();
-    total.status = spin::frame_view(s, frame, view);
-    if (total.status == hider::Status::ok) total.status = hider::project_vertices(view, s.mesh.positions, buf.verts);
-    if (total.status == hider::Status::ok) {
-        const spin::Frame buffers =
-            hider::band_view<hider::Rgb565Format, uint16_t>(buf.color.data(), buf.depth.data(), s.width, s.height, 0, buf.rows);
-        total = hider::draw_zbuffer_binned(
-            view, s.mesh, buf.verts, buffers, spin::draw_options(), spin::kBackground, buf.scratch,
-            [&sink](const spin::Frame& band) {
-                bench_end();  // the sink's time is the display's, not the renderer's
-                const bool sent = sink.write_rows(sink.user, static_cast<uint16_t>(band.y0), static_cast<uint16_t>(band.rows()),
-                                                  band.color, static_cast<uint32_t>(band.stride));
-                bench_begin();
-                return sent;
-            },
-            &carry);
-    }
+    hider::Status status = spin::frame_view(s, frame, view);
+    if (status == hider::Status::ok) status = hider::project_vertices(view, s.mesh.positions, buf.verts);
+    // Initialised from the call (no second FrameStats on the stack beside the one it returns).
+    hider::FrameStats total =
+        status != hider::Status::ok
+            ? failed(status)
+            : hider::draw_zbuffer_binned(
+                  view, s.mesh, buf.verts,
+                  hider::band_view<hider::Rgb565Format, uint16_t>(buf.color.data(), buf.depth.data(), s.width, s.height, 0, buf.rows),
+                  spin::draw_options(), spin::kBackground, buf.scratch,
+                  [&sink](const spin::Frame& band) {
+                      bench_end();  // the sink's time is the display's, not the renderer's
+                      const bool sent = sink.write_rows(sink.user, static_cast<uint16_t>(band.y0), static_cast<uint16_t>(band.rows()),
+                                                        band.color, static_cast<uint32_t>(band.stride));
+                      bench_begin();
+                      return sent;
+                  },
+                  &carry);
     bench_end();
     const bool ended = sink.end_frame(sink.user);
     if (total.status == hider::Status::ok && !ended) total.status = hider::Status::invalid_argument;

@@ -23,11 +23,13 @@ namespace scene = hider::scenes::torus_160x128;
 // the extra bands (README.md, "Bands").
 using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, 6, 44>;
 Sizes::Storage g;
+// The scene and the buffer spans are constants: in flash, not on the stack (hider-stack's bound).
+constexpr spin::Scene kScene{scene::kCamera, scene::kWidth, scene::kHeight, scene::mesh()};
+constexpr bands::BandBuffers kBuffers = g.buffers();
 
 }  // namespace
 
 int main() {
     spin::SemihostIo io;
-    const spin::Scene s{scene::kCamera, scene::kWidth, scene::kHeight, scene::mesh()};
-    return bands::run(io, s, g.buffers(), g.ppm_chunk, "bands.ppm");
+    return bands::run(io, kScene, kBuffers, g.ppm_chunk, "bands.ppm");
 }

@@ -22,13 +22,15 @@ namespace scene = hider::scenes::torus_320x240;
 using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, BANDS320_ROWS,
                            BANDS320_SLOTS>;
 Sizes::Storage g;
+// The scene and the buffer spans are constants: in flash, not on the stack (hider-stack's bound).
+constexpr spin::Scene kScene{scene::kCamera, scene::kWidth, scene::kHeight, scene::mesh()};
+constexpr bands::BandBuffers kBuffers = g.buffers();
 
 }  // namespace
 
 int main() {
     spin::SemihostIo io;
-    const spin::Scene s{scene::kCamera, scene::kWidth, scene::kHeight, scene::mesh()};
-    const int status = bands::run(io, s, g.buffers(), g.ppm_chunk, "bands320.ppm");
+    const int status = bands::run(io, kScene, kBuffers, g.ppm_chunk, "bands320.ppm");
     io.print("bands320: storage ");
     io.print_u32(static_cast<uint32_t>(sizeof g));
     io.print(" bytes\n");

@@ -23,7 +23,7 @@ struct Sizes {
         uint8_t slots[3 * Carried];
         uint8_t ppm_chunk[3 * kPpmChunk];
 
-        BandBuffers buffers() {
+        constexpr BandBuffers buffers() {
             return {verts, color, depth, Rows, {next, head, carried, slots}};
         }
     };

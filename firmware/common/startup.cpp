@@ -1,6 +1,8 @@
 // Shared C++ runtime start: .data copy, .bss zeroing, static constructors, main(), and the exit
-// status through semihosting. Also measures the stack high-water mark by painting the stack, and fails
-// a run that used all but the last 32 bytes of it (it may have overrun into .bss).
+// status through semihosting. Also measures the stack high-water mark by painting the stack, fails
+// a run that used all but the last 32 bytes of it (it may have overrun into .bss), and writes the mark
+// to stack.txt in the run's directory, where ctest <name>.stack_bound holds hider-stack's static bound
+// against it.
 // Symbols come from firmware/common/{cortex_m,riscv}.ld.
 #include "common/runtime.hpp"
 #include "semihost/semihost.hpp"
@@ -25,10 +27,28 @@ constexpr uint32_t kStackPaint = 0x5AC3A55Cu;
 constexpr uintptr_t kPaintMargin = 64;  // bytes below the current sp left unpainted (our own frame)
 constexpr uint32_t kStackReserve = 32;  // a run that leaves fewer bytes of its stack untouched fails
 
-void paint_stack() {
+/// Paints the stack below this frame; returns the depth the painting starts at (no smaller mark can be measured).
+uint32_t paint_stack() {
     uint32_t here = 0;
     const uintptr_t limit = (reinterpret_cast<uintptr_t>(&here) - kPaintMargin) & ~uintptr_t{3};
     for (uint32_t* p = __stack_bottom__; reinterpret_cast<uintptr_t>(p) < limit; ++p) *p = kStackPaint;
+    return static_cast<uint32_t>(reinterpret_cast<uintptr_t>(__stack_top__) - limit);
+}
+
+/// Appends text, or the decimal digits of v, to out at n.
+size_t put(char* out, size_t n, const char* text) {
+    while (*text != '\0') out[n++] = *text++;
+    return n;
+}
+size_t put(char* out, size_t n, uint32_t v) {
+    char digits[10];
+    int k = 0;
+    do {
+        digits[k++] = static_cast<char>('0' + v % 10);
+        v /= 10;
+    } while (v != 0);
+    while (k > 0) out[n++] = digits[--k];
+    return n;
 }
 
 uint32_t stack_used_bytes() {
@@ -37,13 +57,24 @@ uint32_t stack_used_bytes() {
     return static_cast<uint32_t>(reinterpret_cast<uintptr_t>(__stack_top__) - reinterpret_cast<uintptr_t>(p));
 }
 
+/// stack.txt: "high-water N floor F size S". Out of line, so its buffer is not in hider_reset's frame
+/// beneath main().
+__attribute__((noinline)) void write_stack_report(uint32_t used, uint32_t floor, uint32_t size) {
+    char text[64];
+    size_t n = put(text, 0, "high-water ");
+    n = put(text, put(text, n, used), " floor ");
+    n = put(text, put(text, n, floor), " size ");
+    n = put(text, put(text, n, size), "\n");
+    if (!hider::semihost::write_file("stack.txt", text, n)) hider::semihost::print("hider: cannot write stack.txt\n");
+}
+
 }  // namespace
 
 extern "C" void hider_reset() {
     const uint32_t* src = __data_load__;
     for (uint32_t* dst = __data_start__; dst < __data_end__; ++dst, ++src) *dst = *src;
     for (uint32_t* dst = __bss_start__; dst < __bss_end__; ++dst) *dst = 0;
-    paint_stack();
+    const uint32_t floor = paint_stack();
     for (auto* ctor = __init_array_start; ctor < __init_array_end; ++ctor) (*ctor)();
 
     const int status = main();
@@ -57,6 +88,7 @@ extern "C" void hider_reset() {
     sh::print(" of ");
     sh::print_u32(size);
     sh::print(" bytes\n");
+    write_stack_report(used, floor, size);
     if (size - used < kStackReserve) {  // the stack may have run into the data below it: not a pass
         sh::print("hider: stack exhausted (fewer than 32 bytes never used): give the firmware more stack\n");
         sh::exit(status != 0 ? status : 4);

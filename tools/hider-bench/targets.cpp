@@ -49,6 +49,9 @@ const Firmware kFirmware[] = {
     {"kfail1", "firmware/spanbench/spanbench_kfail1.elf", true, "big"},
 };
 constexpr uint64_t kSpanPixels = 320;
+/// The bands firmware's stack (STACK_SIZE in firmware/bands/CMakeLists.txt).
+constexpr int kBandsStack = 2056;
+
 /// Band heights of the bands320 builds (3: bands320 itself, 16 KB; the others on the big machine).
 const int kBandRows[] = {1, 2, 3, 4, 8, 16};
 constexpr uint32_t kTeapotVertices = 3644, kTeapotTriangles = 6320;
@@ -299,9 +302,11 @@ int targets_command(const Args& args) {
 
     // Band height against RAM and cost (the torus at 320x240).
     std::printf("\nBand height of the torus at 320x240 against RAM and instructions: the renderer's static storage\n"
-                "(vertex cache, bins, band buffers, carried slots, PPM chunk; printed by the firmware) plus its 2 KB\n"
-                "stack; 3 rows is bands320 (43 slots, the 16 KB machines), the others run on the big machine with 80\n"
-                "slots (no set-up repeated for want of one). Ratio: to spin320 on the same chip.\n\n");
+                "(vertex cache, bins, band buffers, carried slots, PPM chunk; printed by the firmware) plus its\n"
+                "%d-byte stack (firmware/bands/CMakeLists.txt: hider-stack's bound fits it); 3 rows is bands320 (43\n"
+                "slots, the 16 KB machines), the others run on the big machine with 80 slots (no set-up repeated for\n"
+                "want of one). Ratio: to spin320 on the same chip.\n\n",
+                kBandsStack);
     std::printf("| rows | bands | RAM bytes |");
     for (const std::string& preset : presets) std::printf(" %s instr | ratio |", target_name(preset).c_str());
     std::printf("\n|---:|---:|---:|");
@@ -311,7 +316,7 @@ int targets_command(const Args& args) {
         const std::string key = rows == 3 ? "bands320" : "bands320_rows" + std::to_string(rows);
         const Count& first = counts[presets.front()][key];
         const uint64_t storage = output_number(first, "storage ", key);
-        std::printf("| %d | %d | %s |", rows, (240 + rows - 1) / rows, grouped(storage + 2048).c_str());
+        std::printf("| %d | %d | %s |", rows, (240 + rows - 1) / rows, grouped(storage + kBandsStack).c_str());
         for (const std::string& preset : presets) {
             const Count& c = counts[preset][key];
             std::printf(" %s | %sx |", grouped(c.region).c_str(),

@@ -1,0 +1,301 @@
+// hider-stack's analysis (tools/hider-stack) on small hand-written objdump listings: frames from every
+// way a function takes stack (push, store-multiple, sp decrements, Thumb-1's constant in a register),
+// returns that are not calls, tail calls, indirect calls through address-taken functions, and the cases
+// that must refuse to give a bound. The firmware ctests (<name>.stack_bound) run it on every real ELF
+// and hold it against the high-water mark each run measures.
+#include <sstream>
+#include <string>
+
+#include <doctest/doctest.h>
+
+#include "hider-stack/stack_bound.hpp"
+
+namespace {
+
+stackbound::Program parse(const std::string& text) {
+    std::istringstream in(text);
+    stackbound::Program p;
+    std::string why;
+    const bool ok = stackbound::parse_objdump(in, p, why);
+    REQUIRE_MESSAGE(ok, why);
+    return p;
+}
+
+stackbound::Bound bound_of(const std::string& text, const std::string& entry, std::vector<std::string> not_pointers = {},
+                           std::vector<std::string> handlers = {}) {
+    const stackbound::Program p = parse(text);
+    stackbound::Options opt;
+    opt.entry = entry;
+    opt.not_pointers = std::move(not_pointers);
+    opt.handlers = std::move(handlers);
+    return stackbound::bound(p, opt);
+}
+
+std::string path_of(const stackbound::Bound& b) {
+    std::string s;
+    for (const auto& [name, frame] : b.path) s += name + ":" + std::to_string(frame) + " ";
+    return s;
+}
+
+// Thumb: reset -> main -> {leaf, big}; big takes its frame the Thumb-1 way (a constant from a literal
+// added to sp) and returns through a popped register; `spin` loops on itself (a local branch).
+const char* const kArm = R"(
+/build/fw.elf:     file format elf32-littlearm
+
+SYMBOL TABLE:
+00000000 l    d  .text	00000000 .text
+00000100 g     F .text	0000000a reset
+00000110 g     F .text	0000000e main
+00000120 g     F .text	00000004 leaf
+00000130 g     F .text	00000018 big
+00000150 g     F .text	00000002 spin
+
+Contents of section .text:
+ 0140 a8fdffff 00000000 00000000 00000000  ................
+
+Disassembly of section .text:
+
+00000100 <reset>:
+ 100:	push	{r4, lr}
+ 102:	sub	sp, #16
+ 104:	bl	110 <main>
+ 108:	b.n	108 <reset+0x8>
+
+00000110 <main>:
+ 110:	stmdb	sp!, {r4, r5, r6, r7, lr}
+ 114:	sub.w	sp, sp, #1024	@ 0x400
+ 118:	bl	120 <leaf>
+ 11c:	bl	130 <big>
+
+00000120 <leaf>:
+ 120:	push	{lr}
+ 122:	pop	{pc}
+
+00000130 <big>:
+ 130:	push	{r4, lr}
+ 132:	ldr	r3, [pc, #12]	@ (140 <big+0x10>)
+ 134:	add	sp, r3
+ 136:	bl	120 <leaf>
+ 13a:	pop	{r3}
+ 13c:	add	sp, #8
+ 13e:	bx	r3
+ 140:	.word	0xfffffda8
+
+00000150 <spin>:
+ 150:	b.n	150 <spin>
+)";
+
+}  // namespace
+
+TEST_CASE("hider-stack: Thumb frames add up along the deepest call chain") {
+    const stackbound::Bound b = bound_of(kArm, "reset");
+    REQUIRE_MESSAGE(b.ok, b.why);
+    // reset 8 + 16; main 20 + 1024; big 8 + 600 (the literal -600 added to sp) + leaf 4
+    CHECK(b.bytes == 24 + 1044 + 608 + 4);
+    CHECK(path_of(b) == "reset:24 main:1044 big:608 leaf:4 ");
+    CHECK(b.indirect_targets.empty());  // the literal is a frame size, not a code address
+    const stackbound::Bound leaf = bound_of(kArm, "leaf");
+    CHECK(leaf.bytes == 4);
+    CHECK(!bound_of(kArm, "nowhere").ok);
+}
+
+TEST_CASE("hider-stack: an indirect call reaches every address-taken function, less named data") {
+    const std::string text = R"(
+/build/fw.elf:     file format elf32-littlearm
+
+SYMBOL TABLE:
+00000100 g     F .text	0000000c caller
+00000110 g     F .text	00000004 small
+00000120 g     F .text	00000004 deep
+00000130 g     F .text	00000004 handler
+00000140 g     F .text	0000000a hop
+00000200 l     O .text	00000008 kMesh
+
+Contents of section .text:
+ 0108 11010000 00000000 00000000 00000000  ................
+ 0200 21010000 31010000                    ........
+
+Disassembly of section .text:
+
+00000100 <caller>:
+ 100:	push	{r4, lr}
+ 102:	ldr	r3, [pc, #4]	@ (108 <caller+0x8>)
+ 104:	blx	r3
+ 106:	pop	{r4, pc}
+ 108:	.word	0x00000111
+
+00000110 <small>:
+ 110:	push	{lr}
+ 112:	pop	{pc}
+
+00000120 <deep>:
+ 120:	sub	sp, #400	@ 0x190
+ 122:	bx	lr
+
+00000130 <handler>:
+ 130:	sub	sp, #800	@ 0x320
+ 132:	bx	lr
+
+00000140 <hop>:
+ 140:	push	{lr}
+ 142:	add	r0, pc, #4	@ (adr r0, 148 <hop+0x8>)
+ 144:	adds	r0, #1
+ 146:	bx	r0
+ 148:	pop	{pc}
+)";
+    // Pointers: small in caller's literal pool; deep and handler in the data object kMesh.
+    const stackbound::Bound all = bound_of(text, "caller");
+    REQUIRE_MESSAGE(all.ok, all.why);
+    CHECK(all.bytes == 8 + 800);
+    CHECK(all.indirect_targets.size() == 3);
+    const stackbound::Bound no_handler = bound_of(text, "caller", {}, {"handler"});
+    CHECK(no_handler.bytes == 8 + 400);
+    const stackbound::Bound no_mesh = bound_of(text, "caller", {"kMe*"});
+    CHECK(no_mesh.bytes == 8 + 4);
+    CHECK(path_of(no_mesh) == "caller:8 small:4 ");
+    const stackbound::Bound hop = bound_of(text, "hop");  // a jump through a register to its own label
+    CHECK(hop.bytes == 4);
+}
+
+TEST_CASE("hider-stack: recursion and sp set from an unknown register give no bound") {
+    const std::string recursion = R"(
+/build/fw.elf:     file format elf32-littlearm
+
+SYMBOL TABLE:
+00000100 g     F .text	00000006 a
+00000110 g     F .text	00000006 b
+
+Disassembly of section .text:
+
+00000100 <a>:
+ 100:	push	{lr}
+ 102:	bl	110 <b>
+ 106:	pop	{pc}
+
+00000110 <b>:
+ 110:	push	{lr}
+ 112:	bl	100 <a>
+ 116:	pop	{pc}
+)";
+    const stackbound::Bound r = bound_of(recursion, "a");
+    CHECK(!r.ok);
+    CHECK(r.why.find("recursion: a -> b -> a") != std::string::npos);
+
+    const std::string dynamic = R"(
+/build/fw.elf:     file format elf32-littlearm
+
+SYMBOL TABLE:
+00000100 g     F .text	00000008 vla
+
+Disassembly of section .text:
+
+00000100 <vla>:
+ 100:	push	{r7, lr}
+ 102:	sub	sp, r0
+ 104:	mov	sp, r7
+ 106:	pop	{r7, pc}
+)";
+    const stackbound::Bound d = bound_of(dynamic, "vla");
+    CHECK(!d.ok);
+    CHECK(d.why.find("sp changed by a register") != std::string::npos);
+}
+
+TEST_CASE("hider-stack: RV32 start-up, local subroutines and an address formed by la") {
+    const std::string text = R"(
+/build/fw.elf:     file format elf32-littleriscv
+
+SYMBOL TABLE:
+20400000 g     F .text	00000010 _start
+20400010 g     F .text	00000010 hider_reset
+20400020 g     F .text	00000020 main
+20400040 g     F .text	00000008 callback
+20400050 g     F .text	00000004 trap
+
+Disassembly of section .text:
+
+20400000 <_start>:
+20400000:	auipc	sp,0x5fc03
+20400004:	add	sp,sp,-1848 # 800028d0 <__stack_top__>
+20400008:	auipc	t0,0x0
+2040000c:	add	t0,t0,72 # 20400050 <trap>
+
+20400010 <hider_reset>:
+20400010:	add	sp,sp,-32
+20400014:	sw	ra,28(sp)
+20400018:	jal	20400020 <main>
+2040001c:	j	2040001c <hider_reset+0xc>
+
+20400020 <main>:
+20400020:	add	sp,sp,-64
+20400024:	jal	t2,20400034 <main+0x14>
+20400028:	lui	a5,0x20400
+2040002c:	add	a5,a5,64 # 20400040 <callback>
+20400030:	jalr	a5
+20400034:	jr	t2
+
+20400040 <callback>:
+20400040:	add	sp,sp,-208
+20400044:	ret
+
+20400050 <trap>:
+20400050:	add	sp,sp,-1000
+)";
+    // _start sets sp (its own allocation restarts there) and falls into hider_reset: no edge, so the
+    // entry for this listing is hider_reset; the trap handler's address is formed too.
+    const stackbound::Bound with_trap = bound_of(text, "hider_reset");
+    REQUIRE_MESSAGE(with_trap.ok, with_trap.why);
+    CHECK(with_trap.bytes == 32 + 64 + 1000);
+    const stackbound::Bound b = bound_of(text, "hider_reset", {}, {"trap"});
+    CHECK(b.bytes == 32 + 64 + 208);
+    CHECK(path_of(b) == "hider_reset:32 main:64 callback:208 ");
+    const stackbound::Bound start = bound_of(text, "_start", {}, {"trap"});
+    REQUIRE_MESSAGE(start.ok, start.why);
+    CHECK(start.bytes == 0);
+}
+
+TEST_CASE("hider-stack: a return through a local subroutine's link is no indirect jump") {
+    // kernel_setup_rv32 style: a walker subroutine called with jal t2 and left with jr t2; cb is
+    // address-taken, so an indirect jump would reach it.
+    const std::string text = R"(
+/build/fw.elf:     file format elf32-littleriscv
+
+SYMBOL TABLE:
+20400000 g     F .text	00000010 setup
+20400010 g     F .text	00000008 cb
+20400020 g     F .text	00000008 take
+
+Disassembly of section .text:
+
+20400000 <setup>:
+20400000:	add	sp,sp,-48
+20400004:	jal	t2,2040000c <setup+0xc>
+20400008:	ret
+2040000c:	jr	t2
+
+20400010 <cb>:
+20400010:	add	sp,sp,-512
+20400014:	ret
+
+20400020 <take>:
+20400020:	lui	a0,0x20400
+20400024:	add	a0,a0,16 # 20400010 <cb>
+)";
+    const stackbound::Bound b = bound_of(text, "setup");
+    REQUIRE_MESSAGE(b.ok, b.why);
+    CHECK(b.bytes == 48);
+    CHECK(b.indirect_targets.size() == 1);  // cb, which setup does not reach
+}
+
+TEST_CASE("hider-stack: register lists and name patterns") {
+    using stackbound::detail::glob_match;
+    using stackbound::detail::register_count;
+    CHECK(register_count("{r4, r5, r6, lr}") == 4);
+    CHECK(register_count("{r4-r7, lr}") == 5);
+    CHECK(register_count("{r4, r5, r6, r7, r8, r9, sl, fp, lr}") == 9);
+    CHECK(register_count("r4") == -1);
+    CHECK(glob_match("*bsp_data*", "_ZN5hider8bsp_data17bsp_torus_160x1285kBlobE"));
+    CHECK(glob_match("hider_vectors", "hider_vectors"));
+    CHECK(!glob_match("hider_vectors", "hider_vectors2"));
+    CHECK(glob_match("k*E", "kMeshE"));
+    CHECK(!glob_match("k*E", "kMesh"));
+}
