@@ -1,9 +1,10 @@
 #!/bin/sh
 # ctest <firmware>.stack_bound: the static worst-case stack of a firmware ELF (tools/hider-stack, from
-# its disassembly) must fit the stack the linker script reserves for it, and must not be below the
-# high-water mark the firmware measured on its run (stack.txt, written by firmware/common/startup.cpp),
-# which would mean the analysis missed a path. A mark at the painting's floor says nothing (tiny runs).
-# Usage: check_stack_bound.sh <objdump> <hider-stack> <elf> <dump-file> <stack-bytes> <stack.txt|-> [hider-stack options]...
+# its disassembly) must fit <limit> (the reserved stack less the bytes the start-up requires untouched),
+# and must not be below the high-water mark the firmware measured on its run (stack.txt, written by
+# firmware/common/startup.cpp), which would mean the analysis missed a path. A mark at the painting's
+# floor says nothing (tiny runs).
+# Usage: check_stack_bound.sh <objdump> <hider-stack> <elf> <dump-file> <limit-bytes> <stack.txt|-> [hider-stack options]...
 set -eu
 objdump=$1 tool=$2 elf=$3 dump=$4 limit=$5 measured=$6
 shift 6

@@ -68,17 +68,9 @@ __attribute__((noinline)) void write_stack_report(uint32_t used, uint32_t floor,
     if (!hider::semihost::write_file("stack.txt", text, n)) hider::semihost::print("hider: cannot write stack.txt\n");
 }
 
-}  // namespace
-
-extern "C" void hider_reset() {
-    const uint32_t* src = __data_load__;
-    for (uint32_t* dst = __data_start__; dst < __data_end__; ++dst, ++src) *dst = *src;
-    for (uint32_t* dst = __bss_start__; dst < __bss_end__; ++dst) *dst = 0;
-    const uint32_t floor = paint_stack();
-    for (auto* ctor = __init_array_start; ctor < __init_array_end; ++ctor) (*ctor)();
-
-    const int status = main();
-
+/// After main(): the stack report and the exit status. Out of line, so that hider_reset's frame, under
+/// every path of main(), holds no more than the floor.
+__attribute__((noinline)) void finish(int status, uint32_t floor) {
     namespace sh = hider::semihost;
     const uint32_t used = stack_used_bytes();
     const uint32_t size = static_cast<uint32_t>(reinterpret_cast<uintptr_t>(__stack_top__) -
@@ -94,6 +86,17 @@ extern "C" void hider_reset() {
         sh::exit(status != 0 ? status : 4);
     }
     sh::exit(status);
+}
+
+}  // namespace
+
+extern "C" void hider_reset() {
+    const uint32_t* src = __data_load__;
+    for (uint32_t* dst = __data_start__; dst < __data_end__; ++dst, ++src) *dst = *src;
+    for (uint32_t* dst = __bss_start__; dst < __bss_end__; ++dst) *dst = 0;
+    const uint32_t floor = paint_stack();
+    for (auto* ctor = __init_array_start; ctor < __init_array_end; ++ctor) (*ctor)();
+    finish(main(), floor);
 }
 
 extern "C" void hider_fault(uint32_t cause, uint32_t pc) {

@@ -34,7 +34,8 @@ HIDER_SEQUENCE(branch_register, "adr r0, 1f\n\tadds r0, r0, #1\n\tbx r0\n\t.bali
 HIDER_SEQUENCE(move_to_pc, "adr r0, 1f\n\tmov pc, r0\n\t.balign 4\n1:\n\tbx lr\n")
 HIDER_SEQUENCE(system, "mrs r0, msp\n\tdsb\n\tbx lr\n")
 // 16-bit instructions on the last halfwords of a 1 KB page (QEMU's translation page): QEMU 7.2 reports
-// the last one as 4 bytes, and the plugin must still cost it as the 16-bit ADDS it is.
+// the one before the page's last halfword as 4 bytes, and the plugin must still cost it as the 16-bit
+// ADDS it is.
 HIDER_SEQUENCE(page_end, "b 1f\n\t.balign 1024\n\t.space 1020\n1:\n\tadds r0, r0, #1\n\tadds r0, r0, #1\n\t"
                          "adds r0, r0, #1\n\tbx lr\n")
 const Sequence kSequences[] = {empty, alu, multiply, load_store, multiple, push_pop, call_return, branch_not_taken,
@@ -62,8 +63,9 @@ HIDER_SEQUENCE(push_pop_return, "push {r4-r7, lr}\n\tpop {r4-r7, pc}\n")
 HIDER_SEQUENCE(if_then, "movs r0, #0\n\tcmp r0, #0\n\tit eq\n\tmoveq r1, r0\n\tbx lr\n")
 HIDER_SEQUENCE(call_return, "push {r4, lr}\n\tbl 1f\n\tpop {r4, pc}\n1:\n\tbx lr\n")
 HIDER_SEQUENCE(dual, "sub sp, #8\n\tstrd r0, r1, [sp]\n\tldrd r2, r3, [sp]\n\tadd sp, #8\n\tbx lr\n")
-// Across a 1 KB page (QEMU's translation page, where it ends a block): a 16-bit LDR on the page's last
-// halfword, reported by QEMU 7.2 as 4 bytes, and the LDR after it on the next page, which pairs with it.
+// Across a 1 KB page (QEMU's translation page, where it ends a block): the NOP before the page's last
+// halfword, reported by QEMU 7.2 as 4 bytes, an LDR on that halfword and the LDR after it on the next
+// page, which pairs with it.
 HIDER_SEQUENCE(page_end, "sub sp, #16\n\tmov r1, sp\n\tmov r2, sp\n\tb 1f\n\t.balign 1024\n\t.space 1020\n1:\n\tnop\n\t"
                          "ldr r0, [r1]\n\tldr r1, [r2]\n\tadd sp, #16\n\tbx lr\n")
 const Sequence kSequences[] = {empty,        alu,      multiply,         load_pair,    load_triple, stores,

@@ -162,8 +162,8 @@ TEST_CASE("hider-stack: recursion and sp set from an unknown register give no bo
 /build/fw.elf:     file format elf32-littlearm
 
 SYMBOL TABLE:
-00000100 g     F .text	00000006 a
-00000110 g     F .text	00000006 b
+00000100 g     F .text	00000008 a
+00000110 g     F .text	00000008 b
 
 Disassembly of section .text:
 
@@ -198,6 +198,32 @@ Disassembly of section .text:
     const stackbound::Bound d = bound_of(dynamic, "vla");
     CHECK(!d.ok);
     CHECK(d.why.find("sp changed by a register") != std::string::npos);
+
+    // A constant loaded before a call is not the register's value after it.
+    const std::string clobbered = R"(
+/build/fw.elf:     file format elf32-littlearm
+
+SYMBOL TABLE:
+00000100 g     F .text	0000000c g
+00000110 g     F .text	00000002 leaf
+
+Contents of section .text:
+ 0108 a8fdffff                             ....
+
+Disassembly of section .text:
+
+00000100 <g>:
+ 100:	ldr	r3, [pc, #4]	@ (108 <g+0x8>)
+ 102:	bl	110 <leaf>
+ 106:	add	sp, r3
+ 108:	.word	0xfffffda8
+
+00000110 <leaf>:
+ 110:	bx	lr
+)";
+    const stackbound::Bound c = bound_of(clobbered, "g");
+    CHECK(!c.ok);
+    CHECK(c.why.find("sp changed by a register") != std::string::npos);
 }
 
 TEST_CASE("hider-stack: RV32 start-up, local subroutines and an address formed by la") {
@@ -286,6 +312,95 @@ Disassembly of section .text:
     CHECK(b.indirect_targets.size() == 1);  // cb, which setup does not reach
 }
 
+TEST_CASE("hider-stack: pre-indexed stores, wide sp arithmetic and objdump's raw bytes") {
+    // The same function twice: without and with objdump's raw instruction bytes.
+    const std::string plain = R"(
+/build/fw.elf:     file format elf32-littlearm
+
+SYMBOL TABLE:
+00000100 g     F .text	00000010 f
+
+Disassembly of section .text:
+
+00000100 <f>:
+ 100:	str.w	lr, [sp, #-4]!
+ 104:	subw	sp, sp, #2052	@ 0x804
+ 108:	vpush	{d8-d9}
+ 10c:	add.w	sp, sp, #2052	@ 0x804
+)";
+    const std::string raw = R"(
+/build/fw.elf:     file format elf32-littlearm
+
+SYMBOL TABLE:
+00000100 g     F .text	00000010 f
+
+Disassembly of section .text:
+
+00000100 <f>:
+ 100:	f84d ed04 	str.w	lr, [sp, #-4]!
+ 104:	f6ad 0d04 	subw	sp, sp, #2052	@ 0x804
+ 108:	ed2d 8b04 	vpush	{d8-d9}
+ 10c:	f60d 0d04 	addw	sp, sp, #2052	@ 0x804
+)";
+    CHECK(bound_of(plain, "f").bytes == 4 + 2052 + 16);
+    CHECK(bound_of(raw, "f").bytes == 4 + 2052 + 16);
+}
+
+TEST_CASE("hider-stack: a function calling itself, a jump into nothing and code without a symbol give no bound") {
+    const std::string self = R"(
+/build/fw.elf:     file format elf32-littlearm
+
+SYMBOL TABLE:
+00000100 g     F .text	00000008 fact
+
+Disassembly of section .text:
+
+00000100 <fact>:
+ 100:	push	{r4, lr}
+ 102:	bl	100 <fact>
+ 106:	pop	{r4, pc}
+)";
+    const stackbound::Bound s = bound_of(self, "fact");
+    CHECK(!s.ok);
+    CHECK(s.why.find("calls itself") != std::string::npos);
+
+    const std::string nowhere = R"(
+/build/fw.elf:     file format elf32-littleriscv
+
+SYMBOL TABLE:
+20400000 g     F .text	00000008 f
+
+Disassembly of section .text:
+
+20400000 <f>:
+20400000:	add	sp,sp,-16
+20400004:	j	20400100 <f+0x100>
+)";
+    const stackbound::Bound n = bound_of(nowhere, "f");
+    CHECK(!n.ok);
+    CHECK(n.why.find("jump to an address outside every function") != std::string::npos);
+
+    const std::string orphan = R"(
+/build/fw.elf:     file format elf32-littlearm
+
+SYMBOL TABLE:
+00000100 g     F .text	00000004 f
+
+Disassembly of section .text:
+
+00000100 <f>:
+ 100:	push	{lr}
+ 102:	pop	{pc}
+ 104:	nop
+ 106:	bl	100 <f>
+)";
+    std::istringstream in(orphan);
+    stackbound::Program p;
+    std::string why;
+    CHECK(!stackbound::parse_objdump(in, p, why));
+    CHECK(why.find("code outside every function symbol at 106") != std::string::npos);
+}
+
 TEST_CASE("hider-stack: register lists and name patterns") {
     using stackbound::detail::glob_match;
     using stackbound::detail::register_count;
@@ -293,6 +408,7 @@ TEST_CASE("hider-stack: register lists and name patterns") {
     CHECK(register_count("{r4-r7, lr}") == 5);
     CHECK(register_count("{r4, r5, r6, r7, r8, r9, sl, fp, lr}") == 9);
     CHECK(register_count("r4") == -1);
+    CHECK(register_count("{d8-d15}") == 8);
     CHECK(glob_match("*bsp_data*", "_ZN5hider8bsp_data17bsp_torus_160x1285kBlobE"));
     CHECK(glob_match("hider_vectors", "hider_vectors"));
     CHECK(!glob_match("hider_vectors", "hider_vectors2"));

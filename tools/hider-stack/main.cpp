@@ -13,7 +13,8 @@ namespace {
 int usage(const char* why) {
     std::cerr << "hider-stack: " << why << "\n"
               << "usage: hider-stack DUMP --entry FUNC [--limit BYTES] [--handler FUNC]... [--not-pointers OBJECT]...\n"
-              << "  DUMP: the output of `objdump -t -s -d firmware.elf` (arm-none-eabi- or riscv64-unknown-elf-objdump)\n";
+              << "  DUMP: the output of `objdump -t -s -d firmware.elf` (arm-none-eabi- or riscv64-unknown-elf-objdump;\n"
+              << "  --no-show-raw-insn optional)\n";
     return 2;
 }
 
@@ -25,13 +26,8 @@ int main(int argc, char** argv) {
     long limit = -1;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        auto value = [&](const char* name) -> const char* {
-            if (i + 1 >= argc) return nullptr;
-            (void)name;
-            return argv[++i];
-        };
         if (a == "--entry" || a == "--handler" || a == "--not-pointers" || a == "--limit") {
-            const char* v = value(a.c_str());
+            const char* v = i + 1 < argc ? argv[++i] : nullptr;
             if (v == nullptr) return usage((a + " needs a value").c_str());
             if (a == "--entry") opt.entry = v;
             else if (a == "--handler") opt.handlers.push_back(v);

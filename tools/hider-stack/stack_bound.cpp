@@ -1,8 +1,9 @@
+// hider-stack's analysis: objdump's symbol table, section contents and disassembly into functions with
+// frames and callees (Thumb and RV32 rules below), then the deepest chain from the entry.
 #include "stack_bound.hpp"
 
 #include <algorithm>
 #include <cctype>
-#include <climits>
 #include <cstdlib>
 #include <istream>
 #include <set>
@@ -80,14 +81,38 @@ bool arm_is(const std::string& mn, const char* base) {
     return mn == b || (mn.size() == b.size() + 2 && starts_with(mn, base) && arm_condition(mn.substr(b.size())));
 }
 
+/// The mnemonic without Thumb-2's width suffix (".n", ".w").
+std::string without_width(const std::string& mn) {
+    if (mn.size() > 2 && (mn.compare(mn.size() - 2, 2, ".n") == 0 || mn.compare(mn.size() - 2, 2, ".w") == 0))
+        return mn.substr(0, mn.size() - 2);
+    return mn;
+}
+
+/// True when the register list ("{r4, r5, lr}", "{r4-r7}") names reg; a range of other names counts.
+bool list_names(const std::string& list, const std::string& reg) {
+    const std::string s = trim(list);
+    if (s.size() < 2 || s.front() != '{' || s.back() != '}') return false;
+    for (const std::string& r : split_operands(s.substr(1, s.size() - 2))) {
+        if (r == reg) return true;
+        const size_t dash = r.find('-');
+        if (dash == std::string::npos) continue;
+        const std::string a = r.substr(0, dash), b = r.substr(dash + 1);
+        if (a.size() < 2 || b.size() < 2 || reg.size() < 2 || a[0] != reg[0] || b[0] != reg[0]) return true;
+        const int n = std::atoi(reg.c_str() + 1);
+        if (n >= std::atoi(a.c_str() + 1) && n <= std::atoi(b.c_str() + 1)) return true;
+    }
+    return false;
+}
+
+struct Insn {
+    uint32_t addr;
+    std::string mn, ops, comment;
+};
+
 struct Parser {
     Program& p;
     std::map<uint32_t, uint32_t> words;  ///< aligned words of allocated sections, by address
-    struct Pending {  ///< a function's instructions, classified once all symbols are known
-        uint32_t addr;
-        std::string mn, ops, comment;
-    };
-    std::vector<std::vector<Pending>> code;
+    std::vector<std::vector<Insn>> code;  ///< per function
 
     long containing(uint32_t addr) const {
         auto it = std::upper_bound(p.funcs.begin(), p.funcs.end(), addr, [](uint32_t a, const Function& f) { return a < f.start; });
@@ -101,22 +126,6 @@ struct Parser {
     }
 };
 
-/// True when the register list ("{r4, r5, lr}", "{r4-r7}") names reg; unreadable lists name everything.
-bool list_names(const std::string& list, const std::string& reg) {
-    const std::string s = trim(list);
-    if (s.size() < 2 || s.front() != '{' || s.back() != '}') return false;
-    for (const std::string& r : split_operands(s.substr(1, s.size() - 2))) {
-        if (r == reg) return true;
-        const size_t dash = r.find('-');
-        if (dash == std::string::npos) continue;
-        const std::string a = r.substr(0, dash), b = r.substr(dash + 1);
-        if (a.size() < 2 || b.size() < 2 || reg.size() < 2 || a[0] != 'r' || b[0] != 'r' || reg[0] != 'r') return true;
-        const int n = std::atoi(reg.c_str() + 1);
-        if (n >= std::atoi(a.c_str() + 1) && n <= std::atoi(b.c_str() + 1)) return true;
-    }
-    return false;
-}
-
 void add_callee(Function& f, size_t callee) {
     if (std::find(f.callees.begin(), f.callees.end(), callee) == f.callees.end()) f.callees.push_back(callee);
 }
@@ -127,28 +136,35 @@ std::string where(uint32_t addr, const std::string& what) {
     return s.str();
 }
 
-/// A call or jump to `target` from function fi: a callee, a local jump, or a problem.
+/// A call or jump from function fi to `target`: a callee, a branch inside fi, or a problem (a call
+/// to fi's own start is recursion; nothing may go outside every function).
 void transfer(Parser& ps, size_t fi, uint32_t addr, uint32_t target, bool call) {
     Function& f = ps.p.funcs[fi];
     const long t = ps.containing(target);
-    if (t == static_cast<long>(fi)) return;  // a branch or local subroutine inside the function
     if (t < 0) {
-        if (call) f.problems.push_back(where(addr, "call to an address outside every function"));
-        return;  // a jump into data would be a disassembly artefact; calls must resolve
-    }
-    add_callee(f, static_cast<size_t>(t));
+        f.problems.push_back(where(addr, std::string(call ? "call" : "jump") + " to an address outside every function"));
+    } else if (t != static_cast<long>(fi)) {
+        add_callee(f, static_cast<size_t>(t));
+    } else if (call && target == f.start) {
+        f.problems.push_back(where(addr, "calls itself (recursion)"));
+    }  // else a branch or a local subroutine inside the function
 }
 
 /// The constant register `reg` holds before instruction k, when the few instructions before it built
-/// it: a literal load, a move, shifts, negation, adds (Thumb-1 changes sp by a register for frames
+/// it: a literal load, a move, adr, shifts, negation, adds (Thumb-1 changes sp by a register for frames
 /// above 508 bytes: "ldr r4, [pc, #8]; add sp, r4", "movs r3, #193; lsls r3, r3, #2; add sp, r3").
-bool literal_value(const Parser& ps, const std::vector<Parser::Pending>& ins, size_t k, const std::string& reg, long& v, int depth = 0) {
+/// False at anything else that may write it: a call, a load-multiple, a second destination.
+bool literal_value(const Parser& ps, const std::vector<Insn>& ins, size_t k, const std::string& reg, long& v, int depth = 0) {
     for (size_t j = k; j-- > 0 && j + 6 > k;) {
+        const std::string mn = without_width(ins[j].mn);
         const std::vector<std::string> ops = split_operands(ins[j].ops);
-        if (!ops.empty() && list_names(ops[0], reg)) return false;  // loaded by a pop or load-multiple
+        if (arm_is(mn, "bl") || arm_is(mn, "blx")) return false;  // r0-r3, r12 and lr are the callee's
+        for (size_t o = 0; o < ops.size(); ++o)
+            if (list_names(ops[o], reg) || (o == 1 && ops[o] == reg && (starts_with(mn, "ldrd") || starts_with(mn, "umull") ||
+                                                                         starts_with(mn, "smull") || starts_with(mn, "umlal") ||
+                                                                         starts_with(mn, "smlal"))))
+                return false;
         if (ops.empty() || ops[0] != reg) continue;
-        std::string mn = ins[j].mn;
-        if (mn.size() > 2 && (mn.compare(mn.size() - 2, 2, ".n") == 0 || mn.compare(mn.size() - 2, 2, ".w") == 0)) mn.resize(mn.size() - 2);
         if (depth > 6) return false;
         long a = 0, s = 0;
         uint32_t addr = 0;
@@ -166,9 +182,8 @@ bool literal_value(const Parser& ps, const std::vector<Parser::Pending>& ins, si
         }
         // The source of a shift, negation or add: the register itself (two operands) or the second.
         const std::string src = ops.size() == 3 ? ops[1] : reg;
-        const std::string last = ops.back();
         if (mn == "lsls" || mn == "lsl") {
-            if (!immediate(last, s) || s < 0 || s > 31 || !literal_value(ps, ins, j, src, a, depth + 1)) return false;
+            if (!immediate(ops.back(), s) || s < 0 || s > 31 || !literal_value(ps, ins, j, src, a, depth + 1)) return false;
             v = static_cast<long>(static_cast<int32_t>(static_cast<uint32_t>(a) << s));
             return true;
         }
@@ -178,7 +193,7 @@ bool literal_value(const Parser& ps, const std::vector<Parser::Pending>& ins, si
             return true;
         }
         if (mn == "adds" || mn == "subs" || mn == "add" || mn == "sub") {
-            if (!immediate(last, s) || !literal_value(ps, ins, j, src, a, depth + 1)) return false;
+            if (!immediate(ops.back(), s) || !literal_value(ps, ins, j, src, a, depth + 1)) return false;
             v = starts_with(mn, "add") ? a + s : a - s;
             return true;
         }
@@ -187,121 +202,142 @@ bool literal_value(const Parser& ps, const std::vector<Parser::Pending>& ins, si
     return false;
 }
 
+/// Bytes a Thumb instruction takes from the stack (0 for none or a release); problems for sp changes it
+/// cannot size.
+uint32_t arm_allocation(Parser& ps, size_t fi, size_t k) {
+    Function& f = ps.p.funcs[fi];
+    const Insn& in = ps.code[fi][k];
+    const std::string mn = without_width(in.mn);
+    const std::vector<std::string> ops = split_operands(in.ops);
+    const std::string first = ops.empty() ? std::string() : ops[0];
+    auto list_bytes = [&](const std::string& list, uint32_t each) -> uint32_t {
+        const int n = detail::register_count(list);
+        if (n < 0) f.problems.push_back(where(in.addr, "unreadable register list: " + in.mn + " " + in.ops));
+        return n < 0 ? 0 : each * static_cast<uint32_t>(n);
+    };
+    if (arm_is(mn, "push")) return list_bytes(first, 4);
+    if (arm_is(mn, "vpush")) return list_bytes(first, first.find('d') != std::string::npos ? 8 : 4);
+    if ((starts_with(mn, "stmdb") || starts_with(mn, "stmfd") || starts_with(mn, "vstmdb")) && first == "sp!")
+        return ops.size() > 1 ? list_bytes(ops[1], starts_with(mn, "v") && ops[1].find('d') != std::string::npos ? 8 : 4) : 0;
+    // A load or store that moves sp: "[sp, #-8]!" (pre-index) or "[sp], #-8" (post-index).
+    for (size_t o = 1; o < ops.size(); ++o) {
+        long v = 0;
+        if (starts_with(ops[o], "[sp, #") && ops[o].back() == '!') {
+            if (!immediate(ops[o].substr(5, ops[o].size() - 7), v)) f.problems.push_back(where(in.addr, "unreadable sp write-back"));
+            return v < 0 ? static_cast<uint32_t>(-v) : 0;
+        }
+        if (ops[o] == "[sp]" && o + 1 < ops.size()) {
+            if (!immediate(ops[o + 1], v)) f.problems.push_back(where(in.addr, "unreadable sp write-back"));
+            return v < 0 ? static_cast<uint32_t>(-v) : 0;
+        }
+    }
+    if (first != "sp" || !(arm_is(mn, "sub") || mn == "subw" || arm_is(mn, "add") || mn == "addw")) return 0;
+    long v = 0;
+    const bool from_sp = ops.size() == 2 || (ops.size() == 3 && ops[1] == "sp");
+    if (!from_sp || !(immediate(ops.back(), v) || literal_value(ps, ps.code[fi], k, ops.back(), v))) {
+        f.problems.push_back(where(in.addr, "sp changed by a register: " + in.mn + " " + in.ops));
+        return 0;
+    }
+    const long alloc = starts_with(mn, "sub") ? v : -v;
+    return alloc > 0 ? static_cast<uint32_t>(alloc) : 0;
+}
+
+/// Stack offsets where function fi saves its link register ("str lr, [sp, #N]", or Thumb-1's
+/// "mov r3, lr; str r3, [sp, #N]"): a "ldr rX, [sp, #N]; bx rX" through one of them is a return.
+std::set<std::string> arm_link_slots(const std::vector<Insn>& ins) {
+    std::set<std::string> slots;
+    for (size_t k = 0; k < ins.size(); ++k) {
+        const std::vector<std::string> ops = split_operands(ins[k].ops);
+        if (!starts_with(ins[k].mn, "str") || ops.size() != 2 || !starts_with(ops[1], "[sp")) continue;
+        bool from_lr = ops[0] == "lr";
+        if (k > 0) {
+            const std::vector<std::string> prev = split_operands(ins[k - 1].ops);
+            from_lr = from_lr || (without_width(ins[k - 1].mn) == "mov" && prev.size() == 2 && prev[0] == ops[0] && prev[1] == "lr");
+        }
+        if (from_lr) slots.insert(ops[1]);
+    }
+    return slots;
+}
+
+/// A "bx rX" (rX not lr) at instruction k: a return, a jump inside, a tail call, or an indirect jump.
+void arm_bx(Parser& ps, size_t fi, size_t k, const std::set<std::string>& link_slots) {
+    Function& f = ps.p.funcs[fi];
+    const std::vector<Insn>& ins = ps.code[fi];
+    const std::string reg = trim(ins[k].ops);
+    long v = 0;
+    if (literal_value(ps, ins, k, reg, v)) {  // a jump to a known address
+        transfer(ps, fi, ins[k].addr, static_cast<uint32_t>(v) & ~1u, false);
+        return;
+    }
+    // A return through the register the instructions just before loaded: Thumb-1's "pop {r3}; add sp,
+    // #8; bx r3", or a saved link ("ldr r3, [sp, #172]; bx r3").
+    for (size_t j = k; j-- > 0 && j + 3 > k;) {
+        const std::vector<std::string> ops = split_operands(ins[j].ops);
+        if (ops.empty()) continue;
+        if (arm_is(ins[j].mn, "pop") && list_names(ops[0], reg)) return;
+        if (ops[0] == reg) {
+            if (starts_with(ins[j].mn, "ldr") && ops.size() == 2 && link_slots.count(ops[1]) != 0) return;
+            break;
+        }
+    }
+    ++f.indirect_sites;
+}
+
 void classify_arm(Parser& ps, size_t fi) {
     Function& f = ps.p.funcs[fi];
-    const std::vector<Parser::Pending>& ins = ps.code[fi];
+    const std::vector<Insn>& ins = ps.code[fi];
+    const std::set<std::string> link_slots = arm_link_slots(ins);
     for (size_t k = 0; k < ins.size(); ++k) {
-        const Parser::Pending& in = ins[k];
-        std::string mn = in.mn;
-        if (mn.size() > 2 && (mn.compare(mn.size() - 2, 2, ".n") == 0 || mn.compare(mn.size() - 2, 2, ".w") == 0)) mn.resize(mn.size() - 2);
+        const Insn& in = ins[k];
+        const std::string mn = without_width(in.mn);
         const std::vector<std::string> ops = split_operands(in.ops);
         const std::string first = ops.empty() ? std::string() : ops[0];
         uint32_t target = 0;
-        if (arm_is(mn, "push")) {
-            const int n = detail::register_count(first);
-            if (n < 0) f.problems.push_back(where(in.addr, "push of an unreadable list"));
-            else f.frame += 4u * static_cast<uint32_t>(n);
-        } else if ((mn == "stmdb" || mn == "stmfd") && first == "sp!") {
-            const int n = ops.size() > 1 ? detail::register_count(ops[1]) : -1;
-            if (n < 0) f.problems.push_back(where(in.addr, "store-multiple of an unreadable list"));
-            else f.frame += 4u * static_cast<uint32_t>(n);
-        } else if (arm_is(mn, "pop") || ((starts_with(mn, "ldm")) && first == "sp!")) {
-            // a release, or a return when it loads pc
-        } else if (starts_with(mn, "str") && ops.size() >= 2 && starts_with(ops.back(), "[sp, #-") && ops.back().back() == '!') {
-            long v = 0;
-            const std::string imm = ops.back().substr(5, ops.back().size() - 7);  // "#-N" of "[sp, #-N]!"
-            if (!immediate(imm, v)) f.problems.push_back(where(in.addr, "unreadable pre-indexed store to the stack"));
-            else f.frame += static_cast<uint32_t>(-v);
-        } else if (first == "sp" && (arm_is(mn, "sub") || mn == "subw" || arm_is(mn, "add") || mn == "addw")) {
-            long v = 0;
-            const bool from_sp = ops.size() == 2 || (ops.size() == 3 && ops[1] == "sp");
-            const bool known = from_sp && (immediate(ops.back(), v) || literal_value(ps, ins, k, ops.back(), v));
-            if (!known) {
-                f.problems.push_back(where(in.addr, "sp changed by a register: " + in.mn + " " + in.ops));
-            } else {
-                const long alloc = starts_with(mn, "sub") ? v : -v;
-                if (alloc > 0) f.frame += static_cast<uint32_t>(alloc);
-            }
-        } else if (arm_is(mn, "bl")) {
+        f.frame += arm_allocation(ps, fi, k);
+        if (arm_is(mn, "bl") || (arm_is(mn, "blx") && branch_target(in.ops, target))) {
             if (branch_target(in.ops, target)) transfer(ps, fi, in.addr, target, true);
             else f.problems.push_back(where(in.addr, "unreadable call"));
         } else if (arm_is(mn, "blx")) {
-            if (branch_target(in.ops, target)) transfer(ps, fi, in.addr, target, true);
-            else ++f.indirect_sites;
+            ++f.indirect_sites;
         } else if (arm_is(mn, "bx")) {
-            if (first == "lr") continue;  // return
-            long v = 0;
-            if (literal_value(ps, ins, k, first, v)) {  // a jump to a known address: inside, or a tail call
-                const uint32_t to = static_cast<uint32_t>(v) & ~1u;
-                if (ps.containing(to) == static_cast<long>(fi)) continue;
-                if (ps.starting_at(to) >= 0) {
-                    add_callee(f, static_cast<size_t>(ps.starting_at(to)));
-                    continue;
-                }
-            }
-            // A return through a register the previous instruction loaded from the stack (Thumb-1's
-            // "pop {r3}; add sp, #8; bx r3", a local subroutine's saved link); or a jump to a literal.
-            bool handled = false;
-            for (size_t j = k; j-- > 0 && j + 3 > k && !handled;) {
-                const Parser::Pending& pr = ins[j];
-                const std::vector<std::string> pops = split_operands(pr.ops);
-                if (pops.empty()) continue;
-                const bool pops_it = arm_is(pr.mn, "pop") && list_names(pops[0], first);
-                const bool loads_from_stack = starts_with(pr.mn, "ldr") && pops[0] == first && pops.size() > 1 &&
-                                              starts_with(pops[1], "[sp");
-                if (pops_it || loads_from_stack) handled = true;
-                else if (starts_with(pr.mn, "ldr") && pops[0] == first && pops.size() > 1 && starts_with(pops[1], "[pc") &&
-                         branch_target(pr.comment, target)) {
-                    const auto w = ps.words.find(target);
-                    if (w != ps.words.end()) {
-                        const long t = ps.starting_at(w->second & ~1u);
-                        if (t >= 0) {
-                            add_callee(f, static_cast<size_t>(t));
-                            handled = true;
-                        }
-                    }
-                } else if (pops[0] == first) {
-                    break;  // set some other way
-                }
-            }
-            if (!handled) ++f.indirect_sites;
+            if (first != "lr") arm_bx(ps, fi, k, link_slots);
         } else if (mn == "b" || (mn.size() == 3 && mn[0] == 'b' && arm_condition(mn.substr(1))) || mn == "cbz" || mn == "cbnz") {
             if (branch_target(in.ops, target)) transfer(ps, fi, in.addr, target, false);
+            else f.problems.push_back(where(in.addr, "unreadable branch"));
         } else if (first == "pc") {
-            const bool pops_pc = starts_with(mn, "ldr") && ops.size() > 1 && starts_with(ops[1], "[sp]");
             long v = 0;
-            const bool known = arm_is(mn, "mov") && ops.size() == 2 && literal_value(ps, ins, k, ops[1], v) &&
-                               ps.containing(static_cast<uint32_t>(v) & ~1u) == static_cast<long>(fi);
-            if (!pops_pc && !known) ++f.indirect_sites;  // mov pc / ldr pc to an unknown place
+            const bool pops_pc = starts_with(mn, "ldr") && ops.size() > 1 && starts_with(ops[1], "[sp]");
+            if (pops_pc) continue;
+            if (arm_is(mn, "mov") && ops.size() == 2 && literal_value(ps, ins, k, ops[1], v))
+                transfer(ps, fi, in.addr, static_cast<uint32_t>(v) & ~1u, false);
+            else ++f.indirect_sites;  // mov pc / ldr pc to an unknown place
         } else if (arm_is(mn, "msr") && (first == "MSP" || first == "PSP" || first == "msp" || first == "psp")) {
             f.sets_sp = true;
-        } else if (first == "sp" || first == "sp!") {
-            static const char* const kNoWrite[] = {"cmp", "cmn", "tst", "teq", "stm", "stmia", "stmea", "ldm", "ldmia", "ldmfd"};  // no writeback
+        } else if (first == "sp" && !arm_is(mn, "sub") && mn != "subw" && !arm_is(mn, "add") && mn != "addw") {  // those: arm_allocation
+            static const char* const kReads[] = {"cmp", "cmn", "tst", "teq", "stm", "stmia", "stmea", "ldm", "ldmia", "ldmfd"};
             const bool reads = starts_with(mn, "str") ||
-                               std::any_of(std::begin(kNoWrite), std::end(kNoWrite), [&](const char* w) { return arm_is(mn, w); });
-            if (!reads) {
-                if (arm_is(mn, "mov") || starts_with(mn, "ldr")) f.sets_sp = true;
-                else f.problems.push_back(where(in.addr, "sp written by " + in.mn + " " + in.ops));
-            }
+                               std::any_of(std::begin(kReads), std::end(kReads), [&](const char* w) { return arm_is(mn, w); });
+            if (reads) continue;
+            if (arm_is(mn, "mov") || starts_with(mn, "ldr")) f.sets_sp = true;
+            else f.problems.push_back(where(in.addr, "sp written by " + in.mn + " " + in.ops));
         }
-        if (in.mn == "adr" || starts_with(in.mn, "adr.")) {
-            if (branch_target(in.ops, target) && ps.starting_at(target & ~1u) >= 0)
-                ps.p.address_taken_by_code[static_cast<size_t>(ps.starting_at(target & ~1u))] = true;
-        }
+        if (mn == "adr" && branch_target(in.ops, target) && ps.starting_at(target & ~1u) >= 0)
+            ps.p.address_taken_by_code[static_cast<size_t>(ps.starting_at(target & ~1u))] = true;
     }
 }
 
 void classify_riscv(Parser& ps, size_t fi) {
     Function& f = ps.p.funcs[fi];
     std::set<std::string> local_links;  // registers a local subroutine call links through (jal t2, label)
-    for (const Parser::Pending& in : ps.code[fi]) {
+    for (const Insn& in : ps.code[fi]) {
         const std::vector<std::string> ops = split_operands(in.ops);
         uint32_t target = 0;
         if (in.mn == "jal" && ops.size() == 2 && branch_target(in.ops, target) && ps.containing(target) == static_cast<long>(fi))
             local_links.insert(ops[0]);
     }
     bool sp_formed = false;  // the previous instruction was auipc or lui sp: an addi completes the address
-    for (const Parser::Pending& in : ps.code[fi]) {
+    bool built = false;      // an allocation or a call came before: sp may not be loaded afresh after it
+    for (const Insn& in : ps.code[fi]) {
         const std::string& mn = in.mn;
         const std::vector<std::string> ops = split_operands(in.ops);
         const std::string first = ops.empty() ? std::string() : ops[0];
@@ -309,37 +345,42 @@ void classify_riscv(Parser& ps, size_t fi) {
         const bool annotated = branch_target(in.comment, target);
         const bool completes_sp = sp_formed;
         sp_formed = first == "sp" && (mn == "auipc" || mn == "lui");
-        if (mn == "jal") {
+        if (mn == "jal" || mn == "call") {
             const bool link_ra = ops.size() == 1 || first == "ra";
             if (!branch_target(in.ops, target)) f.problems.push_back(where(in.addr, "unreadable call"));
             else transfer(ps, fi, in.addr, target, link_ra || ps.containing(target) != static_cast<long>(fi));
-        } else if (mn == "j" || (mn[0] == 'b' && mn != "bset" && mn != "bclr" && mn != "binv" && mn != "bext")) {
+            built = true;
+        } else if (mn == "j" || mn == "tail" || (mn[0] == 'b' && mn != "bset" && mn != "bclr" && mn != "binv" && mn != "bext")) {
             if (branch_target(in.ops, target)) transfer(ps, fi, in.addr, target, false);
-        } else if (mn == "jalr") {
-            uint32_t t = 0;
-            if (annotated && ps.starting_at(t = target) >= 0) add_callee(f, static_cast<size_t>(ps.starting_at(t)));
-            else ++f.indirect_sites;
-        } else if (mn == "jr") {
-            if (first != "ra" && local_links.count(first) == 0) ++f.indirect_sites;  // else a return
+            else f.problems.push_back(where(in.addr, "unreadable branch"));
+        } else if (mn == "jalr" || mn == "jr") {
+            // An annotated target is an unrelaxed call or tail call (auipc + jalr/jr); else a return
+            // (jr ra, or the link of a local subroutine) or an indirect call or jump.
+            if (annotated) transfer(ps, fi, in.addr, target, mn == "jalr");
+            else if (mn == "jr" && (first == "ra" || local_links.count(first) != 0)) {
+            } else ++f.indirect_sites;
+            built = built || mn == "jalr";
         } else if (mn == "ret") {
         } else if (first == "sp") {
             long v = 0;
-            const bool reads = mn == "sw" || mn == "sh" || mn == "sb" || starts_with(mn, "csr");
+            static const char* const kNoDest[] = {"sw", "sh", "sb", "csrw", "csrs", "csrc", "csrwi", "csrsi", "csrci"};
+            const bool reads = std::any_of(std::begin(kNoDest), std::end(kNoDest), [&](const char* w) { return mn == w; });
+            const bool adds_sp = (mn == "addi" || mn == "add" || mn == "c.addi16sp" || mn == "c.addi") &&
+                                 ((ops.size() == 3 && ops[1] == "sp" && immediate(ops[2], v)) || (ops.size() == 2 && immediate(ops[1], v)));
             if (reads) {
-            } else if (completes_sp || sp_formed) {
-                f.sets_sp = true;  // la sp, sym: a new stack whose depth starts here
+            } else if (completes_sp || sp_formed || (!adds_sp && (mn == "mv" || mn == "li" || mn == "lw" || mn == "addi" || mn == "add"))) {
+                // la sp (auipc/lui + addi, or gp-relative), mv, li, lw: a new stack, allowed in the entry
+                // before anything was built on the old one.
+                if (built) f.problems.push_back(where(in.addr, "sp loaded afresh after the frame was built: " + mn + " " + in.ops));
+                f.sets_sp = true;
                 f.frame = 0;
-            } else if ((mn == "addi" || mn == "add" || mn == "c.addi16sp" || mn == "c.addi") && ops.size() == 3 && ops[1] == "sp" &&
-                       immediate(ops[2], v)) {
-                if (v < 0) f.frame += static_cast<uint32_t>(-v);
-            } else if ((mn == "addi" || mn == "add") && ops.size() == 3 && ops[1] != "sp" && immediate(ops[2], v)) {
-                f.sets_sp = true;  // la sp, relaxed to gp + offset
-                f.frame = 0;
-            } else if (mn == "add" || mn == "sub") {
-                f.problems.push_back(where(in.addr, "sp changed by a register: " + mn + " " + in.ops));
+            } else if (adds_sp) {
+                if (v < 0) {
+                    f.frame += static_cast<uint32_t>(-v);
+                    built = true;
+                }
             } else {
-                f.sets_sp = true;  // mv, lw, li
-                f.frame = 0;
+                f.problems.push_back(where(in.addr, "sp written by " + mn + " " + in.ops));
             }
         }
         static const char* const kForms[] = {"addi", "add", "c.addi", "auipc", "lui", "li", "mv"};  // address formation, not loads
@@ -348,6 +389,57 @@ void classify_riscv(Parser& ps, size_t fi) {
             if (t >= 0) ps.p.address_taken_by_code[static_cast<size_t>(t)] = true;  // la / lui+addi of a function
         }
     }
+}
+
+/// One disassembly line ("     15c:\tblx\tr3", comments after '@', "; (" or " # ", raw bytes
+/// optional) into code[function]; false for a line that is not an instruction.
+bool read_instruction(Parser& ps, const std::string& line, bool& orphan, Insn& out) {
+    const size_t colon = line.find(':');
+    if (colon == std::string::npos || line.size() <= colon + 1 || line[colon + 1] != '\t') return false;
+    const std::string a = trim(line.substr(0, colon));
+    if (!is_hex(a)) return false;
+    std::string rest = line.substr(colon + 2);
+    std::string comment;
+    const size_t c = ps.p.isa == Isa::arm ? rest.find("\t@") : rest.find(" # ");
+    if (c != std::string::npos) {
+        comment = rest.substr(c + 2);
+        rest = rest.substr(0, c);
+    } else if (ps.p.isa == Isa::arm && rest.find("; (") != std::string::npos) {
+        comment = rest.substr(rest.find("; (") + 2);
+        rest = rest.substr(0, rest.find("; ("));
+    }
+    std::vector<std::string> fields;
+    for (size_t start = 0;;) {
+        const size_t tab = rest.find('\t', start);
+        fields.push_back(trim(rest.substr(start, tab == std::string::npos ? std::string::npos : tab - start)));
+        if (tab == std::string::npos) break;
+        start = tab + 1;
+    }
+    // Raw bytes (objdump without --no-show-raw-insn): "4798", "f7ff fffe", "0007a783" before the mnemonic.
+    auto raw = [](const std::string& s) {
+        std::istringstream words(s);
+        std::string w;
+        bool any = false;
+        while (words >> w)
+            if (!is_hex(w) || (w.size() != 4 && w.size() != 8)) return false;
+            else any = true;
+        return any;
+    };
+    if (fields.size() >= 2 && raw(fields[0]) && !fields[1].empty()) fields.erase(fields.begin());
+    std::string mn = fields[0];
+    if (mn.empty() || mn[0] == '.' || mn == "...") return false;  // .word, .short: data
+    for (char& ch : mn) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    out = {hex_value(a), mn, fields.size() > 1 ? fields[1] : std::string(), comment};
+    orphan = ps.containing(out.addr) < 0;
+    return true;
+}
+
+/// An instruction rather than objdump's text view of data ("5c40:\t... .......") or padding: a
+/// mnemonic of letters and digits (one width suffix) with operands.
+bool looks_like_code(const Insn& in) {
+    if (in.ops.empty() || in.mn == "nop" || !std::isalpha(static_cast<unsigned char>(in.mn[0]))) return false;
+    const std::string base = without_width(in.mn);
+    return std::all_of(base.begin(), base.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; });
 }
 
 }  // namespace
@@ -383,15 +475,14 @@ int register_count(const std::string& list) {
             ++n;
             continue;
         }
-        const std::string a = r.substr(0, dash), b = r.substr(dash + 1);  // "r4-r7"
-        if (a.size() < 2 || b.size() < 2 || a[0] != 'r' || b[0] != 'r') return -1;
+        const std::string a = r.substr(0, dash), b = r.substr(dash + 1);  // "r4-r7", "d8-d15"
+        if (a.size() < 2 || b.size() < 2 || a[0] != b[0] || !std::isalpha(static_cast<unsigned char>(a[0]))) return -1;
         const int lo = std::atoi(a.c_str() + 1), hi = std::atoi(b.c_str() + 1);
         if (hi < lo) return -1;
         n += hi - lo + 1;
     }
     return n;
 }
-
 }  // namespace detail
 
 bool parse_objdump(std::istream& in, Program& p, std::string& why) {
@@ -401,14 +492,13 @@ bool parse_objdump(std::istream& in, Program& p, std::string& why) {
     bool skip_contents = false, have_format = false;
     struct Sym { uint32_t addr, size; std::string name; bool func; };
     std::vector<Sym> syms;
-    std::string line;
-    size_t line_no = 0;
-    auto fail = [&](const std::string& what) {
-        why = "line " + std::to_string(line_no) + ": " + what;
-        return false;
-    };
+    struct Bytes { uint32_t base; std::vector<uint8_t> data; };
+    std::vector<Bytes> sections;
+    std::string line, orphans;
+    size_t line_no = 0, instructions = 0;
     auto build_functions = [&]() {
-        std::sort(syms.begin(), syms.end(), [](const Sym& a, const Sym& b) { return a.addr < b.addr; });
+        // By address, then name: which alias comes first does not depend on the sort.
+        std::sort(syms.begin(), syms.end(), [](const Sym& a, const Sym& b) { return a.addr != b.addr ? a.addr < b.addr : a.name < b.name; });
         for (const Sym& s : syms) {
             if (!s.func) {
                 p.objects.push_back({s.addr, s.size, s.name});
@@ -425,7 +515,7 @@ bool parse_objdump(std::istream& in, Program& p, std::string& why) {
             f.size = s.size;
             p.funcs.push_back(f);
         }
-        for (size_t i = 0; i < p.funcs.size(); ++i) {
+        for (size_t i = 0; i < p.funcs.size(); ++i) {  // a function of size 0 (libgcc assembly) ends at the next symbol
             if (p.funcs[i].size != 0) continue;
             uint32_t end = i + 1 < p.funcs.size() ? p.funcs[i + 1].start : uint32_t{0xFFFFFFFFu};
             for (const Program::Range& r : p.objects)
@@ -435,38 +525,23 @@ bool parse_objdump(std::istream& in, Program& p, std::string& why) {
         p.address_taken_by_code.assign(p.funcs.size(), false);
         ps.code.assign(p.funcs.size(), {});
     };
-    uint32_t contents_addr = 0;
     while (std::getline(in, line)) {
         ++line_no;
         if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line.find("file format elf32-littlearm") != std::string::npos) {
-            p.isa = Isa::arm;
+        if (line.find("file format elf32-littlearm") != std::string::npos || line.find("file format elf32-littleriscv") != std::string::npos) {
+            p.isa = line.find("riscv") != std::string::npos ? Isa::riscv : Isa::arm;
             have_format = true;
-            continue;
-        }
-        if (line.find("file format elf32-littleriscv") != std::string::npos) {
-            p.isa = Isa::riscv;
-            have_format = true;
-            continue;
-        }
-        if (line == "SYMBOL TABLE:") {
+        } else if (line == "SYMBOL TABLE:") {
             section = symbols;
-            continue;
-        }
-        if (starts_with(line, "Contents of section ")) {
+        } else if (starts_with(line, "Contents of section ") || starts_with(line, "Disassembly of section ")) {
             if (section == symbols) build_functions();
-            section = contents;
-            const std::string name = line.substr(20, line.size() - 21);
+            const bool dump = starts_with(line, "Contents");
+            section = dump ? contents : disassembly;
+            const std::string name = dump && line.size() > 21 ? line.substr(20, line.size() - 21) : std::string();
             skip_contents = starts_with(name, ".debug") || starts_with(name, ".comment") || name.find("attributes") != std::string::npos ||
                             starts_with(name, ".note");
-            continue;
-        }
-        if (starts_with(line, "Disassembly of section ")) {
-            if (section == symbols) build_functions();
-            section = disassembly;
-            continue;
-        }
-        if (section == symbols) {
+            if (dump && !skip_contents) sections.push_back({0, {}});
+        } else if (section == symbols) {
             // "000001d8 l     F .text\t0000000c name"
             if (line.size() < 18 || !is_hex(line.substr(0, 8))) continue;
             const size_t tab = line.find('\t', 17);
@@ -476,58 +551,65 @@ bool parse_objdump(std::istream& in, Program& p, std::string& why) {
             for (const char* prefix : {".hidden ", ".protected ", ".internal "})
                 if (starts_with(name, prefix)) name = name.substr(std::string(prefix).size());
             const uint32_t size = hex_value(line.substr(tab + 1, 8));
-            if (type == 'F' || (type == 'O' && size != 0)) {  // a function of size 0 (libgcc assembly) ends at the next symbol
+            if (type == 'F' || (type == 'O' && size != 0)) {
                 uint32_t addr = hex_value(line.substr(0, 8));
                 if (type == 'F' && p.isa == Isa::arm) addr &= ~1u;
                 syms.push_back({addr, size, name, type == 'F'});
             }
         } else if (section == contents && !skip_contents) {
-            // " 0000 e83f0020 c1000000 d9010000 d9010000  .?. ............"
+            // " 0000 e83f0020 c1000000 d9010000 d9010000  .?. ............" (bytes in memory order)
             const std::string t = trim(line);
             const size_t sp = t.find(' ');
             if (sp == std::string::npos || !is_hex(t.substr(0, sp))) continue;
-            contents_addr = hex_value(t.substr(0, sp));
-            const size_t ascii = line.find("  ", line.find(t.substr(0, sp)) + sp);
-            std::istringstream groups(line.substr(0, ascii).substr(line.find(t.substr(0, sp)) + sp));
+            const size_t at = line.find(t.substr(0, sp)) + sp;
+            std::istringstream groups(line.substr(at, line.find("  ", at) - at));
+            Bytes& b = sections.back();
+            const uint32_t addr = hex_value(t.substr(0, sp));
+            if (b.data.empty()) b.base = addr;
+            if (addr != b.base + b.data.size()) sections.push_back({addr, {}});  // a gap: start a new run
             std::string g;
-            uint32_t a = contents_addr;
             while (groups >> g) {
                 if (!is_hex(g) || g.size() % 2 != 0) break;
-                if (g.size() == 8 && a % 4 == 0) {
-                    uint32_t v = 0;
-                    for (int b = 3; b >= 0; --b) v = (v << 8) | hex_value(g.substr(static_cast<size_t>(b) * 2, 2));
-                    ps.words[a] = v;
-                }
-                a += static_cast<uint32_t>(g.size() / 2);
+                for (size_t i = 0; i < g.size(); i += 2) sections.back().data.push_back(static_cast<uint8_t>(hex_value(g.substr(i, 2))));
             }
         } else if (section == disassembly) {
-            // "     15c:\tblx\tr3" ; comments after '@', ';' (arm) or '#' (riscv)
-            const size_t colon = line.find(':');
-            if (colon == std::string::npos || line.size() <= colon + 1 || line[colon + 1] != '\t') continue;
-            const std::string a = trim(line.substr(0, colon));
-            if (!is_hex(a)) continue;
-            const uint32_t addr = hex_value(a);
-            std::string rest = line.substr(colon + 2);
-            std::string comment;
-            const size_t c = p.isa == Isa::arm ? rest.find("\t@") : rest.find(" # ");
-            if (c != std::string::npos) {
-                comment = rest.substr(c + 2);
-                rest = rest.substr(0, c);
-            } else if (p.isa == Isa::arm && rest.find("; (") != std::string::npos) {
-                comment = rest.substr(rest.find("; (") + 2);
-                rest = rest.substr(0, rest.find("; ("));
+            Insn insn;
+            bool orphan = false;
+            if (!read_instruction(ps, line, orphan, insn)) continue;
+            if (!orphan) {
+                ps.code[static_cast<size_t>(ps.containing(insn.addr))].push_back(insn);
+                ++instructions;
+            } else if (p.isa == Isa::arm && orphans.empty() && looks_like_code(insn) &&
+                       std::none_of(p.objects.begin(), p.objects.end(),
+                                    [&](const Program::Range& r) { return insn.addr >= r.start && insn.addr < r.start + r.size; })) {
+                // Thumb data shows as .word (mapping symbols): an orphan here is code no symbol covers. On RV32
+                // data decodes as instructions, so code without a function symbol is not seen (README).
+                std::ostringstream s;
+                s << "line " << line_no << ": code outside every function symbol at " << std::hex << insn.addr << ": " << insn.mn << " " << insn.ops;
+                orphans = s.str();
             }
-            const size_t tab = rest.find('\t');
-            std::string mn = trim(tab == std::string::npos ? rest : rest.substr(0, tab));
-            const std::string ops = tab == std::string::npos ? std::string() : trim(rest.substr(tab + 1));
-            if (mn.empty() || mn[0] == '.') continue;  // .word, .short: data
-            for (char& ch : mn) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-            const long fi = ps.containing(addr);
-            if (fi >= 0) ps.code[static_cast<size_t>(fi)].push_back({addr, mn, ops, comment});
         }
     }
-    if (!have_format) return fail("no \"file format elf32-littlearm\" or \"elf32-littleriscv\" line (objdump -t -s -d output?)");
-    if (p.funcs.empty()) return fail("no function symbols (objdump -t missing, or a stripped ELF)");
+    if (!have_format) {
+        why = "no \"file format elf32-littlearm\" or \"elf32-littleriscv\" line (objdump -t -s -d output?)";
+        return false;
+    }
+    if (p.funcs.empty()) {
+        why = "no function symbols (objdump -t missing, or a stripped ELF)";
+        return false;
+    }
+    if (instructions == 0) {
+        why = "no instructions inside the function symbols (objdump -d missing?)";
+        return false;
+    }
+    if (!orphans.empty()) {
+        why = orphans;
+        return false;
+    }
+    for (const Bytes& b : sections)
+        for (size_t i = (4 - b.base % 4) % 4; i + 4 <= b.data.size(); i += 4)
+            ps.words[b.base + static_cast<uint32_t>(i)] = static_cast<uint32_t>(b.data[i]) | static_cast<uint32_t>(b.data[i + 1]) << 8 |
+                                                          static_cast<uint32_t>(b.data[i + 2]) << 16 | static_cast<uint32_t>(b.data[i + 3]) << 24;
     for (size_t i = 0; i < p.funcs.size(); ++i) {
         if (p.isa == Isa::arm) classify_arm(ps, i);
         else classify_riscv(ps, i);
@@ -591,72 +673,68 @@ Bound bound(const Program& p, const Options& opt) {
     for (size_t i = 0; i < p.funcs.size(); ++i)
         if (taken[i]) b.indirect_targets.push_back(p.funcs[i].names.front());
 
+    // Callees: the direct ones, then every taken function for a function with an indirect site.
+    std::vector<std::vector<size_t>> callees(p.funcs.size());
+    for (size_t f = 0; f < p.funcs.size(); ++f) {
+        callees[f] = p.funcs[f].callees;
+        if (p.funcs[f].indirect_sites != 0)
+            for (size_t i = 0; i < p.funcs.size(); ++i)
+                if (taken[i] && std::find(callees[f].begin(), callees[f].end(), i) == callees[f].end()) callees[f].push_back(i);
+    }
+    // Depth first with an explicit stack of (function, next callee); a function on the stack reached
+    // again is recursion.
     enum State : uint8_t { unvisited, active, done };
     std::vector<State> state(p.funcs.size(), unvisited);
     std::vector<uint32_t> total(p.funcs.size(), 0);
     std::vector<long> via(p.funcs.size(), -1);
-    std::string error;
-    // Depth-first with an explicit stack of (function, next callee index); the callees of an indirect
-    // site are every taken function after the direct ones.
-    struct Frame { size_t f; size_t next; };
-    std::vector<Frame> work;
-    auto callees_of = [&](size_t f) {
-        std::vector<size_t> c = p.funcs[f].callees;
-        if (p.funcs[f].indirect_sites != 0)
-            for (size_t i = 0; i < p.funcs.size(); ++i)
-                if (taken[i] && std::find(c.begin(), c.end(), i) == c.end()) c.push_back(i);
-        return c;
-    };
-    auto enter = [&](size_t f) -> bool {
+    struct Step { size_t f; size_t next; };
+    std::vector<Step> work;
+    auto refuse = [&p, entry](size_t f) -> std::string {
         const Function& fn = p.funcs[f];
-        if (!fn.problems.empty()) {
-            error = fn.names.front() + ": " + fn.problems.front();
-            return false;
-        }
-        if (fn.sets_sp && static_cast<long>(f) != entry) {
-            error = fn.names.front() + ": loads sp with a new value";
-            return false;
-        }
-        state[f] = active;
-        work.push_back({f, 0});
-        return true;
+        if (!fn.problems.empty()) return fn.names.front() + ": " + fn.problems.front();
+        if (fn.sets_sp && static_cast<long>(f) != entry) return fn.names.front() + ": loads sp with a new value";
+        return std::string();
     };
-    if (!enter(static_cast<size_t>(entry))) {
-        b.why = error;
-        return b;
-    }
+    if (!(b.why = refuse(static_cast<size_t>(entry))).empty()) return b;
+    state[static_cast<size_t>(entry)] = active;
+    work.push_back({static_cast<size_t>(entry), 0});
     while (!work.empty()) {
-        Frame& fr = work.back();
-        const std::vector<size_t> cs = callees_of(fr.f);
-        if (fr.next < cs.size()) {
-            const size_t c = cs[fr.next++];
+        const size_t f = work.back().f;
+        if (work.back().next < callees[f].size()) {
+            const size_t c = callees[f][work.back().next++];
             if (state[c] == active) {
                 std::string cycle;
-                for (const Frame& w : work) cycle += p.funcs[w.f].names.front() + " -> ";
+                for (const Step& w : work) cycle += p.funcs[w.f].names.front() + " -> ";
                 b.why = "recursion: " + cycle + p.funcs[c].names.front();
-                if (std::find(p.funcs[fr.f].callees.begin(), p.funcs[fr.f].callees.end(), c) == p.funcs[fr.f].callees.end())
+                if (std::find(p.funcs[f].callees.begin(), p.funcs[f].callees.end(), c) == p.funcs[f].callees.end())
                     b.why += " (an indirect call: " + why_taken[c] + ")";
                 return b;
             }
-            if (state[c] == unvisited && !enter(c)) {
-                b.why = error + " (reached from " + p.funcs[fr.f].names.front() + ")";
-                return b;
+            if (state[c] == unvisited) {
+                const std::string no = refuse(c);
+                if (!no.empty()) {
+                    b.why = no + " (reached from " + p.funcs[f].names.front() + ")";
+                    return b;
+                }
+                state[c] = active;
+                work.push_back({c, 0});
             }
             continue;
         }
         uint32_t best = 0;
-        for (size_t c : cs)
-            if (via[fr.f] < 0 || total[c] > best) {
+        for (size_t c : callees[f])
+            if (via[f] < 0 || total[c] > best) {
                 best = total[c];
-                via[fr.f] = static_cast<long>(c);
+                via[f] = static_cast<long>(c);
             }
-        total[fr.f] = p.funcs[fr.f].frame + best;
-        state[fr.f] = done;
+        total[f] = p.funcs[f].frame + best;
+        state[f] = done;
         work.pop_back();
     }
     b.ok = true;
     b.bytes = total[static_cast<size_t>(entry)];
-    for (long f = entry; f >= 0; f = via[static_cast<size_t>(f)]) b.path.push_back({p.funcs[static_cast<size_t>(f)].names.front(), p.funcs[static_cast<size_t>(f)].frame});
+    for (long f = entry; f >= 0; f = via[static_cast<size_t>(f)])
+        b.path.push_back({p.funcs[static_cast<size_t>(f)].names.front(), p.funcs[static_cast<size_t>(f)].frame});
     return b;
 }
 

@@ -1,17 +1,7 @@
-// A static bound on the stack a firmware can use, from its disassembly (`objdump -t -s -d`): every
-// function's frame and calls, then the deepest call chain from the entry. Thumb (ARMv6-M, ARMv7-M)
-// and RV32. It reads what was linked, so the naked assembly routines, libgcc and the runtime count
-// like compiled code.
-//
-// Conservative by construction: a function's frame is the sum of every stack allocation in its body
-// (pushes, sp decrements; releases are ignored), and each of its calls is charged on top of that whole
-// frame. An indirect call may reach any address-taken function: one whose address is an aligned word
-// of the image (literal pools, tables, .init_array) or is formed by an instruction (adr, la); data
-// objects the caller names as holding no pointers are left out (where flash starts at 0, a mesh holds
-// integers equal to code addresses, and a false target can close a false cycle). What cannot be
-// bounded is an error, never a guess: a write to sp other than by a constant, recursion (a cycle of
-// calls, which names the word that made a function a target), a call into the unknown.
-// Exception handlers are not part of the bound (the firmware has no interrupts; a fault ends the run).
+// A static worst-case stack bound of a firmware from its disassembly (`objdump -t -s -d`, Thumb and
+// RV32): it reads what was linked, assembly and libgcc included, and refuses what it cannot bound
+// (recursion, sp moved by an unknown amount, a call into the unknown) instead of guessing. How it
+// bounds and what it leaves out: README.md, "Stack: a static bound".
 #pragma once
 #include <cstdint>
 #include <iosfwd>

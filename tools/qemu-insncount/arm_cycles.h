@@ -245,9 +245,10 @@ static InsnCost cost_m3_32(uint32_t hw, uint32_t hw2) {
 }
 
 /* Size of the Thumb instruction whose first halfword is in `data`: 4 for the 32-bit encodings (first
- * five bits 0b11101, 0b11110 or 0b11111), else 2. QEMU 7.2 reports a 16-bit instruction on the last
- * halfword of a page as 4 bytes (it read the next halfword to tell), so the plugin takes the size from
- * the encoding (firmware/cyclecheck's page_end). */
+ * five bits 0b11101, 0b11110 or 0b11111), else 2. QEMU 7.2 reports the 16-bit instruction before a page's
+ * last halfword as 4 bytes (it reads that halfword while translating it, to see whether the next
+ * instruction crosses the page), so the plugin takes the size from the encoding (firmware/cyclecheck's
+ * page_end). */
 static int thumb_insn_size(const uint8_t *data) {
     const uint32_t hw = (uint32_t)data[0] | ((uint32_t)data[1] << 8);
     return (hw >> 11) >= 0x1Du ? 4 : 2;

@@ -67,13 +67,16 @@ typedef struct Block {
     struct Block *next;     /* every block, for the profile */
 } Block;
 
-/* Where a region marker sits: instructions and cycles from it to the end of its block, inclusive. */
+/* Where a region marker sits: instructions and cycles from it to the end of its block, inclusive, and
+ * whether it is the block's first instruction (which carries the block's entry adjustment). */
 typedef struct {
     uint64_t insns, lo, hi;
+    bool first;
 } Tail;
 
 static uint64_t total;          /* every executed instruction: whole blocks, added inline */
 static uint64_t cyc_lo, cyc_hi; /* cycle totals (whole blocks added on entry, taken branches when seen) */
+static uint64_t adj_lo, adj_hi; /* the current block's first instruction: its pairing with the block before */
 static uint64_t region, region_lo, region_hi;
 static uint64_t pair_max;  /* largest single start..end count */
 static uint64_t from_insns, from_lo, from_hi;  /* running counts at the last start */
@@ -100,12 +103,15 @@ static void on_block(unsigned int vcpu, void *userdata) {
         cyc_lo += prev->taken_lo;
         cyc_hi += prev->taken_hi;
     }
+    adj_lo = adj_hi = 0;
     if (model == MODEL_M3 && prev != NULL && prev->fallthrough == b->pcs[0]) {
         /* QEMU ends blocks at page boundaries too: the pair across one costs what it would inside a block. */
         InsnCost paired = b->first;
         pair_m3(&prev->last, &paired);
-        cyc_lo += (uint64_t)((int64_t)paired.lo - (int64_t)b->first.lo);
-        cyc_hi += (uint64_t)((int64_t)paired.hi - (int64_t)b->first.hi);
+        adj_lo = (uint64_t)((int64_t)paired.lo - (int64_t)b->first.lo);
+        adj_hi = (uint64_t)((int64_t)paired.hi - (int64_t)b->first.hi);
+        cyc_lo += adj_lo;
+        cyc_hi += adj_hi;
     }
     cyc_lo += b->lo;
     cyc_hi += b->hi;
@@ -119,8 +125,8 @@ static void on_start(unsigned int vcpu, void *userdata) {
     if (in_region) return;
     in_region = true;
     from_insns = total - t->insns;
-    from_lo = cyc_lo - t->lo;
-    from_hi = cyc_hi - t->hi;
+    from_lo = cyc_lo - t->lo - (t->first ? adj_lo : 0);  /* the marker's own adjustment is inside the region */
+    from_hi = cyc_hi - t->hi - (t->first ? adj_hi : 0);
 }
 
 static void on_end(unsigned int vcpu, void *userdata) {
@@ -128,7 +134,8 @@ static void on_end(unsigned int vcpu, void *userdata) {
     const Tail *t = (const Tail *)userdata;
     if (!in_region) return;
     in_region = false;
-    const uint64_t n = total - t->insns - from_insns, lo = cyc_lo - t->lo - from_lo, hi = cyc_hi - t->hi - from_hi;
+    const uint64_t n = total - t->insns - from_insns;
+    const uint64_t lo = cyc_lo - t->lo - (t->first ? adj_lo : 0) - from_lo, hi = cyc_hi - t->hi - (t->first ? adj_hi : 0) - from_hi;
     region += n;
     if (n > pair_max) pair_max = n;
     region_lo += lo;
@@ -180,7 +187,7 @@ static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb *tb) {
         qemu_plugin_register_vcpu_tb_exec_cb(tb, on_block, QEMU_PLUGIN_CB_NO_REGS, b);
     }
     /* Markers: the tail from the marker to the block's end was charged on entry but has not run yet. */
-    Tail tail = {0, 0, 0};
+    Tail tail = {0, 0, 0, false};
     for (size_t i = n; i-- > 0;) {
         struct qemu_plugin_insn *insn = qemu_plugin_tb_get_insn(tb, i);
         const uint64_t pc = qemu_plugin_insn_vaddr(insn) & ~(uint64_t)1;
@@ -194,6 +201,7 @@ static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb *tb) {
         Tail *t = malloc(sizeof *t);
         if (t == NULL) exit(1);
         *t = tail;
+        t->first = i == 0;
         if (is_start) qemu_plugin_register_vcpu_insn_exec_cb(insn, on_start, QEMU_PLUGIN_CB_NO_REGS, t);
         if (is_end) qemu_plugin_register_vcpu_insn_exec_cb(insn, on_end, QEMU_PLUGIN_CB_NO_REGS, t);
     }
