@@ -485,93 +485,133 @@ int register_count(const std::string& list) {
 }
 }  // namespace detail
 
-bool parse_objdump(std::istream& in, Program& p, std::string& why) {
-    p = Program{};
-    Parser ps{p, {}, {}};
-    enum Section { none, symbols, contents, disassembly } section = none;
-    bool skip_contents = false, have_format = false;
-    struct Sym { uint32_t addr, size; std::string name; bool func; };
-    std::vector<Sym> syms;
-    struct Bytes { uint32_t base; std::vector<uint8_t> data; };
-    std::vector<Bytes> sections;
-    std::string line, orphans;
-    size_t line_no = 0, instructions = 0;
-    auto build_functions = [&]() {
-        // By address, then name: which alias comes first does not depend on the sort.
-        std::sort(syms.begin(), syms.end(), [](const Sym& a, const Sym& b) { return a.addr != b.addr ? a.addr < b.addr : a.name < b.name; });
-        for (const Sym& s : syms) {
-            if (!s.func) {
-                p.objects.push_back({s.addr, s.size, s.name});
-                continue;
-            }
-            if (!p.funcs.empty() && p.funcs.back().start == s.addr) {  // an alias
-                p.funcs.back().names.push_back(s.name);
-                p.funcs.back().size = std::max(p.funcs.back().size, s.size);
-                continue;
-            }
+namespace {
+
+struct Sym {
+    uint32_t addr, size;
+    std::string name;
+    bool func;
+};
+
+/// A run of section bytes in memory order from `base`.
+struct Bytes {
+    uint32_t base;
+    std::vector<uint8_t> data;
+};
+
+/// One symbol table line ("000001d8 l     F .text\t0000000c name"): functions (Thumb bit cleared) and
+/// sized data objects; false for anything else.
+bool read_symbol(const std::string& line, Isa isa, Sym& out) {
+    if (line.size() < 18 || !is_hex(line.substr(0, 8))) return false;
+    const size_t tab = line.find('\t', 17);
+    if (tab == std::string::npos || tab + 10 > line.size()) return false;
+    const char type = line[15];
+    std::string name = line.substr(tab + 10);
+    for (const char* prefix : {".hidden ", ".protected ", ".internal "})
+        if (starts_with(name, prefix)) name = name.substr(std::string(prefix).size());
+    const uint32_t size = hex_value(line.substr(tab + 1, 8));
+    if (type != 'F' && (type != 'O' || size == 0)) return false;
+    uint32_t addr = hex_value(line.substr(0, 8));
+    if (type == 'F' && isa == Isa::arm) addr &= ~1u;
+    out = {addr, size, name, type == 'F'};
+    return true;
+}
+
+/// Functions (aliases merged; a function of size 0, libgcc assembly, ends at the next symbol) and objects.
+void build_functions(std::vector<Sym>& syms, Parser& ps) {
+    Program& p = ps.p;
+    // By address, then name: which alias comes first does not depend on the sort.
+    std::sort(syms.begin(), syms.end(), [](const Sym& a, const Sym& b) { return a.addr != b.addr ? a.addr < b.addr : a.name < b.name; });
+    for (const Sym& s : syms) {
+        if (!s.func) {
+            p.objects.push_back({s.addr, s.size, s.name});
+        } else if (!p.funcs.empty() && p.funcs.back().start == s.addr) {
+            p.funcs.back().names.push_back(s.name);
+            p.funcs.back().size = std::max(p.funcs.back().size, s.size);
+        } else {
             Function f;
             f.names.push_back(s.name);
             f.start = s.addr;
             f.size = s.size;
             p.funcs.push_back(f);
         }
-        for (size_t i = 0; i < p.funcs.size(); ++i) {  // a function of size 0 (libgcc assembly) ends at the next symbol
-            if (p.funcs[i].size != 0) continue;
-            uint32_t end = i + 1 < p.funcs.size() ? p.funcs[i + 1].start : uint32_t{0xFFFFFFFFu};
-            for (const Program::Range& r : p.objects)
-                if (r.start > p.funcs[i].start) end = std::min(end, r.start);
-            p.funcs[i].size = end - p.funcs[i].start;
-        }
-        p.address_taken_by_code.assign(p.funcs.size(), false);
-        ps.code.assign(p.funcs.size(), {});
-    };
+    }
+    for (size_t i = 0; i < p.funcs.size(); ++i) {
+        if (p.funcs[i].size != 0) continue;
+        uint32_t end = i + 1 < p.funcs.size() ? p.funcs[i + 1].start : uint32_t{0xFFFFFFFFu};
+        for (const Program::Range& r : p.objects)
+            if (r.start > p.funcs[i].start) end = std::min(end, r.start);
+        p.funcs[i].size = end - p.funcs[i].start;
+    }
+    p.address_taken_by_code.assign(p.funcs.size(), false);
+    ps.code.assign(p.funcs.size(), {});
+}
+
+/// One line of a section's contents (" 0000 e83f0020 c1000000  .?.."), appended to the last run (a
+/// new run after a gap).
+void read_contents(const std::string& line, std::vector<Bytes>& runs) {
+    const std::string t = trim(line);
+    const size_t sp = t.find(' ');
+    if (sp == std::string::npos || !is_hex(t.substr(0, sp)) || runs.empty()) return;
+    const size_t at = line.find(t.substr(0, sp)) + sp;
+    std::istringstream groups(line.substr(at, line.find("  ", at) - at));
+    const uint32_t addr = hex_value(t.substr(0, sp));
+    if (runs.back().data.empty()) runs.back().base = addr;
+    if (addr != runs.back().base + runs.back().data.size()) runs.push_back({addr, {}});
+    std::string g;
+    while (groups >> g) {
+        if (!is_hex(g) || g.size() % 2 != 0) break;
+        for (size_t i = 0; i < g.size(); i += 2) runs.back().data.push_back(static_cast<uint8_t>(hex_value(g.substr(i, 2))));
+    }
+}
+
+/// The aligned words of the runs, and those that hold a function's address (a Thumb one with bit 0 set).
+void find_pointers(const std::vector<Bytes>& runs, Parser& ps) {
+    for (const Bytes& b : runs)
+        for (size_t i = (4 - b.base % 4) % 4; i + 4 <= b.data.size(); i += 4)
+            ps.words[b.base + static_cast<uint32_t>(i)] = static_cast<uint32_t>(b.data[i]) | static_cast<uint32_t>(b.data[i + 1]) << 8 |
+                                                          static_cast<uint32_t>(b.data[i + 2]) << 16 | static_cast<uint32_t>(b.data[i + 3]) << 24;
+    const bool thumb = ps.p.isa == Isa::arm;
+    for (const auto& [addr, v] : ps.words) {
+        if (thumb && (v & 1u) == 0) continue;
+        const long t = ps.starting_at(thumb ? v & ~1u : v);
+        if (t >= 0) ps.p.pointer_sites.push_back({addr, static_cast<size_t>(t)});
+    }
+}
+
+}  // namespace
+
+bool parse_objdump(std::istream& in, Program& p, std::string& why) {
+    p = Program{};
+    Parser ps{p, {}, {}};
+    enum Section { none, symbols, contents, disassembly } section = none;
+    bool skip_contents = false, have_format = false;
+    std::vector<Sym> syms;
+    std::vector<Bytes> runs;
+    std::string line;
+    size_t line_no = 0, instructions = 0;
+    why.clear();
     while (std::getline(in, line)) {
         ++line_no;
         if (!line.empty() && line.back() == '\r') line.pop_back();
+        Sym sym;
         if (line.find("file format elf32-littlearm") != std::string::npos || line.find("file format elf32-littleriscv") != std::string::npos) {
             p.isa = line.find("riscv") != std::string::npos ? Isa::riscv : Isa::arm;
             have_format = true;
         } else if (line == "SYMBOL TABLE:") {
             section = symbols;
         } else if (starts_with(line, "Contents of section ") || starts_with(line, "Disassembly of section ")) {
-            if (section == symbols) build_functions();
+            if (section == symbols) build_functions(syms, ps);
             const bool dump = starts_with(line, "Contents");
             section = dump ? contents : disassembly;
             const std::string name = dump && line.size() > 21 ? line.substr(20, line.size() - 21) : std::string();
             skip_contents = starts_with(name, ".debug") || starts_with(name, ".comment") || name.find("attributes") != std::string::npos ||
                             starts_with(name, ".note");
-            if (dump && !skip_contents) sections.push_back({0, {}});
+            if (dump && !skip_contents) runs.push_back({0, {}});
         } else if (section == symbols) {
-            // "000001d8 l     F .text\t0000000c name"
-            if (line.size() < 18 || !is_hex(line.substr(0, 8))) continue;
-            const size_t tab = line.find('\t', 17);
-            if (tab == std::string::npos || tab + 10 > line.size()) continue;
-            const char type = line[15];
-            std::string name = line.substr(tab + 10);
-            for (const char* prefix : {".hidden ", ".protected ", ".internal "})
-                if (starts_with(name, prefix)) name = name.substr(std::string(prefix).size());
-            const uint32_t size = hex_value(line.substr(tab + 1, 8));
-            if (type == 'F' || (type == 'O' && size != 0)) {
-                uint32_t addr = hex_value(line.substr(0, 8));
-                if (type == 'F' && p.isa == Isa::arm) addr &= ~1u;
-                syms.push_back({addr, size, name, type == 'F'});
-            }
+            if (read_symbol(line, p.isa, sym)) syms.push_back(sym);
         } else if (section == contents && !skip_contents) {
-            // " 0000 e83f0020 c1000000 d9010000 d9010000  .?. ............" (bytes in memory order)
-            const std::string t = trim(line);
-            const size_t sp = t.find(' ');
-            if (sp == std::string::npos || !is_hex(t.substr(0, sp))) continue;
-            const size_t at = line.find(t.substr(0, sp)) + sp;
-            std::istringstream groups(line.substr(at, line.find("  ", at) - at));
-            Bytes& b = sections.back();
-            const uint32_t addr = hex_value(t.substr(0, sp));
-            if (b.data.empty()) b.base = addr;
-            if (addr != b.base + b.data.size()) sections.push_back({addr, {}});  // a gap: start a new run
-            std::string g;
-            while (groups >> g) {
-                if (!is_hex(g) || g.size() % 2 != 0) break;
-                for (size_t i = 0; i < g.size(); i += 2) sections.back().data.push_back(static_cast<uint8_t>(hex_value(g.substr(i, 2))));
-            }
+            read_contents(line, runs);
         } else if (section == disassembly) {
             Insn insn;
             bool orphan = false;
@@ -579,73 +619,41 @@ bool parse_objdump(std::istream& in, Program& p, std::string& why) {
             if (!orphan) {
                 ps.code[static_cast<size_t>(ps.containing(insn.addr))].push_back(insn);
                 ++instructions;
-            } else if (p.isa == Isa::arm && orphans.empty() && looks_like_code(insn) &&
+            } else if (p.isa == Isa::arm && why.empty() && looks_like_code(insn) &&
                        std::none_of(p.objects.begin(), p.objects.end(),
                                     [&](const Program::Range& r) { return insn.addr >= r.start && insn.addr < r.start + r.size; })) {
                 // Thumb data shows as .word (mapping symbols): an orphan here is code no symbol covers. On RV32
                 // data decodes as instructions, so code without a function symbol is not seen (README).
                 std::ostringstream s;
                 s << "line " << line_no << ": code outside every function symbol at " << std::hex << insn.addr << ": " << insn.mn << " " << insn.ops;
-                orphans = s.str();
+                why = s.str();
             }
         }
     }
-    if (!have_format) {
-        why = "no \"file format elf32-littlearm\" or \"elf32-littleriscv\" line (objdump -t -s -d output?)";
-        return false;
-    }
-    if (p.funcs.empty()) {
-        why = "no function symbols (objdump -t missing, or a stripped ELF)";
-        return false;
-    }
-    if (instructions == 0) {
-        why = "no instructions inside the function symbols (objdump -d missing?)";
-        return false;
-    }
-    if (!orphans.empty()) {
-        why = orphans;
-        return false;
-    }
-    for (const Bytes& b : sections)
-        for (size_t i = (4 - b.base % 4) % 4; i + 4 <= b.data.size(); i += 4)
-            ps.words[b.base + static_cast<uint32_t>(i)] = static_cast<uint32_t>(b.data[i]) | static_cast<uint32_t>(b.data[i + 1]) << 8 |
-                                                          static_cast<uint32_t>(b.data[i + 2]) << 16 | static_cast<uint32_t>(b.data[i + 3]) << 24;
+    if (!have_format) why = "no \"file format elf32-littlearm\" or \"elf32-littleriscv\" line (objdump -t -s -d output?)";
+    else if (p.funcs.empty()) why = "no function symbols (objdump -t missing, or a stripped ELF)";
+    else if (instructions == 0) why = "no instructions inside the function symbols (objdump -d missing?)";
+    if (!why.empty()) return false;
+    find_pointers(runs, ps);
     for (size_t i = 0; i < p.funcs.size(); ++i) {
         if (p.isa == Isa::arm) classify_arm(ps, i);
         else classify_riscv(ps, i);
     }
-    // Code addresses held in data or literal pools: function pointers (a Thumb address has bit 0 set).
-    for (const auto& [addr, v] : ps.words) {
-        const bool thumb = p.isa == Isa::arm;
-        if (thumb && (v & 1u) == 0) continue;
-        const long t = ps.starting_at(thumb ? v & ~1u : v);
-        if (t >= 0) p.pointer_sites.push_back({addr, static_cast<size_t>(t)});
-    }
     return true;
 }
 
-Bound bound(const Program& p, const Options& opt) {
-    Bound b;
-    auto find = [&p](const std::string& name) -> long {
-        for (size_t i = 0; i < p.funcs.size(); ++i)
-            for (const std::string& n : p.funcs[i].names)
-                if (n == name) return static_cast<long>(i);
-        return -1;
-    };
-    const long entry = find(opt.entry);
-    if (entry < 0) {
-        b.why = "no function named " + opt.entry;
-        return b;
-    }
-    // Indirect targets: address-taken functions. Every aligned word equal to a code address counts,
-    // but in the data objects opt.not_pointers names (a vector table, a mesh whose integers equal code
-    // addresses where flash starts at 0). `why_taken` remembers one word per function for messages.
+namespace {
+
+/// Functions an indirect call may reach: formed by an instruction, or held in a word outside the data
+/// objects opt.not_pointers names (a vector table, a mesh whose integers equal code addresses where
+/// flash starts at 0); not the handlers. why[f] says what made f a target, for messages.
+std::vector<bool> indirect_targets(const Program& p, const Options& opt, std::vector<std::string>& why) {
     std::vector<bool> taken(p.funcs.size(), false);
-    std::vector<std::string> why_taken(p.funcs.size());
+    why.assign(p.funcs.size(), std::string());
     for (size_t i = 0; i < p.funcs.size(); ++i)
         if (p.address_taken_by_code[i]) {
             taken[i] = true;
-            why_taken[i] = "its address is formed by an instruction";
+            why[i] = "its address is formed by an instruction";
         }
     for (const Program::PointerSite& s : p.pointer_sites) {
         const Program::Range* in = nullptr;
@@ -658,21 +666,41 @@ Bound bound(const Program& p, const Options& opt) {
             std::ostringstream w;
             w << "its address is the word at " << std::hex << s.addr << std::dec;
             if (in != nullptr) w << ", in " << in->name;
-            why_taken[s.func] = w.str();
+            why[s.func] = w.str();
         }
         taken[s.func] = true;
     }
-    for (const std::string& h : opt.handlers) {
-        const long i = find(h);
-        if (i < 0) {
+    for (size_t i = 0; i < p.funcs.size(); ++i)
+        for (const std::string& n : p.funcs[i].names)
+            if (std::find(opt.handlers.begin(), opt.handlers.end(), n) != opt.handlers.end()) taken[i] = false;
+    return taken;
+}
+
+long find_function(const Program& p, const std::string& name) {
+    for (size_t i = 0; i < p.funcs.size(); ++i)
+        for (const std::string& n : p.funcs[i].names)
+            if (n == name) return static_cast<long>(i);
+    return -1;
+}
+
+}  // namespace
+
+Bound bound(const Program& p, const Options& opt) {
+    Bound b;
+    const long entry = find_function(p, opt.entry);
+    if (entry < 0) {
+        b.why = "no function named " + opt.entry;
+        return b;
+    }
+    for (const std::string& h : opt.handlers)
+        if (find_function(p, h) < 0) {
             b.why = "no handler named " + h;
             return b;
         }
-        taken[static_cast<size_t>(i)] = false;
-    }
+    std::vector<std::string> why_taken;
+    const std::vector<bool> taken = indirect_targets(p, opt, why_taken);
     for (size_t i = 0; i < p.funcs.size(); ++i)
         if (taken[i]) b.indirect_targets.push_back(p.funcs[i].names.front());
-
     // Callees: the direct ones, then every taken function for a function with an indirect site.
     std::vector<std::vector<size_t>> callees(p.funcs.size());
     for (size_t f = 0; f < p.funcs.size(); ++f) {
@@ -681,20 +709,20 @@ Bound bound(const Program& p, const Options& opt) {
             for (size_t i = 0; i < p.funcs.size(); ++i)
                 if (taken[i] && std::find(callees[f].begin(), callees[f].end(), i) == callees[f].end()) callees[f].push_back(i);
     }
-    // Depth first with an explicit stack of (function, next callee); a function on the stack reached
-    // again is recursion.
-    enum State : uint8_t { unvisited, active, done };
-    std::vector<State> state(p.funcs.size(), unvisited);
-    std::vector<uint32_t> total(p.funcs.size(), 0);
-    std::vector<long> via(p.funcs.size(), -1);
-    struct Step { size_t f; size_t next; };
-    std::vector<Step> work;
     auto refuse = [&p, entry](size_t f) -> std::string {
         const Function& fn = p.funcs[f];
         if (!fn.problems.empty()) return fn.names.front() + ": " + fn.problems.front();
         if (fn.sets_sp && static_cast<long>(f) != entry) return fn.names.front() + ": loads sp with a new value";
         return std::string();
     };
+    // Depth first with an explicit stack of (function, next callee); a function on the stack reached
+    // again is recursion.
+    enum State : uint8_t { unvisited, active, done };
+    std::vector<State> state(p.funcs.size(), unvisited);
+    std::vector<uint32_t> total(p.funcs.size(), 0);
+    std::vector<long> via(p.funcs.size(), -1);
+    struct Step { size_t f, next; };
+    std::vector<Step> work;
     if (!(b.why = refuse(static_cast<size_t>(entry))).empty()) return b;
     state[static_cast<size_t>(entry)] = active;
     work.push_back({static_cast<size_t>(entry), 0});
@@ -703,17 +731,16 @@ Bound bound(const Program& p, const Options& opt) {
         if (work.back().next < callees[f].size()) {
             const size_t c = callees[f][work.back().next++];
             if (state[c] == active) {
-                std::string cycle;
-                for (const Step& w : work) cycle += p.funcs[w.f].names.front() + " -> ";
-                b.why = "recursion: " + cycle + p.funcs[c].names.front();
+                b.why = "recursion: ";
+                for (const Step& w : work) b.why += p.funcs[w.f].names.front() + " -> ";
+                b.why += p.funcs[c].names.front();
                 if (std::find(p.funcs[f].callees.begin(), p.funcs[f].callees.end(), c) == p.funcs[f].callees.end())
                     b.why += " (an indirect call: " + why_taken[c] + ")";
                 return b;
             }
             if (state[c] == unvisited) {
-                const std::string no = refuse(c);
-                if (!no.empty()) {
-                    b.why = no + " (reached from " + p.funcs[f].names.front() + ")";
+                if (!(b.why = refuse(c)).empty()) {
+                    b.why += " (reached from " + p.funcs[f].names.front() + ")";
                     return b;
                 }
                 state[c] = active;
@@ -721,13 +748,9 @@ Bound bound(const Program& p, const Options& opt) {
             }
             continue;
         }
-        uint32_t best = 0;
         for (size_t c : callees[f])
-            if (via[f] < 0 || total[c] > best) {
-                best = total[c];
-                via[f] = static_cast<long>(c);
-            }
-        total[f] = p.funcs[f].frame + best;
+            if (via[f] < 0 || total[c] > total[static_cast<size_t>(via[f])]) via[f] = static_cast<long>(c);
+        total[f] = p.funcs[f].frame + (via[f] < 0 ? 0 : total[static_cast<size_t>(via[f])]);
         state[f] = done;
         work.pop_back();
     }
