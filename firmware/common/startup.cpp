@@ -4,6 +4,7 @@
 // to stack.txt in the run's directory, where ctest <name>.stack_bound holds hider-stack's static bound
 // against it.
 // Symbols come from firmware/common/{cortex_m,riscv}.ld.
+#include "common/decimal.hpp"
 #include "common/runtime.hpp"
 #include "semihost/semihost.hpp"
 
@@ -35,20 +36,10 @@ uint32_t paint_stack() {
     return static_cast<uint32_t>(reinterpret_cast<uintptr_t>(__stack_top__) - limit);
 }
 
-/// Appends text, or the decimal digits of v, to out at n.
-size_t put(char* out, size_t n, const char* text) {
-    while (*text != '\0') out[n++] = *text++;
-    return n;
-}
-size_t put(char* out, size_t n, uint32_t v) {
-    char digits[10];
-    int k = 0;
-    do {
-        digits[k++] = static_cast<char>('0' + v % 10);
-        v /= 10;
-    } while (v != 0);
-    while (k > 0) out[n++] = digits[--k];
-    return n;
+/// Writes text at p (no terminator); returns the end.
+char* append_text(char* p, const char* text) {
+    while (*text != '\0') *p++ = *text++;
+    return p;
 }
 
 uint32_t stack_used_bytes() {
@@ -61,16 +52,17 @@ uint32_t stack_used_bytes() {
 /// beneath main().
 __attribute__((noinline)) void write_stack_report(uint32_t used, uint32_t floor, uint32_t size) {
     char text[64];
-    size_t n = put(text, 0, "high-water ");
-    n = put(text, put(text, n, used), " floor ");
-    n = put(text, put(text, n, floor), " size ");
-    n = put(text, put(text, n, size), "\n");
-    if (!hider::semihost::write_file("stack.txt", text, n)) hider::semihost::print("hider: cannot write stack.txt\n");
+    char* p = append_text(text, "high-water ");
+    p = append_text(append_decimal(p, used), " floor ");
+    p = append_text(append_decimal(p, floor), " size ");
+    p = append_text(append_decimal(p, size), "\n");
+    if (!hider::semihost::write_file("stack.txt", text, static_cast<size_t>(p - text)))
+        hider::semihost::print("hider: cannot write stack.txt\n");
 }
 
 /// After main(): the stack report and the exit status. Out of line, so that hider_reset's frame, under
 /// every path of main(), holds no more than the floor.
-__attribute__((noinline)) void finish(int status, uint32_t floor) {
+[[noreturn]] __attribute__((noinline)) void finish(int status, uint32_t floor) {
     namespace sh = hider::semihost;
     const uint32_t used = stack_used_bytes();
     const uint32_t size = static_cast<uint32_t>(reinterpret_cast<uintptr_t>(__stack_top__) -

@@ -6,6 +6,7 @@
 #include <hider/frame.hpp>
 #include <hider/status.hpp>
 
+#include "common/decimal.hpp"
 #include "display/sink.hpp"
 
 namespace spin {
@@ -42,22 +43,13 @@ private:
         return false;
     }
 
-    /// Appends the decimal digits of v at p; returns the end.
-    static char* decimal(char* p, uint32_t v) {
-        char digits[10];
-        int n = 0;
-        do { digits[n++] = static_cast<char>('0' + v % 10u); v /= 10u; } while (v != 0);
-        while (n > 0) *p++ = digits[--n];
-        return p;
-    }
-
     bool begin(uint16_t width, uint16_t height) {
         const hider::port::BandStatus s = checker_.begin_frame(width, height);
         if (s != hider::port::BandStatus::ok) return refuse(s);
         char header[32] = {'P', '6', '\n'};  // "P6\n<W> <H>\n255\n", as port/host/ppm.cpp writes it
-        char* p = decimal(header + 3, width);
+        char* p = append_decimal(header + 3, width);
         *p++ = ' ';
-        p = decimal(p, height);
+        p = append_decimal(p, height);
         const char tail[] = "\n255\n";
         for (int i = 0; i < 5; ++i) *p++ = tail[i];
         if (!out_.write(header, static_cast<size_t>(p - header))) return refuse(hider::port::BandStatus::not_ready);

@@ -3,6 +3,7 @@
 // returns that are not calls, tail calls, indirect calls through address-taken functions, and the cases
 // that must refuse to give a bound. The firmware ctests (<name>.stack_bound) run it on every real ELF
 // and hold it against the high-water mark each run measures.
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -37,66 +38,29 @@ std::string path_of(const stackbound::Bound& b) {
     return s;
 }
 
-// Thumb: reset -> main -> {leaf, big}; big takes its frame the Thumb-1 way (a constant from a literal
-// added to sp) and returns through a popped register; `spin` loops on itself (a local branch).
-const char* const kArm = R"(
-/build/fw.elf:     file format elf32-littlearm
-
-SYMBOL TABLE:
-00000000 l    d  .text	00000000 .text
-00000100 g     F .text	0000000a reset
-00000110 g     F .text	0000000e main
-00000120 g     F .text	00000004 leaf
-00000130 g     F .text	00000018 big
-00000150 g     F .text	00000002 spin
-
-Contents of section .text:
- 0140 a8fdffff 00000000 00000000 00000000  ................
-
-Disassembly of section .text:
-
-00000100 <reset>:
- 100:	push	{r4, lr}
- 102:	sub	sp, #16
- 104:	bl	110 <main>
- 108:	b.n	108 <reset+0x8>
-
-00000110 <main>:
- 110:	stmdb	sp!, {r4, r5, r6, r7, lr}
- 114:	sub.w	sp, sp, #1024	@ 0x400
- 118:	bl	120 <leaf>
- 11c:	bl	130 <big>
-
-00000120 <leaf>:
- 120:	push	{lr}
- 122:	pop	{pc}
-
-00000130 <big>:
- 130:	push	{r4, lr}
- 132:	ldr	r3, [pc, #12]	@ (140 <big+0x10>)
- 134:	add	sp, r3
- 136:	bl	120 <leaf>
- 13a:	pop	{r3}
- 13c:	add	sp, #8
- 13e:	bx	r3
- 140:	.word	0xfffffda8
-
-00000150 <spin>:
- 150:	b.n	150 <spin>
-)";
+// tests/data/stack/chain.dump (also hider-stack's command-line tests): Thumb, reset -> main -> {leaf,
+// big}; big takes its frame the Thumb-1 way (a constant from a literal added to sp) and returns through
+// a popped register; `spin` loops on itself (a local branch).
+std::string chain_dump() {
+    std::ifstream in(std::string(HIDER_TEST_DATA) + "/stack/chain.dump");
+    std::stringstream text;
+    text << in.rdbuf();
+    REQUIRE_MESSAGE(!text.str().empty(), "tests/data/stack/chain.dump");
+    return text.str();
+}
 
 }  // namespace
 
 TEST_CASE("hider-stack: Thumb frames add up along the deepest call chain") {
-    const stackbound::Bound b = bound_of(kArm, "reset");
+    const stackbound::Bound b = bound_of(chain_dump(), "reset");
     REQUIRE_MESSAGE(b.ok, b.why);
     // reset 8 + 16; main 20 + 1024; big 8 + 600 (the literal -600 added to sp) + leaf 4
     CHECK(b.bytes == 24 + 1044 + 608 + 4);
     CHECK(path_of(b) == "reset:24 main:1044 big:608 leaf:4 ");
     CHECK(b.indirect_targets.empty());  // the literal is a frame size, not a code address
-    const stackbound::Bound leaf = bound_of(kArm, "leaf");
+    const stackbound::Bound leaf = bound_of(chain_dump(), "leaf");
     CHECK(leaf.bytes == 4);
-    CHECK(!bound_of(kArm, "nowhere").ok);
+    CHECK(!bound_of(chain_dump(), "nowhere").ok);
 }
 
 TEST_CASE("hider-stack: an indirect call reaches every address-taken function, less named data") {

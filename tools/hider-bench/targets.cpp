@@ -49,9 +49,6 @@ const Firmware kFirmware[] = {
     {"kfail1", "firmware/spanbench/spanbench_kfail1.elf", true, "big"},
 };
 constexpr uint64_t kSpanPixels = 320;
-/// The bands firmware's stack on the ARM chips (STACK_SIZE in firmware/bands/CMakeLists.txt; RV32: 2,056).
-constexpr int kBandsStack = 2072;
-
 /// Band heights of the bands320 builds (3: bands320 itself, 16 KB; the others on the big machine).
 const int kBandRows[] = {1, 2, 3, 4, 8, 16};
 constexpr uint32_t kTeapotVertices = 3644, kTeapotTriangles = 6320;
@@ -132,6 +129,15 @@ uint64_t output_number(const Count& c, const std::string& key, const std::string
     if (at == std::string::npos || std::sscanf(c.output.c_str() + at + key.size(), "%llu", &v) != 1)
         fail(what + ": no '" + key + "' in its output");
     return v;
+}
+
+/// The stack the firmware reserved, from the start-up's "stack high-water N of S bytes".
+uint64_t stack_size(const Count& c, const std::string& what) {
+    const size_t at = c.output.find("stack high-water ");
+    unsigned long long used = 0, size = 0;
+    if (at == std::string::npos || std::sscanf(c.output.c_str() + at, "stack high-water %llu of %llu", &used, &size) != 2)
+        fail(what + ": no 'stack high-water N of S' in its output");
+    return size;
 }
 
 /// A number with thousands separators.
@@ -301,13 +307,14 @@ int targets_command(const Args& args) {
     }
 
     // Band height against RAM and cost (the torus at 320x240).
+    const uint64_t band_stack = stack_size(counts[presets.front()]["bands320"], "bands320");
     std::printf("\nBand height of the torus at 320x240 against RAM and instructions: the renderer's static storage\n"
                 "(vertex cache, bins, band buffers, carried slots, PPM chunk; printed by the firmware) plus its\n"
-                "%d-byte stack on the ARM chips (2,056 on RV32; firmware/bands/CMakeLists.txt: hider-stack's bound\n"
-                "and the start-up's 32 untouched bytes); 3 rows is bands320 (43 slots, the 16 KB machines), the\n"
-                "others run on the big machine with 80 slots (no set-up repeated for want of one). Ratio: to\n"
+                "%" PRIu64 "-byte stack on %s (printed by its start-up; firmware/bands/CMakeLists.txt: hider-stack's\n"
+                "bound and the start-up's 32 untouched bytes); 3 rows is bands320 (43 slots, the 16 KB machines),\n"
+                "the others run on the big machine with 80 slots (no set-up repeated for want of one). Ratio: to\n"
                 "spin320 on the same chip.\n\n",
-                kBandsStack);
+                band_stack, target_name(presets.front()).c_str());
     std::printf("| rows | bands | RAM bytes |");
     for (const std::string& preset : presets) std::printf(" %s instr | ratio |", target_name(preset).c_str());
     std::printf("\n|---:|---:|---:|");
@@ -317,7 +324,7 @@ int targets_command(const Args& args) {
         const std::string key = rows == 3 ? "bands320" : "bands320_rows" + std::to_string(rows);
         const Count& first = counts[presets.front()][key];
         const uint64_t storage = output_number(first, "storage ", key);
-        std::printf("| %d | %d | %s |", rows, (240 + rows - 1) / rows, grouped(storage + kBandsStack).c_str());
+        std::printf("| %d | %d | %s |", rows, (240 + rows - 1) / rows, grouped(storage + band_stack).c_str());
         for (const std::string& preset : presets) {
             const Count& c = counts[preset][key];
             std::printf(" %s | %sx |", grouped(c.region).c_str(),

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <istream>
+#include <map>
 #include <set>
 #include <sstream>
 

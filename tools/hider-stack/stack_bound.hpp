@@ -5,7 +5,6 @@
 #pragma once
 #include <cstdint>
 #include <iosfwd>
-#include <map>
 #include <string>
 #include <vector>
 
