@@ -5,6 +5,7 @@
 // covers left empty) and no crack (a pixel inside a face's area, all of whose neighbours show that face in
 // the z-buffer, showing another face); the reverse painter writes every pixel once.
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -33,28 +34,34 @@ tool::RenderResult render_ids(const tool::Scene& s, tool::Algo algo, bool cull, 
 }
 
 
+/// Newell and the reverse painter against the z-buffer on one scene; returns Newell's statistics.
+NewellStats check_ids(const tool::Scene& s, const std::string& name, bool cull) {
+    NewellStats newell;
+    const tool::RenderResult z = render_ids(s, tool::Algo::zbuffer, cull);
+    const std::vector<uint32_t> zi = tool::decode_ids(z);
+    for (tool::Algo algo : {tool::Algo::newell, tool::Algo::reverse}) {
+        const tool::RenderResult r = render_ids(s, algo, cull);
+        const std::vector<uint32_t> ri = tool::decode_ids(r);
+        const ref::Agreement a = ref::compare_ids(ri, zi, s.width, s.height);
+        const test::Defects d = test::count_defects(ri, zi, s.width, s.height);
+        const std::string what = name + (algo == tool::Algo::newell ? " newell" : " reverse") + (cull ? " cull" : " no-cull");
+        INFO(what);
+        MESSAGE(what << ": " << a.off_edge_mismatch << " of " << a.off_edge << " off-edge pixels differ, holes " << d.holes
+                     << ", cracks " << d.cracks << "; polygons " << r.polygons << ", cuts " << r.newell.splits << ", pair tests "
+                     << r.newell.pair_tests << ", unresolved " << r.newell.unresolved << ", too deep " << r.newell.too_deep);
+        CHECK(a.rate() >= 0.999);
+        CHECK(d.holes == 0);
+        CHECK(d.cracks == 0);
+        CHECK(r.stats.status == Status::ok);
+        if (algo == tool::Algo::reverse) CHECK(r.stats.pixels_written == r.pixels_covered);  // overdraw 1.00
+        if (algo == tool::Algo::newell) newell = r.newell;
+    }
+    return newell;
+}
+
 void check_scene(const std::string& name) {
     const tool::Scene s = test::generated_scene(name);
-    for (bool cull : {true, false}) {
-        const tool::RenderResult z = render_ids(s, tool::Algo::zbuffer, cull);
-        const std::vector<uint32_t> zi = tool::decode_ids(z);
-        for (tool::Algo algo : {tool::Algo::newell, tool::Algo::reverse}) {
-            const tool::RenderResult r = render_ids(s, algo, cull);
-            const std::vector<uint32_t> ri = tool::decode_ids(r);
-            const ref::Agreement a = ref::compare_ids(ri, zi, s.width, s.height);
-            const test::Defects d = test::count_defects(ri, zi, s.width, s.height);
-            const std::string what = name + (algo == tool::Algo::newell ? " newell" : " reverse") + (cull ? " cull" : " no-cull");
-            INFO(what);
-            MESSAGE(what << ": " << a.off_edge_mismatch << " of " << a.off_edge << " off-edge pixels differ, holes " << d.holes
-                         << ", cracks " << d.cracks << "; polygons " << r.polygons << ", cuts " << r.newell.splits << ", pair tests "
-                         << r.newell.pair_tests << ", unresolved " << r.newell.unresolved << ", too deep " << r.newell.too_deep);
-            CHECK(a.rate() >= 0.999);
-            CHECK(d.holes == 0);
-            CHECK(d.cracks == 0);
-            CHECK(r.stats.status == Status::ok);
-            if (algo == tool::Algo::reverse) CHECK(r.stats.pixels_written == r.pixels_covered);  // overdraw 1.00
-        }
-    }
+    for (bool cull : {true, false}) check_ids(s, name, cull);
 }
 
 }  // namespace
@@ -110,4 +117,47 @@ TEST_CASE("Newell and the reverse painter render band by band exactly on soups a
     MESSAGE(frames << " frames, " << cuts << " cuts");
     CHECK(frames >= static_cast<int>(last - first + 1) * 3);
     CHECK(cuts > static_cast<int>(last - first + 1) * 50);
+}
+
+TEST_CASE("Newell and the reverse painter order near-parallel surfaces as the z-buffer does") {
+    // A small triangle 3e-5 to 1e-3 units in front of or behind a large one on a parallel plane (a model 2
+    // units wide, random slopes and placements): closer than half a subpixel's depth slope at these sizes.
+    // A rounding slack on whole triangles took such pairs for coplanar and drew whichever came later (35
+    // of these 90 frames wrong, on up to 6% of their off-edge pixels); only a piece's cut points are rounded.
+    int frames = 0, moved = 0;
+    for (uint32_t seed = 1; seed <= 30; ++seed) {
+        std::mt19937 rng(seed);
+        auto u = [&rng](double lo, double hi) { return lo + (hi - lo) * static_cast<double>(rng() % 100001) / 100000.0; };
+        const double a = u(-0.9, 0.9), b = u(-0.9, 0.9);
+        const double gaps[] = {3e-5, 1e-4, 3e-4, 1e-3};
+        const double gap = gaps[rng() % 4] * (rng() % 2 == 0 ? 1.0 : -1.0);
+        const double scale = u(0.2, 0.6), cx = u(-0.2, 0.2), cy = u(-0.3, 0.0);
+        const double big[3][2] = {{-1, -1}, {1, -1}, {0, 1}};
+        std::ostringstream obj;
+        obj.precision(17);
+        for (const auto& v : big) obj << "v " << v[0] << ' ' << v[1] << ' ' << a * v[0] + b * v[1] << '\n';
+        for (const auto& v : big) {
+            const double x = cx + scale * v[0], y = cy + scale * v[1];
+            obj << "v " << x << ' ' << y << ' ' << a * x + b * y + gap << '\n';
+        }
+        obj << "f 1 2 3\nf 4 5 6\n";
+        std::istringstream in(obj.str());
+        tool::ObjModel model;
+        tool::ObjError err;
+        REQUIRE(tool::parse_obj(in, "near-parallel", model, err));
+        for (const int width : {160, 320, 640}) {
+            tool::CameraArgs args;
+            args.width = width;
+            args.height = width * 3 / 4;
+            tool::Scene s;
+            std::string why;
+            REQUIRE_MESSAGE(tool::build_scene(model, args, s, why), why);
+            const std::string name = "near-parallel seed " + std::to_string(seed) + " gap " + std::to_string(gap) + " " +
+                                     std::to_string(width) + " px";
+            moved += static_cast<int>(check_ids(s, name, false).moves);
+            ++frames;
+        }
+    }
+    CHECK(frames == 90);
+    CHECK(moved > 0);  // the small triangle in front waits for the large one behind it
 }

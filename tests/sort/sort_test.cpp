@@ -68,6 +68,18 @@ TEST_CASE("a plane classifies its own vertices as on it and cuts a straddling tr
     CHECK(classify(pl, slack, sv(5, 5, (1u << 30) + 4)) > 0);
     CHECK(classify(pl, slack, sv(5, 5, (1u << 30) - 4)) < 0);
     CHECK(classify(pl, slack, sv(5, 5, (1u << 30) + 3)) == 0);  // within the rounding slack of a cut point
+    // A triangle's own vertices are where the rasterizer draws them: one depth unit off the plane is off it.
+    // Only a piece's outline (Outline::rounded: it has cut points) gets the slack; with it on every
+    // triangle, a surface within half a subpixel's depth slope of a parallel one counted as coplanar, and
+    // Newell drew the later one on top.
+    ScreenPoly under{{sv(-100, -100, (1u << 30) - 1), sv(100, -100, (1u << 30) - 1), sv(0, 100, (1u << 30) - 1)}, 0, 0, 0, 0, 0, 0, 5,
+                     kNotMoved, kNoCut, 0};
+    Outline near_outline;
+    outline_of(under, {}, near_outline);
+    CHECK(!near_outline.rounded);
+    CHECK(side_of(pl, near_outline) == -1);
+    near_outline.rounded = true;  // the same points in a piece's outline: within the slack, on the plane (+1)
+    CHECK(side_of(pl, near_outline) == 1);
     ScreenPoly stick{{sv(-400, 0, 1u << 29), sv(400, 0, 3u << 29), sv(0, 300, 3u << 29)}, 0, 0, 0, 0, 0, 0, 7, kNotMoved, kNoCut, kPolyFront};
     update_extents(stick);
     Outline whole;
@@ -92,6 +104,7 @@ TEST_CASE("a plane classifies its own vertices as on it and cuts a straddling tr
         Outline o;
         outline_of(pieces[k], {cuts.data(), cuts.size()}, o);
         CHECK(o.count >= 3);
+        CHECK(o.rounded);  // the points on the cut line
         CHECK(side_of(pl, o) == (k == 0 ? 1 : -1));  // each piece lies on one side of the plane
     }
     // The two pieces cover exactly the stick's pixels, each once (a 100x50 frame around it).

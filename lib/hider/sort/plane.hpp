@@ -40,8 +40,8 @@ inline Int128 rounding_slack(const ScreenPlane& pl) {
     return mul128(abs_value(pl.a) + abs_value(pl.b), 1).shr(1) + mul128(pl.c, 3);
 }
 
-/// Side of v: +1 farther, -1 nearer, 0 on the plane or within its rounding slack (a vertex shared
-/// with the plane's triangle is exactly on it). A narrow plane decides in 64 bits, with the same result.
+/// Side of v: +1 farther, -1 nearer, 0 on the plane or within `slack` of it (a vertex shared with the
+/// plane's triangle is exactly on it). A narrow plane decides in 64 bits, with the same result.
 template <class V>
 inline int classify(const ScreenPlane& pl, const Int128& slack, const V& v) {
     if (pl.narrow) {
@@ -66,6 +66,7 @@ struct OutlinePoint {
 struct Outline {
     OutlinePoint v[3 + kMaxPieceCuts];
     int count = 0;
+    bool rounded = false;  ///< some point is a cut point rounded to the grid (else the triangle's own vertices)
 };
 
 namespace detail {
@@ -106,8 +107,10 @@ inline void clip_outline(Outline& o, const CutLine& line) {
     for (int i = 0; i < o.count; ++i) {
         const int j = i + 1 == o.count ? 0 : i + 1;
         if (e[i] >= 0 && n < 3 + kMaxPieceCuts) r[n++] = o.v[i];
-        if (((e[i] > 0 && e[j] < 0) || (e[i] < 0 && e[j] > 0)) && n < 3 + kMaxPieceCuts)
+        if (((e[i] > 0 && e[j] < 0) || (e[i] < 0 && e[j] > 0)) && n < 3 + kMaxPieceCuts) {
             r[n++] = lerp_to_line(o.v[i], o.v[j], e[i], e[j]);
+            o.rounded = true;
+        }
     }
     for (int i = 0; i < n; ++i) o.v[i] = r[i];
     o.count = n;
@@ -117,6 +120,7 @@ inline void clip_outline(Outline& o, const CutLine& line) {
 /// The outline of polygon p (cut chain in `cuts`).
 inline void outline_of(const ScreenPoly& p, Span<const PieceCut> cuts, Outline& o) {
     o.count = 3;
+    o.rounded = false;
     for (int i = 0; i < 3; ++i) o.v[i] = {p.v[i].x, p.v[i].y, p.v[i].z};
     for (uint32_t c = p.cut; c != kNoCut && o.count > 0; c = cuts[c].prev) detail::clip_outline(o, cuts[c].line);
 }
@@ -133,9 +137,12 @@ inline int64_t outline_area(const Outline& o) {
 }
 
 /// Side of an outline: -1 if every vertex is nearer than the plane or on it, +1 if every one is farther
-/// or on it (a polygon in the plane gives +1), 0 if it straddles the plane.
+/// or on it (a polygon in the plane gives +1), 0 if it straddles the plane. A piece's outline, with cut
+/// points rounded to the grid, is classified within the rounding slack; a whole triangle exactly: its
+/// vertices are where the rasterizer draws them, and a surface closer to a parallel one than half a
+/// subpixel's depth slope must not be taken for coplanar (the later one would be drawn on top).
 inline int side_of(const ScreenPlane& pl, const Outline& o) {
-    const Int128 slack = rounding_slack(pl);
+    const Int128 slack = o.rounded ? rounding_slack(pl) : Int128{};
     bool near = false, far = false;
     for (int i = 0; i < o.count; ++i) {
         const int s = classify(pl, slack, o.v[i]);
