@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -18,6 +19,8 @@
 #include <system_error>
 #include <utility>
 #include <vector>
+
+#include <hider/bsp/format.hpp>
 
 #include "common/gen_scenes.hpp"
 
@@ -634,6 +637,15 @@ TEST_CASE("--help lists the algorithm names") {
     const Run r = run({"--help"});
     CHECK(r.code == 0);
     for (const char* algo : {"zbuffer", "painter", "newell", "reverse", "raycast"}) CHECK(contains(r.out, algo));
+    CHECK(contains(r.out, "defaults: --size 320x240 --fov 60 --algo zbuffer --shade headlight --depth-bits 16 --format rgb565"));
+    // ... and they are the defaults: the same bytes with and without them.
+    const std::string torus = std::string(HIDER_TEST_DATA) + "/models/torus.obj";
+    REQUIRE(render(torus).code == 0);
+    const std::string plain = read_file(out_ppm());
+    REQUIRE(render(torus, {"--size", "320x240", "--fov", "60", "--algo", "zbuffer", "--shade", "headlight", "--depth-bits", "16",
+                           "--format", "rgb565", "--painter-key", "farthest"})
+                .code == 0);
+    CHECK(read_file(out_ppm()) == plain);
 }
 
 TEST_CASE("--stats counts every triangle in exactly one bucket for the z-buffer and the sorted algorithms") {
@@ -813,6 +825,59 @@ TEST_CASE("A corrupt, truncated or empty .hbsp is rejected with exit 2 and no im
     }
     const std::string missing = scratch_path("missing.hbsp");
     check_error(render(missing, {"--algo", "bsp-front"}), {missing + ": cannot open"});
+}
+
+TEST_CASE("A .hbsp whose world transform is out of range (checksum intact) is refused, not misread") {
+    // The header's centre and scale are scale * 2^exponent; any int32 exponent must read as a number or
+    // be refused (UBSan saw INT32_MIN - 30 overflow before the exponent was clamped).
+    const std::string good = read_file(torus_blob());
+    using hider::BspHeader;
+    using hider::BspScaled;
+    REQUIRE(good.size() > sizeof(BspHeader));
+    const int32_t exponents[] = {INT32_MIN, INT32_MAX, -5000, 5000};
+    for (int field = 0; field < 4; ++field)  // centre x, y, z, then scale
+        for (const int32_t e : exponents) {
+            std::string bytes = good;
+            BspHeader h;
+            std::memcpy(&h, bytes.data(), sizeof h);
+            BspScaled& v = field < 3 ? h.centre[field] : h.scale;
+            v.exponent = e;
+            if (v.mantissa_q30 == 0) v.mantissa_q30 = 1 << 29;  // a centre of 0 would ignore its exponent
+            std::memcpy(bytes.data(), &h, sizeof h);
+            h.checksum = hider::bsp_checksum(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+            std::memcpy(bytes.data(), &h, sizeof h);
+            const std::string path = write_blob("transform.hbsp", bytes);
+            INFO("field ", field, ", exponent ", e);
+            if (e > 0 || field == 3) {  // an infinite centre or scale, or a scale of 0
+                check_error(render(path, {"--algo", "bsp"}), {path + ": ", "world transform"});
+            } else {  // a centre coordinate of 0: drawn if that still gives the tree's vertices, else refused
+                const Run r = render(path, {"--algo", "bsp"});
+                INFO("stderr: ", r.err);
+                CHECK((r.code == 0 || (r.code == 2 && contains(r.err, "world transform"))));
+            }
+        }
+}
+
+TEST_CASE("A BSP tree refuses a camera outside its fixed world and says how far the world reaches") {
+    // hider-bsp fits the model alone into the world, so unlike the other algorithms (whose world fits
+    // model, eye and target) a tree holds cameras only within 16 half extents of the model's centre.
+    for (const std::string& model : {torus_blob(), kTorus}) {
+        INFO("model ", model);
+        const Run far = render(model, {"--algo", "bsp", "--eye", "0,0,1000", "--target", "0,0,0"});
+        check_error(far, {"eye (0, 0, 1000) lies outside the tree's world", "model units of"});
+        const std::string line = first_line(far.err);
+        const size_t at = line.find("within ");
+        REQUIRE(at != std::string::npos);
+        const double reach = std::stod(line.substr(at + 7));
+        CHECK(reach > 1.0);
+        CHECK(reach < 1000.0);
+        const std::string inside = "0,0," + std::to_string(0.9 * reach), outside = "0,0," + std::to_string(1.1 * reach);
+        CHECK(render(model, {"--algo", "bsp", "--eye", inside, "--target", "0,0,0"}).code == 0);
+        check_error(render(model, {"--algo", "bsp-front", "--eye", outside, "--target", "0,0,0"}), {"outside the tree's world"});
+        check_error(render(model, {"--algo", "bsp", "--eye", "0,0,3", "--target", "0,0," + std::to_string(-2 * reach)}),
+                    {"target (", "outside the tree's world"});
+    }
+    CHECK(render(kTorus, {"--algo", "zbuffer", "--eye", "0,0,1000", "--target", "0,0,0"}).code == 0);  // any camera
 }
 
 TEST_CASE("A .hbsp tree with a non-BSP algorithm is rejected with the algorithms that draw it") {

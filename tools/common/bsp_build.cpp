@@ -490,7 +490,9 @@ BspScaled to_scaled(double v) {
     const double m = std::frexp(v, &e);  // v = m 2^e, 0.5 <= |m| < 1
     return {static_cast<int32_t>(std::llround(m * 1073741824.0)), e};
 }
-double from_scaled(BspScaled s) { return std::ldexp(static_cast<double>(s.mantissa_q30), s.exponent - 30); }
+double from_scaled(BspScaled s) {  // any exponent a blob holds: past +-2000 the value is 0 or inf anyway
+    return std::ldexp(static_cast<double>(s.mantissa_q30), std::clamp(s.exponent, -2000, 2000) - 30);
+}
 
 }  // namespace
 
@@ -764,7 +766,7 @@ bool bsp_model_fit(const ObjModel& model, BspFit& out, std::string& error) {
         error = "model cannot be represented in fixed point (extent " + std::to_string(half * 2) + ")";
         return false;
     }
-    for (int i = 0; i < 3; ++i) out.centre[i] = from_scaled(to_scaled((lo[i] + hi[i]) / 2));
+    for (int i = 0; i < 3; ++i) out.centre[i] = from_scaled(to_scaled(lo[i] / 2 + hi[i] / 2));
     out.scale = from_scaled(to_scaled(kFitHalfExtent / half));
     return true;
 }
@@ -863,7 +865,8 @@ bool bsp_from_obj(const std::string& path, const BspOptions& opt, std::vector<ui
 
 bool bsp_scene(const BspTree& tree, const CameraArgs& args, Scene& out, std::string& error) {
     const BspFit fit = bsp_fit_of(*tree.header);
-    if (!(fit.scale > 0) || !std::isfinite(fit.scale)) {
+    if (!(fit.scale > 0) || !std::isfinite(fit.scale) || !std::isfinite(fit.centre[0]) || !std::isfinite(fit.centre[1]) ||
+        !std::isfinite(fit.centre[2])) {
         error = "the tree's world transform is unusable";
         return false;
     }

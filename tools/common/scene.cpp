@@ -2,9 +2,12 @@
 // that frame the model, and conversion of every value to fixed point exactly once.
 #include "common/scene.hpp"
 
+#include <hider/view.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace hider::tool {
 namespace {
@@ -53,7 +56,7 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
     Vec3d lo = model.vertices[0], hi = model.vertices[0];
     for (const auto& v : model.vertices)
         for (int i = 0; i < 3; ++i) { lo[i] = std::min(lo[i], v[i]); hi[i] = std::max(hi[i], v[i]); }
-    const Vec3d mid{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+    const Vec3d mid{lo[0] / 2 + hi[0] / 2, lo[1] / 2 + hi[1] / 2, lo[2] / 2 + hi[2] / 2};  // no overflow near 1.8e308
     const double radius = length(sub(hi, lo)) / 2;
     if (!std::isfinite(radius)) {
         error = "model coordinates are too large to represent (bounding box is not finite)";
@@ -148,6 +151,19 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
         error = "near plane " + fmt(near) + " is too small for a scene of extent " + fmt(half * 2) +
                 " (hider needs near >= " + fmt(min_near / scale) + ")";
         return false;
+    }
+    if (args.fit_centre && args.fit_scale) {  // a world fixed before the camera (a BSP tree's): the camera must fit it
+        const double limit = kWorldLimitRaw / 65536.0 / scale;  // model units from the world's centre, per axis
+        const std::pair<const char*, const Vec3d*> points[] = {{"eye", &eye}, {"target", &target}};
+        for (const auto& [what, p] : points)
+            for (int i = 0; i < 3; ++i)
+                if (!(std::fabs((*p)[i] - centre[i]) < limit)) {
+                    error = std::string(what) + " (" + fmt((*p)[0]) + ", " + fmt((*p)[1]) + ", " + fmt((*p)[2]) +
+                            ") lies outside the tree's world: eye and target must lie within " + fmt(limit) +
+                            " model units of (" + fmt(centre[0]) + ", " + fmt(centre[1]) + ", " + fmt(centre[2]) +
+                            ") on each axis";
+                    return false;
+                }
     }
     Scene s;
     s.width = args.width;

@@ -213,7 +213,15 @@ int main(int argc, char** argv) {
             opt.split_pool = static_cast<size_t>(n);
         } else if (a == "--stats") stats = true;
         else if (a == "--strict") strict = true;
-        else if (a == "-h" || a == "--help") { std::cout << kUsage << "algorithms: " << algo_names() << "\n"; return 0; }
+        else if (a == "-h" || a == "--help") {
+            const RenderOptions d;
+            const CameraArgs c;
+            std::cout << kUsage << "algorithms: " << algo_names() << "\n"
+                      << "defaults: --size " << c.width << 'x' << c.height << " --fov " << c.fov_deg
+                      << " --algo zbuffer --shade headlight --depth-bits " << d.depth_bits
+                      << " --format rgb565 --painter-key farthest, the whole frame at once, the camera framing the model\n";
+            return 0;
+        }
         else if (!a.empty() && a[0] == '-') fail("unknown option '" + a + "'\n" + kUsage);
         else if (model_path.empty()) model_path = a;
         else fail("more than one model given ('" + model_path + "', '" + a + "')");
