@@ -657,6 +657,13 @@ TEST_CASE("--stats counts every triangle in exactly one bucket for the z-buffer 
         INFO(algo, " stdout: ", r.out);
         CHECK(contains(r.out, "triangles 1000 drawn 444 culled 554 degenerate 0 outside 2 "));
     }
+    // Ray casting has no buckets to fill: it says so instead of printing "drawn 0".
+    const Run ray = render(torus, {"--algo", "raycast", "--size", "64x48", "--stats"});
+    INFO("raycast stdout: ", ray.out);
+    CHECK(ray.code == 0);
+    CHECK(contains(ray.out, "triangles 1000 (ray cast: no drawn, culled or clipped counts; rays below)\n"));
+    CHECK_FALSE(contains(ray.out, " drawn "));
+    CHECK(contains(ray.out, "\nrays 3072 hits "));  // one ray per pixel
     // A scene with zero-area and clipped triangles: the buckets still add up to the triangles in.
     const std::string model = write_model("buckets.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 0 0 5\nv 1 0 5\nv 0 1 5\n"
                                                          "f 1 2 3\nf 1 2 4\nf 3 2 1\nf 5 6 7\n");

@@ -266,8 +266,11 @@ int main(int argc, char** argv) {
     write_image(out_path, result);
     if (stats) {
         const FrameStats& s = result.stats;
-        std::printf("triangles %u drawn %u culled %u degenerate %u outside %u clipped %u\n", s.triangles_in,
-                    s.triangles_drawn, s.triangles_culled, s.triangles_degenerate, s.triangles_outside, s.triangles_clipped);
+        if (opt.algo == Algo::raycast)  // rays meet triangles through the BVH: none is set up, culled or clipped
+            std::printf("triangles %u (ray cast: no drawn, culled or clipped counts; rays below)\n", s.triangles_in);
+        else
+            std::printf("triangles %u drawn %u culled %u degenerate %u outside %u clipped %u\n", s.triangles_in,
+                        s.triangles_drawn, s.triangles_culled, s.triangles_degenerate, s.triangles_outside, s.triangles_clipped);
         std::printf("fragments %llu written %llu covered %u overdraw %.2f\n", static_cast<unsigned long long>(s.fragments),
                     static_cast<unsigned long long>(s.pixels_written), result.pixels_covered,
                     result.pixels_covered == 0 ? 0.0 : static_cast<double>(s.pixels_written) / result.pixels_covered);
