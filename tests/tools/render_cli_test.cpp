@@ -887,6 +887,24 @@ TEST_CASE("A BSP tree refuses a camera outside its fixed world and says how far 
     CHECK(render(kTorus, {"--algo", "zbuffer", "--eye", "0,0,1000", "--target", "0,0,0"}).code == 0);  // any camera
 }
 
+TEST_CASE("hider-bsp builds a model whose coordinates are near the largest double, and the tree draws it") {
+    // The tree's world is the model's alone; the default eye of a camera nobody asked for (a blob holds
+    // none) overflowed to inf and the build failed with "give --eye", an option a blob refuses.
+    const std::string model =
+        write_model("far_away.obj", "v 1.7e308 1.7e308 1.79e308\nv 1.6e308 1.7e308 1.79e308\nv 1.7e308 1.6e308 1.79e308\nf 1 2 3\n");
+    const std::string tree = scratch_path("far_away.hbsp");
+    const Run built = bsp_tool(model, tree);
+    INFO("stderr: ", built.err);
+    REQUIRE(built.code == 0);
+    const Run drawn = render(tree, {"--algo", "bsp", "--size", "64x48", "--eye", "1.67e308,1.67e308,1.795e308", "--target",
+                                    "1.67e308,1.67e308,1.79e308"});
+    INFO("render stderr: ", drawn.err);
+    REQUIRE(drawn.code == 0);
+    const Image img = read_image(out_ppm(), 64, 48);
+    REQUIRE(img.ok);
+    CHECK(count_pixels(img, 0x000000u) < 64 * 48);  // the triangle is in view
+}
+
 TEST_CASE("A .hbsp tree with a non-BSP algorithm is rejected with the algorithms that draw it") {
     check_error(render(torus_blob(), {"--algo", "zbuffer"}), {torus_blob() + ": ", "--algo bsp or bsp-front"});
 }

@@ -847,7 +847,12 @@ bool bsp_from_obj(const std::string& path, const BspOptions& opt, std::vector<ui
     CameraArgs cam;
     cam.fit_centre = fit.centre;
     cam.fit_scale = fit.scale;
-    cam.width = cam.height = 1;  // the camera is irrelevant here: only the world positions are kept
+    // The camera is irrelevant here (only the world positions are kept): one inside the world, so that no
+    // model the world holds fails for want of a default eye (which overflows for coordinates near 1.8e308).
+    cam.width = cam.height = 1;
+    cam.target = fit.centre;
+    const double half = kFitHalfExtent / fit.scale;  // a half extent of the model, towards the origin
+    cam.eye = Vec3d{fit.centre[0], fit.centre[1], fit.centre[2] + (fit.centre[2] > 0 ? -half : half)};
     Scene scene;
     if (!build_scene(model, cam, scene, error)) {
         error = path + ": " + error;
