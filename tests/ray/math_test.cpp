@@ -128,6 +128,27 @@ TEST_CASE("reflected directions match r = d - 2 (d.n) n within 3 LSB") {
         const Vec3q30 along{Q30::from_raw(Q30::kOne), Q30::from_raw(0), Q30::from_raw(0)};
         CHECK(reflect(along, up) == along);
     }
+    SUBCASE("head-on along an axis with components 2^30 + 1 (unit_q30 gives them): 2 (d.n) n reaches 2^31") {
+        // Before the 64-bit subtraction this overflowed int32 (UBSan: a mirror sphere seen from -15 on x).
+        for (int axis = 0; axis < 3; ++axis)
+            for (int32_t dc : {Q30::kOne - 2, Q30::kOne - 1, Q30::kOne, Q30::kOne + 1, Q30::kOne + 2})
+                for (int32_t nc : {Q30::kOne - 2, Q30::kOne, Q30::kOne + 1, Q30::kOne + 2})
+                    for (int sign : {1, -1}) {
+                        int32_t dv[3] = {0, 0, 0}, nv[3] = {0, 0, 0};
+                        dv[axis] = -sign * dc;
+                        nv[axis] = sign * nc;
+                        const Vec3q30 d{Q30::from_raw(dv[0]), Q30::from_raw(dv[1]), Q30::from_raw(dv[2])};
+                        const Vec3q30 n{Q30::from_raw(nv[0]), Q30::from_raw(nv[1]), Q30::from_raw(nv[2])};
+                        const Vec3q30 r = reflect(d, n);
+                        const double dn = static_cast<double>(dv[axis]) * nv[axis] / 1073741824.0;
+                        const double exact = dv[axis] - 2 * dn * nv[axis] / 1073741824.0;  // raw Q30
+                        const int32_t rv[3] = {r.x.raw(), r.y.raw(), r.z.raw()};
+                        INFO("axis ", axis, " d ", dv[axis], " n ", nv[axis]);
+                        CHECK(std::fabs(rv[axis] - exact) <= 3);
+                        CHECK(rv[(axis + 1) % 3] == 0);
+                        CHECK(rv[(axis + 2) % 3] == 0);
+                    }
+    }
 }
 
 TEST_CASE("mixed dot products are exact and point_along rounds to nearest") {

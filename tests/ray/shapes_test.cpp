@@ -253,5 +253,37 @@ TEST_CASE("ray-plane roots agree with double within 1 + (1 + t 2^-30) / |n.d| LS
         // A hit outside the world cube is a miss (the plane is clipped to |coordinate| < 2^13).
         const Vec3q30 shallow = unit(1, -1.0 / 10000, 0);
         CHECK_FALSE(intersect_plane({{Q16::from_int(0), Q16::from_int(0), Q16::from_int(0)}, shallow}, ground, 16, INT32_MAX, t, front));
+        // ... also when the hit lies so far out that p + t d leaves int32 (t = 25,000 units from z = -8,000:
+        // z about -33,000 units, beyond Q16). It summed in int32 before (UBSan: signed overflow).
+        const Vec3q30 grazing = unit(0, -1.0 / 25000, -1);
+        const Vec3q16 far_origin{Q16::from_int(0), Q16::from_int(0), Q16::from_int(-8000)};
+        CHECK_FALSE(intersect_plane({far_origin, grazing}, ground, 16, INT32_MAX, t, front));
+        const Vec3q30 steeper = unit(0, -1.0 / 100, -1);  // meets the ground 100 units on: a hit
+        REQUIRE(intersect_plane({far_origin, steeper}, ground, 16, INT32_MAX, t, front));
+        CHECK(std::abs(t - Q16::from_int(100).raw()) <= Q16::from_int(1).raw());
     }
+}
+
+TEST_CASE("along_in_world equals in_world(point_along) wherever point_along fits, and is false past int32") {
+    std::mt19937 rng(11);
+    auto raw = [&](int32_t lim) { return static_cast<int32_t>(rng() % (2u * static_cast<uint32_t>(lim) + 1u)) - lim; };
+    long inside = 0;
+    for (int i = 0; i < 100000; ++i) {
+        const Vec3q16 p{Q16::from_raw(raw(kRayWorldLimitRaw - 1)), Q16::from_raw(raw(kRayWorldLimitRaw - 1)),
+                        Q16::from_raw(raw(kRayWorldLimitRaw - 1))};
+        Vec3q30 d{};
+        if (!unit_q30(raw(1000000), raw(1000000), raw(1000000), d)) continue;
+        const int32_t t = static_cast<int32_t>(rng() % (uint32_t{1} << 30));  // |t d| < 2^30: p + t d fits int32
+        const bool expect = in_world(point_along(p, t, d));
+        CHECK(along_in_world(p, t, d) == expect);
+        inside += expect;
+    }
+    MESSAGE(inside << " of 100000 points inside");
+    CHECK(inside > 1000);
+    CHECK(inside < 99000);
+    const Vec3q30 axis{Q30::from_raw(0), Q30::from_raw(0), Q30::from_raw(-Q30::kOne - 1)};
+    const Vec3q16 edge{Q16::from_int(0), Q16::from_int(0), Q16::from_raw(-kRayWorldLimitRaw + 1)};
+    CHECK_FALSE(along_in_world(edge, INT32_MAX, axis));
+    CHECK_FALSE(along_in_world(edge, 1, axis));
+    CHECK(along_in_world(edge, 0, axis));
 }

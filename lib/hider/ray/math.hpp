@@ -129,11 +129,13 @@ constexpr Vec3q16 point_along(const Vec3q16& p, int32_t t_q16, const Vec3q30& d)
             Q16::from_raw(p.z.raw() + round_q46_to_q16(mul_wide(t_q16, d.z.raw())))};
 }
 
-/// Mirror direction r = d - 2 (d.n) n for a unit normal n (Whitted 1980), Q30, d.n rounded once.
+/// Mirror direction r = d - 2 (d.n) n for a unit normal n (Whitted 1980), Q30, d.n rounded once. The
+/// product 2 (d.n) n reaches 2^31 for d = -n along an axis (a unit component may be 2^30 + 1): it is
+/// subtracted in 64 bits, and each component of r, a unit vector's, fits again.
 constexpr Vec3q30 reflect(const Vec3q30& d, const Vec3q30& n) {
     const int32_t dn_q30 = static_cast<int32_t>((dot_q60(d, n) + (int64_t{1} << 29)) >> 30);
     auto comp = [dn_q30](Q30 dc, Q30 nc) {
-        return Q30::from_raw(dc.raw() - static_cast<int32_t>((mul_wide(dn_q30, nc.raw()) + (int64_t{1} << 28)) >> 29));
+        return Q30::from_raw(static_cast<int32_t>(dc.raw() - ((mul_wide(dn_q30, nc.raw()) + (int64_t{1} << 28)) >> 29)));
     };
     return {comp(d.x, n.x), comp(d.y, n.y), comp(d.z, n.z)};
 }

@@ -85,7 +85,7 @@ inline bool intersect_plane(const Ray& ray, const Plane& pl, int32_t t_min, int3
     if (t_max <= 0 || anum >= int64_t{t_max} * aden) return false;
     const int64_t t = div_round(anum, aden);
     if (t <= t_min || t >= t_max) return false;
-    if (!in_world(point_along(ray.origin, static_cast<int32_t>(t), ray.dir))) return false;
+    if (!along_in_world(ray.origin, static_cast<int32_t>(t), ray.dir)) return false;
     t_out = static_cast<int32_t>(t);
     front = den < 0;
     return true;
