@@ -241,9 +241,11 @@ private:
         const KernelSetup s = kernel_setup(a, b, c, io_);
         bool continues = false;
         if (s == KernelSetup::kernel) {
-            // A piece may start in a later band than its triangle's bin: drawn in the band of its top row.
-            st_.triangles_drawn += spare_.top >= count_from_ && spare_.top < band_.y1;
-            continues = run_set_up(spare_, tri, area);
+            // A piece may start in a later band than its triangle's bin: counted as drawn in the band of
+            // its top row, so it continues to there even when it has no row (the whole frame counts it).
+            const bool below = spare_.top >= band_.y1;
+            st_.triangles_drawn += spare_.top >= count_from_ && !below;
+            continues = run_set_up(spare_, tri, area) || below;
         } else if (s == KernelSetup::generic) {
             continues = draw_generic(a, b, c, area, tri);
         }
@@ -267,7 +269,7 @@ private:
                                                 int32_t area, uint16_t tri) {
         draw_raster<false>(a, b, c, area, tri, band_, band_bb_, false, mesh_, shading_, opt_, st_);
         const int32_t y_max = max<int32_t>(a.y, max<int32_t>(b.y, c.y));
-        return ((y_max - band_bb_.y_origin + kSubpixel - 1) >> kSubpixelBits) > band_.y1;
+        return ((y_max - band_bb_.y_origin) >> kSubpixelBits) >= band_.y1;  // its box holds a later band's centre
     }
 
     const View& view_;

@@ -43,7 +43,9 @@ __attribute__((noinline)) void draw_bands_generic(const View& view, const Mesh& 
                 if (area == 0 || (opt.cull && area > 0)) return;
                 draw_raster<false>(pa, pb, pc, area, tri, band, band_bb, false, mesh, shading, opt, st);
                 const int32_t y_max = max<int32_t>(pa.y, max<int32_t>(pb.y, pc.y));
-                continues = continues || ((y_max - band_bb.y_origin + kSubpixel - 1) >> kSubpixelBits) > y1;
+                // Its box holds a centre of a later band (where it is counted as drawn when its first
+                // row lies there, even if its edges exclude every centre).
+                continues = continues || ((y_max - band_bb.y_origin) >> kSubpixelBits) >= y1;
             });
             if (!continues) continue;
             ++out.set_up_again;
