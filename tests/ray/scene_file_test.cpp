@@ -60,6 +60,12 @@ TEST_CASE("every malformed scene line is reported with file, line and what is wr
         {c + "sphere 9000 0 0 1\n", "t.txt:2: ", "does not fit the world cube"},
         {c + "sphere 8191.5 0 0 1\n", "t.txt:2: ", "does not fit the world cube"},
         {c + "plane 0 1 0 20000\n", "t.txt:2: ", "outside the world (|offset| < 16384)"},
+        // Values that fail only once rounded to Q16 (lib/'s validate_scene() would refuse the scene
+        // with no line), and a normal whose squares overflow double:
+        {c + "sphere 8191.5 0 0 0.4999999\n", "t.txt:2: ", "does not fit the world cube"},
+        {c + "plane 0 1 0 16383.9999999\n", "t.txt:2: ", "outside the world (|offset| < 16384)"},
+        {c + "plane 1e-300 0 0 1\n", "t.txt:2: ", "plane: offset 1e+300 (along the unit normal) outside the world"},
+        {c + "max-distance 1e-9\n", "t.txt:2: ", "max-distance: 1e-09 is below the fixed-point resolution"},
         {c + "triangle 0 0 0 1 0 0 0 1e5 0\n", "t.txt:2: ", "triangle: vertex 3 y 100000 is outside the world cube"},
         {c + "light point 0 9000 0\n", "t.txt:2: ", "light: position y 9000 is outside the world cube"},
         {c + "light directional 0 0 0\n", "t.txt:2: ", "light: direction is the zero vector"},
@@ -148,6 +154,18 @@ TEST_CASE("a good scene file loads every value exactly") {
     CHECK(s.lights[0].color == Rgb{255, 255, 128});
     CHECK(s.lights[1].direction.y == Q30::from_raw(Q30::kOne));
     CHECK(s.sphere_bound.radius == Q16::from_ratio(1, 2));
+}
+
+TEST_CASE("values at the edge of the fixed-point range load, and a huge normal is still a direction") {
+    tool::RayScene s;
+    // 8191 + 0.99999 rounds to 2^29 - 1 raw: inside; a normal whose squares overflow double.
+    REQUIRE(parse_error(std::string(kCamera) + "sphere 8191 0 0 0.99999\nplane 1e300 0 0 5e299\nmax-distance 1e-4\n", &s).empty());
+    REQUIRE(s.spheres.size() == 1);
+    CHECK(s.spheres[0].centre.x.raw() + s.spheres[0].radius.raw() == (int32_t{1} << 29) - 1);
+    REQUIRE(s.planes.size() == 1);
+    CHECK(s.planes[0].normal.x == Q30::from_raw(Q30::kOne));
+    CHECK(s.planes[0].offset == Q16::from_ratio(1, 2));
+    CHECK(s.max_distance.raw() == 7);  // 1e-4 x 65536 = 6.55
 }
 
 namespace {

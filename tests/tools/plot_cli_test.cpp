@@ -292,6 +292,7 @@ TEST_CASE("hider-plot: bad options are rejected with a plain reason") {
     check_error(plot({"--function", "sinc", "--eye", "0,5,0", "--target", "0,0,0", "--up", "0,1,0"}), {"up vector is parallel"});
     check_error(plot({"--function", "sinc", "--eye", "9000,0,0"}), {"eye", "out of range"});
     check_error(plot({"--function", "sinc", "--height", "1e9"}), {"--height 1e9 out of range"});
+    check_error(plot({"--function", "sinc", "--height", "1000"}), {"--height 1000 out of range (-1000 < S < 1000)"});
     check_error(plot({"--function", "sinc", "--shade", "rainbow"}), {"unknown shade 'rainbow'"});
     check_error(plot({"--function", "sinc", "--frobnicate"}), {"unknown argument '--frobnicate'"}, Usage::yes);
     check_error(run({"--function", "sinc"}), {"no output given"}, Usage::yes);

@@ -915,3 +915,17 @@ TEST_CASE("hider-bsp builds a model whose coordinates are near the largest doubl
 TEST_CASE("A .hbsp tree with a non-BSP algorithm is rejected with the algorithms that draw it") {
     check_error(render(torus_blob(), {"--algo", "zbuffer"}), {torus_blob() + ": ", "--algo bsp or bsp-front"});
 }
+
+TEST_CASE("generated scene names: a known kind with a bad number names the field and its range") {
+    hider::tool::gen::GenScene g;
+    std::string why;
+    CHECK(hider::tool::gen::by_name("dense-1-300", g, why));
+    CHECK_FALSE(hider::tool::gen::by_name("dense-1-0", g, why));
+    CHECK(why == "scene 'dense-1-0': '0' (field 2) is not a whole number in 1..100000");
+    CHECK_FALSE(hider::tool::gen::by_name("grid-1-2-2000", g, why));
+    CHECK(why == "scene 'grid-1-2-2000': '2000' (field 3) is not a whole number in 0..1000");
+    CHECK_FALSE(hider::tool::gen::by_name("soup-99999999999999999999-3", g, why));  // past long: ERANGE
+    CHECK(why.find("'99999999999999999999' (field 1) is not a whole number") != std::string::npos);
+    CHECK_FALSE(hider::tool::gen::by_name("dense-1", g, why));  // a field missing: the patterns
+    CHECK(why.find("unknown scene 'dense-1' (known: soup-SEED-N, dense-SEED-N") == 0);
+}

@@ -2,6 +2,7 @@
 #include "common/gen_scenes.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <map>
 #include <ostream>
@@ -336,11 +337,17 @@ bool by_name(const std::string& name, GenScene& out, std::string& why) {
     std::vector<std::string> parts;
     std::istringstream in(name);
     for (std::string p; std::getline(in, p, '-');) parts.push_back(p);
+    std::string bad;  // the first number of a known kind that is malformed or out of its range
     auto num = [&](size_t i, long lo, long hi, long& v) {
         if (i >= parts.size()) return false;
         char* end = nullptr;
+        errno = 0;
         v = std::strtol(parts[i].c_str(), &end, 10);
-        return !parts[i].empty() && *end == '\0' && v >= lo && v <= hi;
+        const bool ok = !parts[i].empty() && *end == '\0' && errno == 0 && v >= lo && v <= hi;
+        if (!ok && bad.empty())
+            bad = "'" + parts[i] + "' (field " + std::to_string(i) + ") is not a whole number in " + std::to_string(lo) +
+                  ".." + std::to_string(hi);
+        return ok;
     };
     long a = 0, b = 0, c = 0;
     const std::string& k = parts.empty() ? name : parts[0];
@@ -362,7 +369,8 @@ bool by_name(const std::string& name, GenScene& out, std::string& why) {
     else if (k == "bigface" && n == 2 && num(1, 3, 60000, a)) out = big_face(int(a));
     else if (k == "star" && n == 3 && num(1, 0, 1L << 31, a) && num(2, 3, 60000, b)) out = star_face(uint32_t(a), int(b));
     else {
-        why = "unknown scene '" + name + "' (known: " + name_patterns() + ")";
+        why = bad.empty() ? "unknown scene '" + name + "' (known: " + name_patterns() + ")"
+                          : "scene '" + name + "': " + bad;
         return false;
     }
     return true;

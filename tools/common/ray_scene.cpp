@@ -109,13 +109,12 @@ bool world_point(const std::string& what, const double (&v)[3], Vec3q16& out, st
 
 /// A direction as a unit Q30 vector; false for the zero vector.
 bool unit_direction(const std::string& what, const double (&v)[3], Vec3q30& out, std::string& error) {
-    const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (!(len > 0) || !std::isfinite(len)) {
+    // Scaled to 2^29 for the largest component, then made unit in lib/'s own arithmetic.
+    const double m = std::fmax(std::fabs(v[0]), std::fmax(std::fabs(v[1]), std::fabs(v[2])));
+    if (!(m > 0) || !std::isfinite(m)) {
         error = what + " is the zero vector";
         return false;
     }
-    // Scaled to 2^29 for the largest component, then made unit in lib/'s own arithmetic.
-    const double m = std::fmax(std::fabs(v[0]), std::fmax(std::fabs(v[1]), std::fabs(v[2])));
     const int32_t c[3] = {static_cast<int32_t>(std::lround(v[0] / m * 536870912.0)),
                           static_cast<int32_t>(std::lround(v[1] / m * 536870912.0)),
                           static_cast<int32_t>(std::lround(v[2] / m * 536870912.0))};
@@ -223,8 +222,13 @@ bool read_sphere(Statement& st, RayScene& s, std::string& error) {
         error = "sphere: radius must be > 0 (got " + fmt(r) + ")";
         return false;
     }
+    // The test lib/'s validate_scene() applies, on the values rounded to Q16 (so that a value that only
+    // fails once rounded is reported here, with its line).
+    auto fits = [r](double v) {
+        return std::fabs(std::nearbyint(v * 65536.0)) + static_cast<double>(std::llround(r * 65536.0)) < ray::kRayWorldLimitRaw;
+    };
     for (double v : c)
-        if (!(std::fabs(v) + r < kWorld)) {
+        if (!(std::fabs(v) + r < kWorld) || !fits(v)) {
             error = "sphere: centre " + fmt(v) + " with radius " + fmt(r) + " does not fit the world cube (|coordinate| + radius < 8192)";
             return false;
         }
@@ -243,15 +247,19 @@ bool read_sphere(Statement& st, RayScene& s, std::string& error) {
 bool read_plane(Statement& st, RayScene& s, std::string& error) {
     double n[3], d = 0;
     if (!st.vec("normal", n, error) || !st.number("offset", d, error)) return false;
-    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (!(len > 0)) {
+    // |n|, from the normal scaled by its largest component when its squares overflow (1e300) or vanish.
+    const double m = std::fmax(std::fabs(n[0]), std::fmax(std::fabs(n[1]), std::fabs(n[2])));
+    if (!(m > 0)) {
         error = "plane: normal is the zero vector";
         return false;
     }
+    double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!std::isfinite(len) || !(len > 0))
+        len = m * std::sqrt((n[0] / m) * (n[0] / m) + (n[1] / m) * (n[1] / m) + (n[2] / m) * (n[2] / m));
     ray::Plane pl{};
     if (!unit_direction("plane: normal", n, pl.normal, error)) return false;
     const double offset = d / len;  // n.p = d with n scaled to unit length
-    if (!(std::fabs(offset) < 2 * kWorld)) {
+    if (!(std::fabs(offset) < 2 * kWorld) || std::llabs(std::llround(offset * 65536)) >= ray::kMaxPlaneOffsetRaw) {  // validate_scene()'s test
         error = "plane: offset " + fmt(offset) + " (along the unit normal) outside the world (|offset| < 16384)";
         return false;
     }
@@ -409,6 +417,10 @@ bool read_setting(Statement& st, RayScene& s, std::string& error) {
         return false;
     }
     s.max_distance = Q16::from_raw(static_cast<int32_t>(std::lround(v * 65536)));
+    if (s.max_distance.raw() == 0) {
+        error = "max-distance: " + fmt(v) + " is below the fixed-point resolution (2^-16)";
+        return false;
+    }
     return st.end(error);
 }
 

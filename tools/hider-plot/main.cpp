@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
         else if (a == "--height") {
             const std::string v = value();
             if (!tool::parse_double(v, scale)) fail("--height: bad number '" + v + "'");
-            if (!(scale > -1000 && scale < 1000)) fail("--height " + v + " out of range (-1000..1000)");
+            if (!(scale > -1000 && scale < 1000)) fail("--height " + v + " out of range (-1000 < S < 1000)");
         } else if (a == "--mesh") opt.mesh = true;
         else if (a == "--mesh-step") opt.mesh_step = static_cast<int>(parse_count(a, value(), 1, horizon::SurfaceProjection::kMaxCount));
         else if (a == "--shade") {
