@@ -83,13 +83,17 @@ std::vector<typename Format::Pixel> binned(const tool::Scene& s, const Projected
     return out;
 }
 
+/// The bands of `heights` rows (those up to the frame's), each with 0, 2 and 255 carried slots, against the
+/// whole frame: the same bytes and statistics. Returns the set-ups repeated (BinnedStats::set_up_again).
 template <class Format, class Depth>
-void check_model(const std::string& name, const tool::Scene& s, bool cull, Shade shade) {
+long check_bands(const std::string& name, const tool::Scene& s, bool cull, Shade shade, const std::vector<int32_t>& heights) {
     const Projected p = project(s, cull, shade);
     FrameStats full_st;
     const auto full = whole_frame<Format, Depth>(s, p, full_st);
     REQUIRE(full_st.ok());
-    for (int32_t rows : {1, 3, 8, 61, s.height})
+    long set_up_again = 0;
+    for (int32_t rows : heights) {
+        if (rows > s.height) continue;
         for (size_t slots : {size_t{0}, size_t{2}, size_t{255}}) {
             CAPTURE(name);
             CAPTURE(rows);
@@ -106,7 +110,15 @@ void check_model(const std::string& name, const tool::Scene& s, bool cull, Shade
             CHECK(st.triangles_outside == full_st.triangles_outside);
             CHECK(bs.carried_high_water <= slots);
             if (slots == 0) CHECK(bs.carried == 0);
+            set_up_again += bs.set_up_again;
         }
+    }
+    return set_up_again;
+}
+
+template <class Format, class Depth>
+void check_model(const std::string& name, const tool::Scene& s, bool cull, Shade shade) {
+    (void)check_bands<Format, Depth>(name, s, cull, shade, {1, 3, 8, 61, s.height});
 }
 
 tool::CameraArgs torus_view() {
@@ -225,37 +237,6 @@ TEST_CASE("draw_zbuffer_binned refuses scratch too small, big meshes and a sink 
     }
 }
 
-namespace {
-
-/// check_model() for small frames: band heights up to the frame's.
-template <class Format, class Depth>
-void check_soup(const std::string& name, const tool::Scene& s, bool cull, Shade shade, long& set_up_again) {
-    const Projected p = project(s, cull, shade);
-    FrameStats full_st;
-    const auto full = whole_frame<Format, Depth>(s, p, full_st);
-    REQUIRE(full_st.ok());
-    for (int32_t rows : {1, 2, 3, 5, s.height}) {
-        if (rows > s.height) continue;
-        for (size_t slots : {size_t{0}, size_t{2}, size_t{255}}) {
-            CAPTURE(name);
-            CAPTURE(rows);
-            CAPTURE(slots);
-            FrameStats st;
-            BinnedStats bs;
-            const auto got = binned<Format, Depth>(s, p, rows, slots, st, bs);
-            CHECK(st.ok());
-            CHECK(same_bytes(got, full));
-            CHECK(st.triangles_drawn == full_st.triangles_drawn);
-            CHECK(st.triangles_culled == full_st.triangles_culled);
-            CHECK(st.triangles_clipped == full_st.triangles_clipped);
-            CHECK(st.triangles_outside == full_st.triangles_outside);
-            set_up_again += bs.set_up_again;
-        }
-    }
-}
-
-}  // namespace
-
 TEST_CASE("binned bands give the whole frame's bytes and counts on random soups around the eye, in tiny frames") {
     // Eyes inside the soup (or on one of its vertices) clip many triangles into pieces; tiny frames and
     // 1- to 5-row bands put pieces with no pixel row (their box holds a centre their edges exclude)
@@ -295,9 +276,10 @@ TEST_CASE("binned bands give the whole frame's bytes and counts on random soups 
         if (!tool::build_scene(m, cam, s, why)) continue;  // e.g. the eye on the target
         const std::string name = "soup " + std::to_string(seed);
         const bool cull = (next() & 1) != 0;
-        check_soup<Rgb565Format, uint16_t>(name, s, cull, Shade::headlight, set_up_again);  // kernel set-ups
-        check_soup<Rgb565Format, uint32_t>(name, s, cull, Shade::id, set_up_again);         // TriangleRaster
-        check_soup<Grey8Format, uint32_t>(name, s, !cull, Shade::depth, set_up_again);
+        const std::vector<int32_t> heights = {1, 2, 3, 5, s.height};
+        set_up_again += check_bands<Rgb565Format, uint16_t>(name, s, cull, Shade::headlight, heights);  // kernel set-ups
+        set_up_again += check_bands<Rgb565Format, uint32_t>(name, s, cull, Shade::id, heights);         // TriangleRaster
+        set_up_again += check_bands<Grey8Format, uint32_t>(name, s, !cull, Shade::depth, heights);
         FrameStats st;
         (void)whole_frame<Rgb565Format, uint16_t>(s, project(s, false, Shade::headlight), st);
         clipped += st.triangles_clipped;
