@@ -22,7 +22,8 @@ struct NewellStats {
     uint32_t moves = 0;             ///< Q moved before P
     uint32_t splits = 0;            ///< polygons cut in two by another's plane
     uint32_t cycles = 0;            ///< cycles of overlap found (each broken by a cut when possible)
-    uint32_t unresolved = 0;        ///< pairs left in the order found because no cut was possible
+    uint32_t unresolved = 0;        ///< pairs left in the order found because no cut was possible: a cycle
+                                    ///< of slivers decided below the grid (status ok), or the limits below
     uint32_t dropped = 0;           ///< cuts not made because the polygon or cut pool was full
     uint32_t too_deep = 0;          ///< cuts not made because a piece already had kMaxPieceCuts cuts
     bool budget_exhausted = false;  ///< the pair-test budget ran out; the rest went in depth order
