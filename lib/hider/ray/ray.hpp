@@ -47,10 +47,11 @@ constexpr bool in_world(const Vec3q16& p) {
 /// Whether point_along(p, t, d) lies inside the world cube, for any t: each coordinate is summed in 64
 /// bits, so a far hit (a grazing ray meeting a plane thousands of units out) is a miss, not an overflow.
 constexpr bool along_in_world(const Vec3q16& p, int32_t t_q16, const Vec3q30& d) {
+    constexpr int64_t one = int64_t{1} << 30;
+    constexpr int64_t lo = (1 - int64_t{kRayWorldLimitRaw}) * one, span = (2 * int64_t{kRayWorldLimitRaw} - 1) * one;
     const int32_t pc[3] = {p.x.raw(), p.y.raw(), p.z.raw()}, dc[3] = {d.x.raw(), d.y.raw(), d.z.raw()};
     for (int k = 0; k < 3; ++k) {  // v = p + round(t d) in Q46 (below 2^62): inside when -lim < v >> 30 < lim
-        const int64_t v = int64_t{pc[k]} * (int64_t{1} << 30) + mul_wide(t_q16, dc[k]) + (int64_t{1} << 29);
-        constexpr int64_t lo = (int64_t{1} - kRayWorldLimitRaw) * (int64_t{1} << 30), span = (int64_t{2} * kRayWorldLimitRaw - 1) << 30;
+        const int64_t v = int64_t{pc[k]} * one + mul_wide(t_q16, dc[k]) + one / 2;
         if (static_cast<uint64_t>(v - lo) >= static_cast<uint64_t>(span)) return false;
     }
     return true;
