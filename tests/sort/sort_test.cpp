@@ -4,8 +4,11 @@
 #include <hider/sort/newell.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <doctest/doctest.h>
@@ -349,4 +352,73 @@ TEST_CASE("newell_order refuses an order list or scratch smaller than the polygo
     NewellScratch short_chain = scratch;
     short_chain.chain = {chain.data(), 9};
     CHECK(newell_order(view, polys, cuts, short_chain, order, ns) == Status::invalid_argument);
+}
+
+TEST_CASE("Newell with a full pool never writes past a chain of N entries, and orders as with room to spare") {
+    // Three bars lying each over the next (a cycle of 6 triangles), with no room for a cut: a chain of
+    // moves can then run through every polygon and meet its first candidate again, N + 1 entries. Found
+    // by the adversarial hunt: chain[N] was written (ASan: heap-buffer-overflow in newell.hpp).
+    tool::ObjModel m;
+    for (int k = 0; k < 3; ++k) {
+        const double th = (90.0 + 120.0 * k) * 3.14159265358979323846 / 180.0, dx = std::cos(th), dy = std::sin(th);
+        const double nx = -dy, ny = dx;
+        auto at = [&](double t, double w) {
+            return std::array<double, 3>{0.3 * nx + t * dx + w * nx, 0.3 * ny + t * dy + w * ny, 0.3 * t - 0.6 * w};
+        };
+        const int32_t base = static_cast<int32_t>(m.vertices.size());
+        for (auto [t, w] : {std::pair{-1.0, 0.12}, {-1.0, -0.12}, {1.0, 0.12}, {1.0, -0.12}}) m.vertices.push_back(at(t, w));
+        m.faces.push_back({{base, base + 1, base + 3}, static_cast<uint32_t>(2 * k + 1), 1});
+        m.faces.push_back({{base, base + 3, base + 2}, static_cast<uint32_t>(2 * k + 2), 1});
+    }
+    tool::CameraArgs cam;
+    cam.eye = tool::Vec3d{0, 0, 4};
+    cam.target = tool::Vec3d{0, 0, 0};
+    tool::Scene s;
+    std::string why;
+    REQUIRE_MESSAGE(tool::build_scene(m, cam, s, why), why);
+    View view;
+    REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
+    std::vector<ScreenVertex> verts(s.positions.size());
+    REQUIRE(project_vertices(view, s.mesh().positions, {verts.data(), verts.size()}) == Status::ok);
+    struct Run {
+        Status status;
+        NewellStats ns;
+        std::vector<uint32_t> order;
+        bool chain_tail_intact;
+    };
+    auto run = [&](size_t spare, size_t chain_len) {
+        const size_t cap = 6 + spare;
+        std::vector<ScreenPoly> store(cap);
+        BoundedList<ScreenPoly> polys(store.data(), cap);
+        FrameStats st;
+        build_polys(view, s.mesh(), {verts.data(), verts.size()}, false, polys, st);
+        REQUIRE(polys.size() == 6);
+        std::vector<PieceCut> cut_store(2 * cap);
+        BoundedList<PieceCut> cuts(cut_store.data(), cut_store.size());
+        std::vector<SortKey> keys(cap), sort_scratch(cap);
+        std::vector<uint32_t> heap(cap), pos(cap), links(2 * cap), cells(grid_cells(s.width, s.height)), ord(cap);
+        std::vector<uint32_t> chain(chain_len + 4, 0xC0FFEEu);  // the caller's array, then 4 words it does not own
+        const NewellScratch scratch{{keys.data(), cap}, {sort_scratch.data(), cap}, {heap.data(), cap}, {pos.data(), cap},
+                                    {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), chain_len}};
+        BoundedList<uint32_t> order(ord.data(), cap);
+        Run r;
+        NewellOptions opt;
+        opt.face_ids = s.mesh().ids;
+        r.status = newell_order(view, polys, cuts, scratch, order, r.ns, opt);
+        r.order.assign(order.data(), order.data() + order.size());
+        r.chain_tail_intact = std::all_of(chain.begin() + static_cast<ptrdiff_t>(chain_len), chain.end(),
+                                          [](uint32_t w) { return w == 0xC0FFEEu; });
+        return r;
+    };
+    const Run full = run(0, 6), roomy = run(0, 16);
+    MESSAGE("full pool: moves " << full.ns.moves << ", cycles " << full.ns.cycles << ", dropped " << full.ns.dropped);
+    CHECK(full.status == Status::capacity_exceeded);
+    CHECK(full.chain_tail_intact);
+    CHECK(full.ns.cycles > 0);
+    CHECK(full.order == roomy.order);  // the same decisions as with a chain to spare
+    CHECK(full.ns.moves == roomy.ns.moves);
+    CHECK(full.ns.dropped == roomy.ns.dropped);
+    const Run spare = run(16, 22);  // room for the cuts: the cycle is cut, status ok
+    CHECK(spare.status == Status::ok);
+    CHECK(spare.chain_tail_intact);
 }

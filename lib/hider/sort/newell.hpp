@@ -126,6 +126,13 @@ private:
                 heap_remove(act.q);
                 push(cur);
                 polys_[act.q].moved_at = chain_;
+                if (chain_len_ == s_.chain.size()) {
+                    // Only the chain's first candidate, not marked moved when it started the chain, can
+                    // join it twice: N + 1 entries with a full pool. Its first entry is never read again
+                    // (cycles are found from the chain's end), so it makes room.
+                    for (size_t i = 1; i < chain_len_; ++i) s_.chain[i - 1] = s_.chain[i];
+                    --chain_len_;
+                }
                 s_.chain[chain_len_++] = act.q;
                 ++ns_.moves;
                 return act.q;
