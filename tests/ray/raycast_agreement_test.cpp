@@ -1,6 +1,6 @@
-// Ray casting (hider-render --algo raycast) against the z-buffer: the same face-id image on >= 99.9% of
-// off-edge pixels for every test model and the generated hard scenes (interpenetration, cyclic overlap,
-// slivers, triangles through the near plane and behind the eye), culled and not; no cracks inside closed
+// Ray casting (hider-render --algo raycast) against the z-buffer: the same face-id image on every
+// off-edge pixel (README's claim) for every test model and the generated hard scenes (interpenetration,
+// cyclic overlap, slivers, triangles through the near plane and behind the eye), culled and not; no cracks inside closed
 // meshes; band-by-band output equal to the whole frame; headlight colours equal to the z-buffer's.
 #include <string>
 #include <vector>
@@ -51,7 +51,9 @@ void check_against_zbuffer(const tool::Scene& s, const std::string& name, bool c
                      << ", mismatched " << a.off_edge_mismatch << ", rate " << a.rate() << ", cracks " << holes
                      << ", box tests/ray " << double(r.ray.boxes) / double(r.ray.rays) << ", triangle tests/ray "
                      << double(r.ray.triangles) / double(r.ray.rays));
-        CHECK(a.rate() >= 0.999);
+        // 0 on these scenes; surfaces nearer each other than the snapping's depth resolution could differ
+        // (README "Depth resolution": ray casting does not snap vertices), none of these has such a pair.
+        CHECK(a.off_edge_mismatch == 0);
         CHECK(r.stats.status == Status::ok);
         if (closed) CHECK(holes == 0);
     }
