@@ -127,6 +127,29 @@ TEST_CASE("a plane classifies its own vertices as on it and cuts a straddling tr
     CHECK(std::count(want.begin(), want.end(), 1) > 100);
 }
 
+TEST_CASE("detail::div_round_128 rounds a 128-bit n / d to nearest exactly, and saturates out of range") {
+    std::mt19937_64 rng(5);
+    auto to128 = [](__int128 v) { Int128 r; r.lo = static_cast<uint64_t>(v); r.hi = static_cast<int64_t>(v >> 64); return r; };
+    long checked = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const int64_t d = static_cast<int64_t>(rng() >> (1 + rng() % 63)) | 1;  // 1 .. 2^63 - 1
+        const __int128 q = static_cast<__int128>(static_cast<int64_t>(rng()) >> (29 + rng() % 35));  // |q| <= 2^34
+        const __int128 n = q * d + static_cast<__int128>(static_cast<int64_t>(rng()) % d);
+        const __int128 m = n < 0 ? -n : n;
+        if (m >= static_cast<__int128>(d) << 34) continue;
+        __int128 want = m / d;
+        if (2 * (m % d) >= d) ++want;  // ties away from zero
+        if (n < 0) want = -want;
+        CHECK(detail::div_round_128(to128(n), d) == static_cast<int64_t>(want));
+        ++checked;
+    }
+    CHECK(checked > 100000);
+    CHECK(detail::div_round_128(to128(static_cast<__int128>(7) << 34), 7) == (int64_t{1} << 34));  // |n / d| = 2^34: saturated
+    CHECK(detail::div_round_128(to128(-(static_cast<__int128>(1) << 100)), 3) == -(int64_t{1} << 34));
+    CHECK(detail::div_round_128(to128(5), 2) == 3);
+    CHECK(detail::div_round_128(to128(-5), 2) == -3);
+}
+
 TEST_CASE("detail::floor_ceil rounds n / d down and up exactly") {
     std::mt19937_64 rng(17);
     for (int i = 0; i < 200000; ++i) {
@@ -151,18 +174,61 @@ TEST_CASE("detail::floor_ceil rounds n / d down and up exactly") {
     CHECK((lo == 0 && hi == 0));
 }
 
+namespace {
+/// Points of outline o of piece p that are not a vertex of p's exact region (the triangle's and the
+/// chain's half-planes) rounded to the nearest grid point with the plane's depth there (within a unit),
+/// checked in floating point; also counts an outline with fewer than 3 points.
+long outline_errors(const ScreenPoly& p, Span<const PieceCut> cuts, const Outline& o) {
+    struct Line { double a, b, c; };
+    std::vector<Line> lines;
+    const double turn = double(p.v[1].x - p.v[0].x) * (p.v[2].y - p.v[0].y) - double(p.v[1].y - p.v[0].y) * (p.v[2].x - p.v[0].x);
+    auto add = [&](double x0, double y0, double x1, double y1, double sign) {  // keeps sign * cut_side >= 0
+        lines.push_back({sign * (y0 - y1), sign * (x1 - x0), sign * ((y1 - y0) * x0 - (x1 - x0) * y0)});
+    };
+    for (int i = 0; i < 3; ++i) add(p.v[i].x, p.v[i].y, p.v[(i + 1) % 3].x, p.v[(i + 1) % 3].y, turn > 0 ? 1 : -1);
+    for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev) add(cuts[c].line.x0, cuts[c].line.y0, cuts[c].line.x1, cuts[c].line.y1, 1);
+    const double ax = p.v[1].x - p.v[0].x, ay = p.v[1].y - p.v[0].y, cx = p.v[2].x - p.v[0].x, cy = p.v[2].y - p.v[0].y;
+    const double area = ax * cy - ay * cx;
+    long bad = o.count < 3 ? 1 : 0;
+    for (int k = 0; k < o.count; ++k) {
+        // Some vertex of the region (a crossing of two lines that every line keeps) within half a
+        // subpixel, with the plane's depth there within a unit.
+        bool found = false;
+        for (size_t i = 0; i < lines.size() && !found; ++i)
+            for (size_t j = i + 1; j < lines.size() && !found; ++j) {
+                const Line &l = lines[i], &m = lines[j];
+                const double d = l.a * m.b - m.a * l.b;
+                if (d == 0) continue;
+                const double x = (l.b * m.c - m.b * l.c) / d, y = (m.a * l.c - l.a * m.c) / d;
+                if (std::abs(x - o.v[k].x) > 0.5 + 1e-9 || std::abs(y - o.v[k].y) > 0.5 + 1e-9) continue;
+                bool kept = true;
+                for (const Line& n : lines) kept = kept && n.a * x + n.b * y + n.c >= -1e-9 * (std::abs(n.a) + std::abs(n.b)) * 16384;
+                const double ux = x - p.v[0].x, uy = y - p.v[0].y;
+                const double z = p.v[0].z + (ux * cy - uy * cx) / area * (double(p.v[1].z) - p.v[0].z) +
+                                 (ax * uy - ay * ux) / area * (double(p.v[2].z) - p.v[0].z);
+                found = kept && std::abs(z - o.v[k].z) <= 1.0;
+            }
+        bad += !found;
+    }
+    return bad;
+}
+}  // namespace
+
 TEST_CASE("a piece's box holds every pixel centre it draws, after chains of cuts at any angle") {
     // Random triangles cut again and again by the planes of random triangles: each cut keeps both pieces
     // when both are non-empty, down to chains of 8. Every pixel centre PieceRaster draws for a piece must
     // lie in its box (the band test and Newell's extent tests trust it), and the pieces of a triangle
-    // must cover exactly its pixels. Cut points rounded to the grid drift far along a cut that meets an
-    // earlier one at a shallow angle, so a box taken from the rounded outline is not enough.
+    // must cover exactly its pixels. Each point of a piece's outline must be a vertex of the region it
+    // draws, rounded once to the grid, with the depth of the triangle's plane there (within a unit, against
+    // a floating-point reference): so the outline's box, one subpixel wider, holds every centre too. (Cut
+    // points clipped from already rounded points drifted far along a cut that met an earlier one at a
+    // shallow angle, outside that box, and Newell then misordered single pixels.)
     const int w = 48, h = 40;
     const FrameView<Grey8Format> frame = whole_frame(w, h);
     const BandBounds bb = band_bounds(frame);
     const int32_t ox = kSubpixel / 2 - w * (kSubpixel / 2), oy = kSubpixel / 2 - h * (kSubpixel / 2);
     auto sv = [](int32_t x, int32_t y, uint32_t z) { ScreenVertex v; v.x = static_cast<int16_t>(x); v.y = static_cast<int16_t>(y); v.z = z; return v; };
-    long pieces_checked = 0, centres = 0, outside = 0, outside_rounded = 0, coverage_errors = 0;
+    long pieces_checked = 0, centres = 0, outside = 0, outside_rounded = 0, coverage_errors = 0, points = 0, bad_points = 0;
     for (uint32_t seed = 1; seed <= 6000; ++seed) {
         std::mt19937 rng(seed);
         auto coord = [&](int32_t half) { return static_cast<int32_t>(rng() % static_cast<uint32_t>(2 * half + 1)) - half; };
@@ -235,6 +301,8 @@ TEST_CASE("a piece's box holds every pixel centre it draws, after chains of cuts
             // The box a piece had before piece_box(): its rounded outline's, one subpixel wider.
             Outline o;
             outline_of(p, {cuts.data(), cuts.size()}, o);
+            bad_points += outline_errors(p, {cuts.data(), cuts.size()}, o);
+            points += o.count;
             ScreenPoly rounded = p;
             rounded.xmin = rounded.ymin = INT16_MAX;
             rounded.xmax = rounded.ymax = INT16_MIN;
@@ -250,11 +318,14 @@ TEST_CASE("a piece's box holds every pixel centre it draws, after chains of cuts
         coverage_errors += count != want;
     }
     MESSAGE("pieces " << pieces_checked << ", pixel centres " << centres << ", outside their box " << outside
-                      << ", outside the rounded outline's box " << outside_rounded);
+                      << ", outside their outline's box " << outside_rounded << "; outline points " << points
+                      << ", not a rounded vertex of the region " << bad_points);
     CHECK(pieces_checked > 40000);
     CHECK(centres > 1000000);
     CHECK(outside == 0);
-    CHECK(outside_rounded > 0);  // the case that needs piece_box() occurs here
+    CHECK(outside_rounded == 0);
+    CHECK(points > 150000);
+    CHECK(bad_points == 0);
     CHECK(coverage_errors == 0);
 }
 
@@ -421,4 +492,66 @@ TEST_CASE("Newell with a full pool never writes past a chain of N entries, and o
     const Run spare = run(16, 22);  // room for the cuts: the cycle is cut, status ok
     CHECK(spare.status == Status::ok);
     CHECK(spare.chain_tail_intact);
+}
+
+TEST_CASE("Newell's pair-test budget: any budget gives every polygon once, and ok only with the unlimited order") {
+    // Three bars in a cycle with back faces: cycles whose consecutive pairs cannot be cut, broken by a cut
+    // between two other polygons of the cycle. Whatever the budget, each polygon goes out once; the status
+    // is ok only when nothing was cut short, so the order is the one an unlimited budget gives.
+    const tool::Scene s = test::generated_scene("cyclic-bars");
+    View view;
+    REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
+    std::vector<ScreenVertex> verts(s.positions.size());
+    REQUIRE(project_vertices(view, s.mesh().positions, {verts.data(), verts.size()}) == Status::ok);
+    const size_t cap = 2048;
+    std::vector<ScreenPoly> store(cap);
+    std::vector<PieceCut> cut_store(2 * cap);
+    std::vector<SortKey> keys(cap), sort_scratch(cap);
+    std::vector<uint32_t> heap(cap), pos(cap), links(2 * cap), cells(grid_cells(s.width, s.height)), ord(cap), chain(cap);
+    auto run = [&](uint64_t budget, NewellStats& ns, std::vector<uint32_t>& out, size_t& polygons) {
+        BoundedList<ScreenPoly> polys(store.data(), cap);
+        FrameStats st;
+        build_polys(view, s.mesh(), {verts.data(), verts.size()}, false, polys, st);
+        BoundedList<PieceCut> cuts(cut_store.data(), cut_store.size());
+        const NewellScratch scratch{{keys.data(), cap}, {sort_scratch.data(), cap}, {heap.data(), cap}, {pos.data(), cap},
+                                    {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), cap}};
+        BoundedList<uint32_t> order(ord.data(), cap);
+        NewellOptions opt;
+        opt.face_ids = s.mesh().ids;
+        opt.max_pair_tests = budget;
+        const Status status = newell_order(view, polys, cuts, scratch, order, ns, opt);
+        out.assign(order.data(), order.data() + order.size());
+        polygons = polys.size();
+        return status;
+    };
+    NewellStats full;
+    std::vector<uint32_t> full_order;
+    size_t full_polygons = 0;
+    REQUIRE(run(0, full, full_order, full_polygons) == Status::ok);
+    REQUIRE(full.cycles > 0);
+    REQUIRE(full.unresolved == 0);
+    int ok = 0, cut_short = 0;
+    for (uint64_t budget = 1; budget <= full.pair_tests + 4; ++budget) {
+        NewellStats ns;
+        std::vector<uint32_t> order;
+        size_t polygons = 0;
+        const Status status = run(budget, ns, order, polygons);
+        INFO("budget " << budget);
+        std::vector<uint32_t> sorted = order;
+        std::sort(sorted.begin(), sorted.end());
+        bool each_once = sorted.size() == polygons;
+        for (size_t i = 0; i < sorted.size() && each_once; ++i) each_once = sorted[i] == i;
+        CHECK(each_once);
+        CHECK(ns.pair_tests <= budget + 1);
+        CHECK((status == Status::ok) == !ns.budget_exhausted);
+        if (status == Status::ok) {
+            CHECK(order == full_order);
+            ++ok;
+        } else {
+            ++cut_short;
+        }
+    }
+    MESSAGE("budgets: " << ok << " ok, " << cut_short << " cut short, of " << full.pair_tests << " pair tests unlimited");
+    CHECK(ok >= 4);
+    CHECK(cut_short > 1000);
 }

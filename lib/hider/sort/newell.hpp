@@ -18,7 +18,8 @@
 namespace hider {
 
 struct NewellStats {
-    uint64_t pair_tests = 0;        ///< pairs whose boxes may overlap and whose depth ranges overlap
+    uint64_t pair_tests = 0;        ///< pairs whose boxes may overlap and whose depth ranges overlap, and
+                                    ///< two per pair of a cycle tried for a cut beyond its consecutive pairs
     uint32_t moves = 0;             ///< Q moved before P
     uint32_t splits = 0;            ///< polygons cut in two by another's plane
     uint32_t cycles = 0;            ///< cycles of overlap found (each broken by a cut when possible)
@@ -229,7 +230,8 @@ private:
     /// A cycle closed at Q (in the chain) whose pair with the candidate cannot be cut as it stands:
     /// cuts the first pair of the cycle (a polygon and the one moved before it, or Q and the candidate)
     /// where one straddles the other's plane, first beyond the rounding slack, then exactly (the slack may
-    /// hide a small crossing, which keeps the cycle closed). False when none does.
+    /// hide a small crossing, which keeps the cycle closed); failing that, any two polygons of the cycle,
+    /// within the pair-test budget. False when none does.
     bool break_cycle(uint32_t q, Action& act) {
         size_t j = chain_len_;
         while (j-- > 0 && s_.chain[j] != q) {}
@@ -238,17 +240,41 @@ private:
                 const uint32_t x = s_.chain[i], y = i + 1 < chain_len_ ? s_.chain[i + 1] : q;  // the last pair closes the cycle
                 if (cut_straddling(x, y, exact != 0, act) || cut_straddling(y, x, exact != 0, act)) return true;
             }
+        // Then any two polygons of the cycle (each try counts as a pair test: a long cycle costs its square).
+        for (int exact = 0; exact < 2; ++exact)
+            for (size_t i = j; i < chain_len_; ++i)
+                for (size_t k = i + 2; k < chain_len_; ++k) {
+                    if (i == j && k + 1 == chain_len_) continue;  // the pair that closes the cycle, tried above
+                    if (ns_.pair_tests + 2 > budget_) {
+                        ns_.budget_exhausted = true;
+                        status_ = Status::capacity_exceeded;
+                        return false;
+                    }
+                    ns_.pair_tests += 2;
+                    const uint32_t x = s_.chain[i], y = s_.chain[k];
+                    if (cut_straddling(x, y, exact != 0, act) || cut_straddling(y, x, exact != 0, act)) return true;
+                }
         return false;
     }
 
     /// Cuts polygon x by the plane of polygon y when x straddles it (beyond the slack, or exactly)
-    /// and the cut leaves something on both sides; adds the cut to act.
+    /// and the cut leaves something on both sides; adds the cut to act (in its next slot).
     bool cut_straddling(uint32_t x, uint32_t y, bool exact, Action& act) {
         const ScreenPoly &px = polys_[x], &py = polys_[y];
         if (known_side(px, cuts(), py.tri) != 0) return false;
-        Outline ox;
-        outline_of(px, cuts(), ox);
         const ScreenPlane pl = plane_of(py);
+        if (!straddles(px, pl, exact)) return false;
+        Cut& c = act.cuts[act.count];
+        if (cut_polygon(px, cuts(), pl, py.tri, c.far, c.near, c.far_cut, c.near_cut) != CutResult::cut) return false;
+        take(act, x, c);
+        return true;
+    }
+
+    /// True when x's outline has vertices on both sides of pl, beyond the rounding slack unless `exact`.
+    /// Out of line, so that its outline is off the stack while cut_straddling() cuts.
+    __attribute__((noinline)) bool straddles(const ScreenPoly& x, const ScreenPlane& pl, bool exact) const {
+        Outline ox;
+        outline_of(x, cuts(), ox);
         const Int128 slack = exact ? Int128{} : rounding_slack(pl);
         bool near = false, far = false;
         for (int k = 0; k < ox.count; ++k) {
@@ -256,10 +282,7 @@ private:
             near = near || s < 0;
             far = far || s > 0;
         }
-        Cut c;
-        if (!near || !far || cut_polygon(px, cuts(), pl, py.tri, c.far, c.near, c.far_cut, c.near_cut) != CutResult::cut) return false;
-        take(act, x, c);
-        return true;
+        return near && far;
     }
 
     /// x's side of plane pl (the plane of mesh triangle plane_tri), outline xo: known from x's cuts, else
@@ -270,7 +293,7 @@ private:
     }
 
     /// The side of x, which straddles plane pl, from the cut along it (pieces into far/near): a cut that
-    /// leaves nothing on one side on the grid decides the side, else 0. `cut` tells how the try went.
+    /// leaves nothing of nonzero area on one side decides the side, else 0. `cut` tells how the try went.
     int side_by_cut(const ScreenPoly& x, const ScreenPlane& pl, uint32_t plane_tri, CutResult& cut, Cut& pieces) {
         cut = cut_polygon(x, cuts(), pl, plane_tri, pieces.far, pieces.near, pieces.far_cut, pieces.near_cut);
         if (cut == CutResult::far_only) return 1;

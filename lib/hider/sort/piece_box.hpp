@@ -8,17 +8,6 @@
 namespace hider {
 
 namespace detail {
-/// A line as a x + b y + c0, equal to cut_side() of its CutLine (kept side >= 0). Endpoints within
-/// kCoordLimit (2^14 - 1) give |a|, |b| < 2^15 and |c0| < 2^30.
-struct LineEquation {
-    int16_t a, b;
-    int32_t c0;
-};
-constexpr LineEquation line_equation(const CutLine& c) {
-    return {static_cast<int16_t>(c.y0 - c.y1), static_cast<int16_t>(c.x1 - c.x0),
-            (int32_t{c.y1} - c.y0) * c.x0 - (int32_t{c.x1} - c.x0) * c.y0};
-}
-
 /// floor(n / d) and ceil(n / d) for 0 < d < 2^32 and |n| < d * 2^32, by one udiv64_32() (no 64-bit
 /// library division).
 inline void floor_ceil(int64_t n, int64_t d, int32_t& lo, int32_t& hi) {

@@ -1,10 +1,8 @@
 // Newell's geometry on screen polygons: exact plane-side tests (128-bit sums of products) with a
-// slack for the grid rounding of cut points, the outline of a piece, projections that share no
-// pixel, and the cut of a polygon by another's plane into two pieces whose pixels (raster/piece.hpp)
-// are exactly its own.
+// slack for the grid rounding of cut points (outline.hpp), and the cut of a polygon by another's plane
+// into two pieces whose pixels (raster/piece.hpp) are exactly its own.
 #pragma once
-#include <hider/int128.hpp>
-#include <hider/sort/poly.hpp>
+#include <hider/sort/outline.hpp>
 
 namespace hider {
 
@@ -35,7 +33,7 @@ inline Int128 side(const ScreenPlane& pl, const V& v) {
 }
 
 /// How far side() can put a point cut onto the plane once rounded to the grid: half a subpixel in x and
-/// y, and three depth units in z (the rounding plus the interpolation along the cut edge).
+/// y, and three depth units in z (its depth is the plane's at the exact point, rounded: half a unit, with room).
 inline Int128 rounding_slack(const ScreenPlane& pl) {
     return mul128(abs_value(pl.a) + abs_value(pl.b), 1).shr(1) + mul128(pl.c, 3);
 }
@@ -55,20 +53,6 @@ inline int classify(const ScreenPlane& pl, const Int128& slack, const V& v) {
     return 0;
 }
 
-/// A point of an outline: a screen position and depth (no default values, so outlines cost no clearing).
-struct OutlinePoint {
-    int16_t x, y;
-    uint32_t z;
-};
-
-/// The convex outline of a polygon on the grid: its triangle clipped by its cut lines, vertices in the
-/// triangle's winding (cut points rounded to the grid; PieceRaster draws the exact region).
-struct Outline {
-    OutlinePoint v[3 + kMaxPieceCuts];
-    int count = 0;
-    bool rounded = false;  ///< some point is a cut point rounded to the grid (else the triangle's own vertices)
-};
-
 namespace detail {
 /// Number of significant bits of |v| (0 for 0). Precondition: |v| < 2^127.
 inline int magnitude_bits(const Int128& v) {
@@ -84,57 +68,7 @@ inline int64_t shift_down(const Int128& v, int s) {
     return v.hi >> (s - 64);
 }
 
-/// The point where the segment a -> b meets e == 0, for e(a) = ea and e(b) = eb of opposite signs.
-inline OutlinePoint lerp_to_line(const OutlinePoint& a, const OutlinePoint& b, int64_t ea, int64_t eb) {
-    uint64_t num = static_cast<uint64_t>(abs_value(ea)), den = num + static_cast<uint64_t>(abs_value(eb));
-    while (den >= (uint64_t{1} << 31)) { num >>= 1; den >>= 1; }
-    const int64_t t_q30 = div_round(static_cast<int64_t>(num << 30), static_cast<int64_t>(den));
-    auto lerp = [t_q30](int64_t p, int64_t q) { return p + (((q - p) * t_q30 + (int64_t{1} << 29)) >> 30); };
-    return {static_cast<int16_t>(lerp(a.x, b.x)), static_cast<int16_t>(lerp(a.y, b.y)), static_cast<uint32_t>(lerp(a.z, b.z))};
-}
-
-/// Clips the outline o by the half-plane cut_side(line) >= 0 (Sutherland-Hodgman).
-inline void clip_outline(Outline& o, const CutLine& line) {
-    int64_t e[3 + kMaxPieceCuts];
-    bool out = false;
-    for (int i = 0; i < o.count; ++i) {
-        e[i] = cut_side(line, o.v[i].x, o.v[i].y);
-        out = out || e[i] < 0;
-    }
-    if (!out) return;  // wholly on the kept side
-    OutlinePoint r[3 + kMaxPieceCuts];
-    int n = 0;
-    for (int i = 0; i < o.count; ++i) {
-        const int j = i + 1 == o.count ? 0 : i + 1;
-        if (e[i] >= 0 && n < 3 + kMaxPieceCuts) r[n++] = o.v[i];
-        if (((e[i] > 0 && e[j] < 0) || (e[i] < 0 && e[j] > 0)) && n < 3 + kMaxPieceCuts) {
-            r[n++] = lerp_to_line(o.v[i], o.v[j], e[i], e[j]);
-            o.rounded = true;
-        }
-    }
-    for (int i = 0; i < n; ++i) o.v[i] = r[i];
-    o.count = n;
-}
 }  // namespace detail
-
-/// The outline of polygon p (cut chain in `cuts`).
-inline void outline_of(const ScreenPoly& p, Span<const PieceCut> cuts, Outline& o) {
-    o.count = 3;
-    o.rounded = false;
-    for (int i = 0; i < 3; ++i) o.v[i] = {p.v[i].x, p.v[i].y, p.v[i].z};
-    for (uint32_t c = p.cut; c != kNoCut && o.count > 0; c = cuts[c].prev) detail::clip_outline(o, cuts[c].line);
-}
-
-/// Twice the signed area of an outline (its winding; 0 for a degenerate one).
-inline int64_t outline_area(const Outline& o) {
-    int64_t a = 0;
-    for (int i = 0; i < o.count; ++i) {
-        const OutlinePoint& p = o.v[i];
-        const OutlinePoint& q = o.v[i + 1 == o.count ? 0 : i + 1];
-        a += int64_t{p.x} * q.y - int64_t{q.x} * p.y;
-    }
-    return a;
-}
 
 /// Side of an outline: -1 if every vertex is nearer than the plane or on it, +1 if every one is farther
 /// or on it (a polygon in the plane gives +1), 0 if it straddles the plane. A piece's outline, with cut
@@ -159,28 +93,6 @@ inline int known_side(const ScreenPoly& p, Span<const PieceCut> cuts, uint32_t p
     for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev)
         if ((cuts[c].plane & ~kCutFar) == plane_tri) return (cuts[c].plane & kCutFar) != 0 ? 1 : -1;
     return 0;
-}
-
-/// True when the projections of two convex outlines share no pixel-centre interior: some edge of one
-/// has every vertex of the other on its outer side or on it (separating axis; exact in int64).
-inline bool projections_disjoint(const Outline& p, const Outline& q) {
-    auto separated_by = [](const Outline& s, const Outline& o) {
-        const int64_t area = outline_area(s);
-        if (area == 0) return false;
-        for (int i = 0; i < s.count; ++i) {
-            const OutlinePoint& a = s.v[i];
-            const OutlinePoint& b = s.v[i + 1 == s.count ? 0 : i + 1];
-            if (a.x == b.x && a.y == b.y) continue;
-            bool all_out = true;
-            for (int k = 0; k < o.count && all_out; ++k) {
-                const int64_t e = int64_t{b.x - a.x} * (o.v[k].y - a.y) - int64_t{b.y - a.y} * (o.v[k].x - a.x);
-                all_out = !((area > 0 && e > 0) || (area < 0 && e < 0));  // inside has the sign of the area
-            }
-            if (all_out) return true;
-        }
-        return false;
-    };
-    return separated_by(p, q) || separated_by(q, p);
 }
 
 /// The line where plane pl crosses the plane of polygon p on the screen, through two grid points on
@@ -242,7 +154,7 @@ inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, CutLine& f
 /// How one polygon's cut by a plane went.
 enum class CutResult : uint8_t {
     cut,        ///< two pieces, each wholly on one side
-    far_only,   ///< on the grid nothing is left on the near side: the polygon counts as far
+    far_only,   ///< no region of nonzero area is left on the near side: the polygon counts as far
     near_only,  ///< ... on the far side: it counts as near
     no_line,    ///< the planes do not cross inside the polygon's box
     too_deep,   ///< the polygon already carries kMaxPieceCuts cuts
@@ -260,13 +172,13 @@ inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, con
     if (depth >= kMaxPieceCuts) return CutResult::too_deep;
     CutLine line{};
     if (!crossing_line(pl, p, line)) return CutResult::no_line;
-    Outline base, fo, no;
-    outline_of(p, cuts, base);
-    fo = base;
-    no = base;
-    detail::clip_outline(fo, line);
-    detail::clip_outline(no, reversed(line));
-    const bool far_ok = fo.count >= 3 && outline_area(fo) != 0, near_ok = no.count >= 3 && outline_area(no) != 0;
+    Outline fo, no;
+    outline_of(p, cuts, fo);
+    no = fo;
+    // Each side keeps a region of nonzero area exactly when some vertex lies strictly on it.
+    const int sides = detail::clip_outline(fo, line, p.v);
+    detail::clip_outline(no, reversed(line), p.v);
+    const bool far_ok = (sides & detail::kKeptSide) != 0, near_ok = (sides & detail::kCutSide) != 0;
     if (!far_ok || !near_ok) return far_ok ? CutResult::far_only : (near_ok ? CutResult::near_only : CutResult::no_line);
     far_cut = {line, p.cut, plane_tri | kCutFar};
     near_cut = {reversed(line), p.cut, plane_tri};

@@ -1,0 +1,250 @@
+// The outline of a Newell polygon: its triangle clipped by its cut lines, kept as the exact lines of
+// its edges (so every vertex is an exact crossing of two lines) and as grid points for the tests.
+// Clipping decides each vertex's side of a new line exactly and puts a new point at the exact crossing
+// of the line with the edge's own line, rounded once: every point is within half a subpixel of the
+// region PieceRaster draws, with the depth of the triangle's plane there, however shallow the angle
+// two cuts meet at. (Clipping the rounded points instead let a point drift along a later cut far from
+// the region, and Newell then misordered single pixels.)
+#pragma once
+#include <hider/int128.hpp>
+#include <hider/sort/poly.hpp>
+
+namespace hider {
+
+namespace detail {
+/// A line as a x + b y + c0, equal to cut_side() of its CutLine (kept side >= 0). Endpoints within
+/// kCoordLimit (2^14 - 1) give |a|, |b| < 2^15 and |c0| < 2^30.
+struct LineEquation {
+    int16_t a, b;
+    int32_t c0;
+};
+constexpr LineEquation line_equation(const CutLine& c) {
+    return {static_cast<int16_t>(c.y0 - c.y1), static_cast<int16_t>(c.x1 - c.x0),
+            (int32_t{c.y1} - c.y0) * c.x0 - (int32_t{c.x1} - c.x0) * c.y0};
+}
+
+/// The crossing of two lines, exactly (x / d, y / d) with d > 0: |x|, |y| < 2^46 and d < 2^31.
+struct ExactPoint {
+    int64_t x, y, d;
+};
+/// False when the lines are parallel.
+inline bool crossing(const LineEquation& l, const LineEquation& m, ExactPoint& p) {
+    int64_t d = int32_t{l.a} * m.b - int32_t{m.a} * l.b;
+    if (d == 0) return false;
+    int64_t x = int64_t{l.b} * m.c0 - int64_t{m.b} * l.c0, y = int64_t{m.a} * l.c0 - int64_t{l.a} * m.c0;
+    if (d < 0) {
+        d = -d;
+        x = -x;
+        y = -y;
+    }
+    p = {x, y, d};
+    return true;
+}
+/// The line's value at p times p.d (its sign is the side): below 3 x 2^61 in magnitude.
+inline int64_t line_value(const LineEquation& l, const ExactPoint& p) { return l.a * p.x + l.b * p.y + l.c0 * p.d; }
+
+/// round(n / d), ties away from zero, for d > 0 and |n| < d x 2^34 (else +-2^34): 34 steps of
+/// shift and subtract, no 128-bit library division.
+inline int64_t div_round_128(const Int128& n, int64_t d) {
+    const bool negative = n.sign() < 0;
+    const Int128 m = negative ? -n : n;
+    const Int128 top = m.shr(34);
+    const uint64_t ud = static_cast<uint64_t>(d);
+    if (top.hi != 0 || top.lo >= ud) return negative ? -(int64_t{1} << 34) : (int64_t{1} << 34);
+    uint64_t r = top.lo, q = 0;  // r < d < 2^63: 2 r + 1 fits
+    for (int bit = 33; bit >= 0; --bit) {
+        r = (r << 1) | ((m.lo >> bit) & 1u);
+        q <<= 1;
+        if (r >= ud) {
+            r -= ud;
+            q |= 1u;
+        }
+    }
+    if (r >= ud - r) ++q;
+    return negative ? -static_cast<int64_t>(q) : static_cast<int64_t>(q);
+}
+
+/// The depth of triangle v's plane at the exact point p (in the closed triangle), rounded, within the
+/// triangle's depth range.
+inline uint32_t depth_at(const ScreenVertex (&v)[3], const ExactPoint& p) {
+    const int64_t e1x = v[1].x - v[0].x, e1y = v[1].y - v[0].y, e2x = v[2].x - v[0].x, e2y = v[2].y - v[0].y;
+    int64_t area = e1x * e2y - e1y * e2x;  // |area| < 2^31
+    const uint32_t lo = min(v[0].z, min(v[1].z, v[2].z)), hi = max(v[0].z, max(v[1].z, v[2].z));
+    if (area == 0) return lo;
+    // u, w < 2^47; each weight below 2^63: the point's barycentric coordinates times area x d.
+    const int64_t u = p.x - v[0].x * p.d, w = p.y - v[0].y * p.d;
+    const int64_t w1 = u * e2y - w * e2x, w2 = e1x * w - e1y * u;
+    Int128 num = mul128(int64_t{v[1].z} - v[0].z, w1) + mul128(int64_t{v[2].z} - v[0].z, w2);
+    if (area < 0) {
+        area = -area;
+        num = -num;
+    }
+    const int64_t z = int64_t{v[0].z} + div_round_128(num, area * p.d);
+    return z < lo ? lo : (z > hi ? hi : static_cast<uint32_t>(z));
+}
+}  // namespace detail
+
+/// A point of an outline: a screen position and depth (no default values, so outlines cost no clearing).
+struct OutlinePoint {
+    int16_t x, y;
+    uint32_t z;
+};
+
+/// The convex outline of a polygon: its triangle clipped by its cut lines, vertices in the triangle's
+/// winding. edge[i] is the exact line from v[i] to v[i + 1] (inside >= 0), so vertex i is exactly the
+/// crossing of edge[i - 1] and edge[i]; v[i] is that crossing rounded to the grid, with its depth. A
+/// whole triangle's outline gets its edges when a first cut needs them (most are never cut).
+struct Outline {
+    OutlinePoint v[3 + kMaxPieceCuts];
+    detail::LineEquation edge[3 + kMaxPieceCuts];
+    int count = 0;
+    bool rounded = false;  ///< some point is a cut point rounded to the grid (else the triangle's own vertices)
+    bool edges = false;    ///< edge[] is set (else the outline is triangle v[0..2])
+};
+
+namespace detail {
+/// Vertex i of o exactly; its grid point when its edges are parallel (a degenerate outline).
+inline ExactPoint outline_vertex(const Outline& o, int i) {
+    ExactPoint p;
+    if (!crossing(o.edge[i == 0 ? o.count - 1 : i - 1], o.edge[i], p)) p = {o.v[i].x, o.v[i].y, 1};
+    return p;
+}
+
+/// Which sides of a line an outline has vertices strictly on (clip_outline's result).
+constexpr int kKeptSide = 1, kCutSide = 2;
+
+/// Reverses o's points and edges in [i, j).
+inline void reverse_outline(Outline& o, int i, int j) {
+    for (--j; i < j; ++i, --j) {
+        const OutlinePoint p = o.v[i];
+        o.v[i] = o.v[j];
+        o.v[j] = p;
+        const LineEquation e = o.edge[i];
+        o.edge[i] = o.edge[j];
+        o.edge[j] = e;
+    }
+}
+
+/// The point where edge i of o (whose ends lie strictly on both sides of `line`) crosses it, rounded to
+/// the grid with the plane's depth there.
+inline OutlinePoint cut_point(const Outline& o, int i, const LineEquation& line, const ScreenVertex (&v)[3]) {
+    ExactPoint p;
+    if (!crossing(o.edge[i], line, p)) return o.v[i];  // parallel: only in a degenerate outline
+    return {static_cast<int16_t>(div_round(p.x, p.d)), static_cast<int16_t>(div_round(p.y, p.d)), depth_at(v, p)};
+}
+
+/// Clips outline o of triangle v (without edges: the triangle itself) by the half-plane cut_side(line)
+/// >= 0, in place, each vertex's side decided exactly. Returns kKeptSide and/or kCutSide: the sides o had vertices strictly on before
+/// (the outline is unchanged without kCutSide).
+inline int clip_outline(Outline& o, const CutLine& cut, const ScreenVertex (&v)[3]) {
+    if (!o.edges) {  // the whole triangle: its three edges, its inside kept
+        const bool turn = cut_side({o.v[0].x, o.v[0].y, o.v[1].x, o.v[1].y}, o.v[2].x, o.v[2].y) >= 0;
+        for (int i = 0; i < 3; ++i) {
+            const OutlinePoint &a = o.v[i], &b = o.v[i == 2 ? 0 : i + 1];
+            const CutLine edge{a.x, a.y, b.x, b.y};
+            o.edge[i] = line_equation(turn ? edge : reversed(edge));
+        }
+        o.edges = true;
+    }
+    const LineEquation line = line_equation(cut);
+    const int n = o.count;
+    int8_t s[3 + kMaxPieceCuts];
+    int sides = 0;
+    for (int i = 0; i < n; ++i) {
+        const int64_t e = line_value(line, outline_vertex(o, i));
+        s[i] = static_cast<int8_t>(e > 0 ? 1 : (e < 0 ? -1 : 0));
+        sides |= e > 0 ? kKeptSide : (e < 0 ? kCutSide : 0);
+    }
+    if ((sides & kCutSide) == 0) return sides;
+    o.rounded = true;
+    // A convex outline keeps one run of vertices (s >= 0): from `first`, after a vertex cut away, to `last`.
+    int first = 0;
+    while (first < n && !(s[first] >= 0 && s[first == 0 ? n - 1 : first - 1] < 0)) ++first;
+    if (first == n) {
+        o.count = 0;  // nothing kept
+        return sides;
+    }
+    int kept = 1;
+    while (kept < n && s[(first + kept) % n] >= 0) ++kept;
+    const int last = (first + kept - 1) % n, before = first == 0 ? n - 1 : first - 1;
+    // The crossing entering the run, on the edge before it, and the one leaving it, on the run's last edge.
+    const bool enters = s[first] > 0, leaves = s[last] > 0;
+    const OutlinePoint in = enters ? cut_point(o, before, line, v) : o.v[first];
+    const LineEquation in_edge = o.edge[before];
+    const OutlinePoint out = leaves ? cut_point(o, last, line, v) : o.v[last];
+    // Rotate the run to the front (after the entering point), then close it along the line.
+    reverse_outline(o, 0, first);
+    reverse_outline(o, first, n);
+    reverse_outline(o, 0, n);
+    int count = kept;
+    if (enters) {
+        for (int i = count; i > 0; --i) {
+            o.v[i] = o.v[i - 1];
+            o.edge[i] = o.edge[i - 1];
+        }
+        o.v[0] = in;
+        o.edge[0] = in_edge;
+        ++count;
+    }
+    if (leaves && count < 3 + kMaxPieceCuts) {
+        o.v[count] = out;
+        o.edge[count++] = line;
+    } else {
+        o.edge[count - 1] = line;  // the run ends on the line
+    }
+    // A point between two edges on one line (the line through an edge) is no vertex: drop it.
+    int m = 0;
+    for (int i = 0; i < count; ++i) {
+        const LineEquation &a = o.edge[m == 0 ? count - 1 : m - 1], &b = o.edge[i];
+        if (m + count - i > 3 && int32_t{a.a} * b.b == int32_t{b.a} * a.b && int32_t{a.a} * b.a + int32_t{a.b} * b.b > 0) continue;
+        o.v[m] = o.v[i];
+        o.edge[m++] = o.edge[i];
+    }
+    o.count = m;
+    return sides;
+}
+}  // namespace detail
+
+/// The outline of polygon p (cut chain in `cuts`).
+inline void outline_of(const ScreenPoly& p, Span<const PieceCut> cuts, Outline& o) {
+    o.count = 3;
+    o.rounded = false;
+    o.edges = false;
+    for (int i = 0; i < 3; ++i) o.v[i] = {p.v[i].x, p.v[i].y, p.v[i].z};
+    for (uint32_t c = p.cut; c != kNoCut && o.count > 0; c = cuts[c].prev) detail::clip_outline(o, cuts[c].line, p.v);
+}
+
+/// Twice the signed area of an outline's grid points (its winding; 0 for a degenerate one).
+inline int64_t outline_area(const Outline& o) {
+    int64_t a = 0;
+    for (int i = 0; i < o.count; ++i) {
+        const OutlinePoint& p = o.v[i];
+        const OutlinePoint& q = o.v[i + 1 == o.count ? 0 : i + 1];
+        a += int64_t{p.x} * q.y - int64_t{q.x} * p.y;
+    }
+    return a;
+}
+
+/// True when the projections of two convex outlines share no pixel-centre interior: some edge of one
+/// has every vertex of the other on its outer side or on it (separating axis; exact in int64).
+inline bool projections_disjoint(const Outline& p, const Outline& q) {
+    auto separated_by = [](const Outline& s, const Outline& o) {
+        const int64_t area = outline_area(s);
+        if (area == 0) return false;
+        for (int i = 0; i < s.count; ++i) {
+            const OutlinePoint& a = s.v[i];
+            const OutlinePoint& b = s.v[i + 1 == s.count ? 0 : i + 1];
+            if (a.x == b.x && a.y == b.y) continue;
+            bool all_out = true;
+            for (int k = 0; k < o.count && all_out; ++k) {
+                const int64_t e = int64_t{b.x - a.x} * (o.v[k].y - a.y) - int64_t{b.y - a.y} * (o.v[k].x - a.x);
+                all_out = !((area > 0 && e > 0) || (area < 0 && e < 0));  // inside has the sign of the area
+            }
+            if (all_out) return true;
+        }
+        return false;
+    };
+    return separated_by(p, q) || separated_by(q, p);
+}
+
+}  // namespace hider
