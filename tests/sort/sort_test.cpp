@@ -127,6 +127,23 @@ TEST_CASE("a plane classifies its own vertices as on it and cuts a straddling tr
     CHECK(std::count(want.begin(), want.end(), 1) > 100);
 }
 
+TEST_CASE("detail::udiv128_64 divides exactly for every divisor width") {
+    std::mt19937_64 rng(11);
+    long checked = 0;
+    for (int i = 0; i < 300000; ++i) {
+        uint64_t d = rng() >> (rng() % 64);
+        if (d == 0) d = 1;
+        const uint64_t u1 = (rng() >> (rng() % 64)) % d, u0 = i % 7 == 0 ? ~uint64_t{0} - rng() % 3 : rng();
+        const unsigned __int128 n = (static_cast<unsigned __int128>(u1) << 64) | u0;
+        uint64_t r = 0;
+        const uint64_t q = detail::udiv128_64(u1, u0, d, r);
+        CHECK(q == static_cast<uint64_t>(n / d));
+        CHECK(r == static_cast<uint64_t>(n % d));
+        ++checked;
+    }
+    CHECK(checked == 300000);
+}
+
 TEST_CASE("detail::div_round_128 rounds a 128-bit n / d to nearest exactly, and saturates out of range") {
     std::mt19937_64 rng(5);
     auto to128 = [](__int128 v) { Int128 r; r.lo = static_cast<uint64_t>(v); r.hi = static_cast<int64_t>(v >> 64); return r; };

@@ -171,14 +171,14 @@ private:
         }
         const Outline& po = cand.outline;
         const ScreenPlane& pp = cand.plane;
-        Outline qo;
-        outline_of(q, cuts(), qo);
         const ScreenPlane qp = plane_of(q);
         Cut& pc = act.cuts[0];
         Cut& qc = act.cuts[1];
         CutResult p_cut = CutResult::no_line, q_cut = CutResult::no_line;
         const int p_side = side_known_or_classified(p, po, qp, q.tri);
         if (p_side > 0) return false;  // (3) P wholly behind Q's plane
+        Outline qo;  // only now: a piece's outline costs its cuts' clipping
+        outline_of(q, cuts(), qo);
         const int q_side = side_known_or_classified(q, qo, pp, p.tri);
         if (q_side < 0) return false;                    // (4) Q wholly in front of P's plane
         if (projections_disjoint(po, qo)) return false;  // (5)

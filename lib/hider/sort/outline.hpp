@@ -43,23 +43,55 @@ inline bool crossing(const LineEquation& l, const LineEquation& m, ExactPoint& p
 /// The line's value at p times p.d (its sign is the side): below 3 x 2^61 in magnitude.
 inline int64_t line_value(const LineEquation& l, const ExactPoint& p) { return l.a * p.x + l.b * p.y + l.c0 * p.d; }
 
-/// round(n / d), ties away from zero, for d > 0 and |n| < d x 2^34 (else +-2^34): 34 steps of
-/// shift and subtract, no 128-bit library division.
+/// n / d and the remainder for d != 0 (where 64-bit division is a library call: two 64/32-bit steps).
+inline uint64_t udiv64_by_32(uint64_t n, uint32_t d, uint32_t& rem) {
+    if (!kSlow64BitDivide) {
+        rem = static_cast<uint32_t>(n % d);
+        return n / d;
+    }
+    const uint32_t hi = static_cast<uint32_t>(n >> 32);
+    const uint32_t q1 = hi / d;
+    const uint64_t low = (uint64_t{hi - q1 * d} << 32) | static_cast<uint32_t>(n);
+    const uint32_t q0 = udiv64_32(low, d, rem);
+    return (uint64_t{q1} << 32) | q0;
+}
+
+/// floor((u1 2^64 + u0) / d) and the remainder, for d != 0 and u1 < d: Hacker's Delight's divlu at
+/// twice the width (32-bit digits, 64/32-bit steps), exact, with no 128-bit library division.
+inline uint64_t udiv128_64(uint64_t u1, uint64_t u0, uint64_t d, uint64_t& rem) {
+    const int s = (d >> 32) != 0 ? clz32(static_cast<uint32_t>(d >> 32)) : 32 + clz32(static_cast<uint32_t>(d));  // d != 0
+    d <<= s;
+    const uint64_t vn1 = d >> 32, vn0 = d & 0xFFFFFFFFu;
+    const uint64_t un64 = s == 0 ? u1 : (u1 << s) | (u0 >> (64 - s)), un10 = u0 << s;
+    const uint64_t un1 = un10 >> 32, un0 = un10 & 0xFFFFFFFFu;
+    uint32_t r32 = 0;
+    uint64_t q1 = udiv64_by_32(un64, static_cast<uint32_t>(vn1), r32), rhat = r32;
+    while (q1 > 0xFFFFFFFFu || q1 * vn0 > ((rhat << 32) | un1)) {
+        --q1;
+        rhat += vn1;
+        if (rhat > 0xFFFFFFFFu) break;
+    }
+    const uint64_t un21 = (un64 << 32) + un1 - q1 * d;
+    uint64_t q0 = udiv64_by_32(un21, static_cast<uint32_t>(vn1), r32);
+    rhat = r32;
+    while (q0 > 0xFFFFFFFFu || q0 * vn0 > ((rhat << 32) | un0)) {
+        --q0;
+        rhat += vn1;
+        if (rhat > 0xFFFFFFFFu) break;
+    }
+    rem = ((un21 << 32) + un0 - q0 * d) >> s;
+    return (q1 << 32) | q0;
+}
+
+/// round(n / d), ties away from zero, for d > 0 and |n| < d x 2^34 (else +-2^34).
 inline int64_t div_round_128(const Int128& n, int64_t d) {
     const bool negative = n.sign() < 0;
     const Int128 m = negative ? -n : n;
     const Int128 top = m.shr(34);
     const uint64_t ud = static_cast<uint64_t>(d);
     if (top.hi != 0 || top.lo >= ud) return negative ? -(int64_t{1} << 34) : (int64_t{1} << 34);
-    uint64_t r = top.lo, q = 0;  // r < d < 2^63: 2 r + 1 fits
-    for (int bit = 33; bit >= 0; --bit) {
-        r = (r << 1) | ((m.lo >> bit) & 1u);
-        q <<= 1;
-        if (r >= ud) {
-            r -= ud;
-            q |= 1u;
-        }
-    }
+    uint64_t r = 0;
+    uint64_t q = udiv128_64(static_cast<uint64_t>(m.hi), m.lo, ud, r);  // m.hi < d: the quotient fits
     if (r >= ud - r) ++q;
     return negative ? -static_cast<int64_t>(q) : static_cast<int64_t>(q);
 }
@@ -113,18 +145,6 @@ inline ExactPoint outline_vertex(const Outline& o, int i) {
 /// Which sides of a line an outline has vertices strictly on (clip_outline's result).
 constexpr int kKeptSide = 1, kCutSide = 2;
 
-/// Reverses o's points and edges in [i, j).
-inline void reverse_outline(Outline& o, int i, int j) {
-    for (--j; i < j; ++i, --j) {
-        const OutlinePoint p = o.v[i];
-        o.v[i] = o.v[j];
-        o.v[j] = p;
-        const LineEquation e = o.edge[i];
-        o.edge[i] = o.edge[j];
-        o.edge[j] = e;
-    }
-}
-
 /// The point where edge i of o (whose ends lie strictly on both sides of `line`) crosses it, rounded to
 /// the grid with the plane's depth there.
 inline OutlinePoint cut_point(const Outline& o, int i, const LineEquation& line, const ScreenVertex (&v)[3]) {
@@ -150,8 +170,11 @@ inline int clip_outline(Outline& o, const CutLine& cut, const ScreenVertex (&v)[
     const int n = o.count;
     int8_t s[3 + kMaxPieceCuts];
     int sides = 0;
+    const int64_t near = abs_value(int64_t{line.a}) + abs_value(int64_t{line.b});
     for (int i = 0; i < n; ++i) {
-        const int64_t e = line_value(line, outline_vertex(o, i));
+        // A grid point is within half a subpixel of its vertex: farther than that from the line, its side is the vertex's.
+        int64_t e = int64_t{line.a} * o.v[i].x + int64_t{line.b} * o.v[i].y + line.c0;
+        if (2 * abs_value(e) <= near) e = line_value(line, outline_vertex(o, i));
         s[i] = static_cast<int8_t>(e > 0 ? 1 : (e < 0 ? -1 : 0));
         sides |= e > 0 ? kKeptSide : (e < 0 ? kCutSide : 0);
     }
@@ -167,31 +190,39 @@ inline int clip_outline(Outline& o, const CutLine& cut, const ScreenVertex (&v)[
     int kept = 1;
     while (kept < n && s[(first + kept) % n] >= 0) ++kept;
     const int last = (first + kept - 1) % n, before = first == 0 ? n - 1 : first - 1;
-    // The crossing entering the run, on the edge before it, and the one leaving it, on the run's last edge.
-    const bool enters = s[first] > 0, leaves = s[last] > 0;
+    // The crossing entering the run, on the edge before it, and the one leaving it, on the run's last edge
+    // (none where the run starts or ends on the line). At least one vertex goes: kept + 2 <= n + 1 points.
+    const int enters = s[first] > 0 ? 1 : 0, leaves = s[last] > 0 ? 1 : 0;
     const OutlinePoint in = enters ? cut_point(o, before, line, v) : o.v[first];
     const LineEquation in_edge = o.edge[before];
     const OutlinePoint out = leaves ? cut_point(o, last, line, v) : o.v[last];
-    // Rotate the run to the front (after the entering point), then close it along the line.
-    reverse_outline(o, 0, first);
-    reverse_outline(o, first, n);
-    reverse_outline(o, 0, n);
-    int count = kept;
-    if (enters) {
-        for (int i = count; i > 0; --i) {
-            o.v[i] = o.v[i - 1];
-            o.edge[i] = o.edge[i - 1];
+    // The new points take the place of the vertices cut away: [in] run [out], cyclically.
+    const int from = first, to = first <= last ? enters : last + 1 + leaves + enters;
+    const int moved = first <= last ? kept : n - first;  // the run, or its part from `first` to the end
+    if (to > from)
+        for (int i = moved - 1; i >= 0; --i) {
+            o.v[to + i] = o.v[from + i];
+            o.edge[to + i] = o.edge[from + i];
         }
-        o.v[0] = in;
-        o.edge[0] = in_edge;
-        ++count;
+    else if (to < from)
+        for (int i = 0; i < moved; ++i) {
+            o.v[to + i] = o.v[from + i];
+            o.edge[to + i] = o.edge[from + i];
+        }
+    const int last_at = first <= last ? enters + kept - 1 : last, in_at = first <= last ? 0 : last + 1 + leaves;
+    if (enters) {
+        o.v[in_at] = in;
+        o.edge[in_at] = in_edge;
     }
-    if (leaves && count < 3 + kMaxPieceCuts) {
-        o.v[count] = out;
-        o.edge[count++] = line;
+    if (leaves) {
+        o.v[last_at + 1] = out;
+        o.edge[last_at + 1] = line;
     } else {
-        o.edge[count - 1] = line;  // the run ends on the line
+        o.edge[last_at] = line;  // the run ends on the line
     }
+    const int count = kept + enters + leaves;
+    o.count = count;
+    if (enters && leaves) return sides;
     // A point between two edges on one line (the line through an edge) is no vertex: drop it.
     int m = 0;
     for (int i = 0; i < count; ++i) {

@@ -172,29 +172,30 @@ inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, con
     if (depth >= kMaxPieceCuts) return CutResult::too_deep;
     CutLine line{};
     if (!crossing_line(pl, p, line)) return CutResult::no_line;
-    Outline fo, no;
-    outline_of(p, cuts, fo);
-    no = fo;
+    // One outline at a time (a chip's stack): the far side's, then the near side's from p's again.
+    Outline o;
+    outline_of(p, cuts, o);
     // Each side keeps a region of nonzero area exactly when some vertex lies strictly on it.
-    const int sides = detail::clip_outline(fo, line, p.v);
-    detail::clip_outline(no, reversed(line), p.v);
+    const int sides = detail::clip_outline(o, line, p.v);
     const bool far_ok = (sides & detail::kKeptSide) != 0, near_ok = (sides & detail::kCutSide) != 0;
     if (!far_ok || !near_ok) return far_ok ? CutResult::far_only : (near_ok ? CutResult::near_only : CutResult::no_line);
     far_cut = {line, p.cut, plane_tri | kCutFar};
     near_cut = {reversed(line), p.cut, plane_tri};
-    auto make = [&p](const Outline& o, ScreenPoly& out) {
+    auto make = [&p](const Outline& piece, ScreenPoly& out) {
         out = p;  // p's box holds the piece; piece_box() narrows it for a piece that is kept
         out.cut = kNoCut;
         out.moved_at = kNotMoved;
-        out.zmin = o.v[0].z;
-        out.zmax = o.v[0].z;
-        for (int i = 1; i < o.count; ++i) {
-            out.zmin = min(out.zmin, o.v[i].z);
-            out.zmax = max(out.zmax, o.v[i].z);
+        out.zmin = piece.v[0].z;
+        out.zmax = piece.v[0].z;
+        for (int i = 1; i < piece.count; ++i) {
+            out.zmin = min(out.zmin, piece.v[i].z);
+            out.zmax = max(out.zmax, piece.v[i].z);
         }
     };
-    make(fo, far);
-    make(no, near);
+    make(o, far);
+    outline_of(p, cuts, o);
+    detail::clip_outline(o, reversed(line), p.v);
+    make(o, near);
     return CutResult::cut;
 }
 
