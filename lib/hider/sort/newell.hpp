@@ -199,7 +199,7 @@ private:
             ++ns_.cycles;  // a cycle: cut one of them by the other's plane, or another pair of the cycle
             if (p_cut == CutResult::cut) take(act, cur, pc);
             else if (q_cut == CutResult::cut) take(act, qi, qc);
-            else too_deep = !break_cycle(qi, act) && too_deep;
+            else too_deep = !break_cycle(qi, act) && (too_deep || cycle_too_deep_);
         } else {  // piercing: each straddles the other's plane, so cut both along their intersection
             if (p_cut == CutResult::cut) take(act, cur, pc);
             if (q_cut == CutResult::cut) take(act, qi, qc);
@@ -233,6 +233,7 @@ private:
     /// hide a small crossing, which keeps the cycle closed); failing that, any two polygons of the cycle,
     /// within the pair-test budget. False when none does.
     bool break_cycle(uint32_t q, Action& act) {
+        cycle_too_deep_ = false;
         size_t j = chain_len_;
         while (j-- > 0 && s_.chain[j] != q) {}
         for (int exact = 0; exact < 2; ++exact)
@@ -258,14 +259,17 @@ private:
     }
 
     /// Cuts polygon x by the plane of polygon y when x straddles it (beyond the slack, or exactly)
-    /// and the cut leaves something on both sides; adds the cut to act (in its next slot).
+    /// and the cut leaves something on both sides; adds the cut to act (in its next slot). A cut refused
+    /// for a piece at kMaxPieceCuts sets cycle_too_deep_.
     bool cut_straddling(uint32_t x, uint32_t y, bool exact, Action& act) {
         const ScreenPoly &px = polys_[x], &py = polys_[y];
         if (known_side(px, cuts(), py.tri) != 0) return false;
         const ScreenPlane pl = plane_of(py);
         if (!straddles(px, pl, exact)) return false;
         Cut& c = act.cuts[act.count];
-        if (cut_polygon(px, cuts(), pl, py.tri, c.far, c.near, c.far_cut, c.near_cut) != CutResult::cut) return false;
+        const CutResult r = cut_polygon(px, cuts(), pl, py.tri, c.far, c.near, c.far_cut, c.near_cut);
+        cycle_too_deep_ = cycle_too_deep_ || r == CutResult::too_deep;
+        if (r != CutResult::cut) return false;
         take(act, x, c);
         return true;
     }
@@ -423,6 +427,7 @@ private:
     /// twice in one chain closes a cycle. A polygon's moved_at holds the chain it was last moved in.
     uint32_t chain_ = 0;
     size_t chain_len_ = 0;  ///< the chain's polygons are scratch.chain[0..chain_len_), the candidate last
+    bool cycle_too_deep_ = false;  ///< break_cycle() met a straddling polygon too deep to cut
     Status status_ = Status::ok;
 };
 

@@ -1,10 +1,7 @@
 // The outline of a Newell polygon: its triangle clipped by its cut lines, kept as the exact lines of
-// its edges (so every vertex is an exact crossing of two lines) and as grid points for the tests.
-// Clipping decides each vertex's side of a new line exactly and puts a new point at the exact crossing
-// of the line with the edge's own line, rounded once: every point is within half a subpixel of the
-// region PieceRaster draws, with the depth of the triangle's plane there, however shallow the angle
-// two cuts meet at. (Clipping the rounded points instead let a point drift along a later cut far from
-// the region, and Newell then misordered single pixels.)
+// its edges (every vertex is an exact crossing of two lines) and as grid points for the tests. A new
+// point is the exact crossing of the cut with the edge's own line, rounded once, with the plane's depth
+// there: every point is within half a subpixel of the region PieceRaster draws, at any cutting angle.
 #pragma once
 #include <hider/int128.hpp>
 #include <hider/sort/poly.hpp>
@@ -43,12 +40,8 @@ inline bool crossing(const LineEquation& l, const LineEquation& m, ExactPoint& p
 /// The line's value at p times p.d (its sign is the side): below 3 x 2^61 in magnitude.
 inline int64_t line_value(const LineEquation& l, const ExactPoint& p) { return l.a * p.x + l.b * p.y + l.c0 * p.d; }
 
-/// n / d and the remainder for d != 0 (where 64-bit division is a library call: two 64/32-bit steps).
-inline uint64_t udiv64_by_32(uint64_t n, uint32_t d, uint32_t& rem) {
-    if (!kSlow64BitDivide) {
-        rem = static_cast<uint32_t>(n % d);
-        return n / d;
-    }
+/// n / d and the remainder for d != 0 in two 64/32-bit steps (no 64-bit library division).
+inline uint64_t udiv64_by_32_steps(uint64_t n, uint32_t d, uint32_t& rem) {
     const uint32_t hi = static_cast<uint32_t>(n >> 32);
     const uint32_t q1 = hi / d;
     const uint64_t low = (uint64_t{hi - q1 * d} << 32) | static_cast<uint32_t>(n);
@@ -56,10 +49,18 @@ inline uint64_t udiv64_by_32(uint64_t n, uint32_t d, uint32_t& rem) {
     return (uint64_t{q1} << 32) | q0;
 }
 
+/// n / d and the remainder for d != 0: native where the CPU divides 64 bits, else in 64/32-bit steps.
+inline uint64_t udiv64_by_32(uint64_t n, uint32_t d, uint32_t& rem) {
+    if constexpr (kSlow64BitDivide) return udiv64_by_32_steps(n, d, rem);
+    rem = static_cast<uint32_t>(n % d);
+    return n / d;
+}
+
 /// floor((u1 2^64 + u0) / d) and the remainder, for d != 0 and u1 < d: Hacker's Delight's divlu at
 /// twice the width (32-bit digits, 64/32-bit steps), exact, with no 128-bit library division.
 inline uint64_t udiv128_64(uint64_t u1, uint64_t u0, uint64_t d, uint64_t& rem) {
-    const int s = (d >> 32) != 0 ? clz32(static_cast<uint32_t>(d >> 32)) : 32 + clz32(static_cast<uint32_t>(d));  // d != 0
+    const uint32_t d_hi = static_cast<uint32_t>(d >> 32);
+    const int s = d_hi != 0 ? clz32(d_hi) : 32 + clz32(static_cast<uint32_t>(d));  // d != 0
     d <<= s;
     const uint64_t vn1 = d >> 32, vn0 = d & 0xFFFFFFFFu;
     const uint64_t un64 = s == 0 ? u1 : (u1 << s) | (u0 >> (64 - s)), un10 = u0 << s;
@@ -154,8 +155,8 @@ inline OutlinePoint cut_point(const Outline& o, int i, const LineEquation& line,
 }
 
 /// Clips outline o of triangle v (without edges: the triangle itself) by the half-plane cut_side(line)
-/// >= 0, in place, each vertex's side decided exactly. Returns kKeptSide and/or kCutSide: the sides o had vertices strictly on before
-/// (the outline is unchanged without kCutSide).
+/// >= 0, in place, each vertex's side decided exactly. Returns kKeptSide and/or kCutSide: the sides o
+/// had vertices strictly on before (the outline is unchanged without kCutSide).
 inline int clip_outline(Outline& o, const CutLine& cut, const ScreenVertex (&v)[3]) {
     if (!o.edges) {  // the whole triangle: its three edges, its inside kept
         const bool turn = cut_side({o.v[0].x, o.v[0].y, o.v[1].x, o.v[1].y}, o.v[2].x, o.v[2].y) >= 0;
@@ -172,7 +173,8 @@ inline int clip_outline(Outline& o, const CutLine& cut, const ScreenVertex (&v)[
     int sides = 0;
     const int64_t near = abs_value(int64_t{line.a}) + abs_value(int64_t{line.b});
     for (int i = 0; i < n; ++i) {
-        // A grid point is within half a subpixel of its vertex: farther than that from the line, its side is the vertex's.
+        // A grid point is within half a subpixel of its vertex: farther than that from the line, it
+        // is on the vertex's side.
         int64_t e = int64_t{line.a} * o.v[i].x + int64_t{line.b} * o.v[i].y + line.c0;
         if (2 * abs_value(e) <= near) e = line_value(line, outline_vertex(o, i));
         s[i] = static_cast<int8_t>(e > 0 ? 1 : (e < 0 ? -1 : 0));
@@ -220,18 +222,9 @@ inline int clip_outline(Outline& o, const CutLine& cut, const ScreenVertex (&v)[
     } else {
         o.edge[last_at] = line;  // the run ends on the line
     }
-    const int count = kept + enters + leaves;
-    o.count = count;
-    if (enters && leaves) return sides;
-    // A point between two edges on one line (the line through an edge) is no vertex: drop it.
-    int m = 0;
-    for (int i = 0; i < count; ++i) {
-        const LineEquation &a = o.edge[m == 0 ? count - 1 : m - 1], &b = o.edge[i];
-        if (m + count - i > 3 && int32_t{a.a} * b.b == int32_t{b.a} * a.b && int32_t{a.a} * b.a + int32_t{a.b} * b.b > 0) continue;
-        o.v[m] = o.v[i];
-        o.edge[m++] = o.edge[i];
-    }
-    o.count = m;
+    // No two edges of the result lie on one line: a kept vertex on the line with an edge along it would
+    // put every vertex on one side of the line, and then nothing is clipped (or nothing of area is left).
+    o.count = kept + enters + leaves;
     return sides;
 }
 }  // namespace detail

@@ -1,7 +1,6 @@
 // The box of a piece's exact region, for the pieces Newell keeps: the band test (with_poly_raster) and
-// Newell's extent tests and grid trust it to hold every pixel the piece draws. A box taken from the
-// piece's outline (plane.hpp), whose cut points are rounded to the grid, is not enough: a point rounded
-// on one cut line drifts far along a later cut that meets it at a shallow angle.
+// Newell's extent tests and grid trust it to hold every pixel the piece draws. Computed from the lines
+// alone (no outline, no depths), when a cut is kept.
 #pragma once
 #include <hider/sort/plane.hpp>
 
