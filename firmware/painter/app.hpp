@@ -43,7 +43,7 @@ struct Buffers {
     hider::Span<hider::ScreenVertex> verts;  ///< one per mesh vertex
     hider::Span<hider::ScreenPoly> polys;    ///< pool: the built triangles plus room for Newell's cuts
     hider::Span<hider::PieceCut> cuts;       ///< two per cut Newell may make
-    hider::NewellScratch newell;             ///< sort keys (shared with keys/scratch below), heap, grid, chain
+    hider::NewellScratch newell;             ///< sort keys (shared with keys/scratch below), heap, grid, chain, reorders
     hider::Span<uint32_t> order;             ///< >= polys.size()
     hider::Span<hider::SortKey> keys;        ///< >= polys.size()
     hider::Span<hider::SortKey> scratch;     ///< >= polys.size()
@@ -64,6 +64,7 @@ struct Storage {
     uint32_t links[2 * kPolys];
     uint32_t cells[hider::grid_cells(kWidth, kHeight)];
     uint32_t chain[kPolys];
+    uint32_t reorders[hider::kNewellReorders];
     uint32_t order[kPolys];
     hider::SortKey keys[kPolys];
     hider::SortKey scratch[kPolys];
@@ -72,7 +73,7 @@ struct Storage {
     uint8_t ppm_row[kWidth * 3];
 
     Buffers buffers() {
-        return {verts, polys, cuts, {keys, scratch, heap, heap_pos, links, cells, chain}, order, keys, scratch, color, coverage, kRows};
+        return {verts, polys, cuts, {keys, scratch, heap, heap_pos, links, cells, chain, reorders}, order, keys, scratch, color, coverage, kRows};
     }
 };
 

@@ -191,6 +191,77 @@ long outline_errors(const ScreenPoly& p, Span<const PieceCut> cuts, const Outlin
 }
 }  // namespace
 
+namespace {
+ScreenVertex screen_vertex(int32_t x, int32_t y, uint32_t z) {
+    ScreenVertex v;
+    v.x = static_cast<int16_t>(x);
+    v.y = static_cast<int16_t>(y);
+    v.z = z;
+    return v;
+}
+
+/// Random coordinates and depths of a w x h frame's test scenes.
+struct RandomScreen {
+    std::mt19937& rng;
+    int32_t coord(int32_t half) { return static_cast<int32_t>(rng() % static_cast<uint32_t>(2 * half + 1)) - half; }
+    ScreenVertex vertex(int32_t hx, int32_t hy) {  // named steps: argument order is unspecified in C++
+        const int32_t x = coord(hx), y = coord(hy);
+        return screen_vertex(x, y, (1u << 29) + static_cast<uint32_t>(rng() % (1u << 28)));
+    }
+    /// A random triangle (mesh triangle `id`) reaching a little past the frame; false when it has no area.
+    bool triangle(int w, int h, uint32_t id, ScreenPoly& tri) {
+        tri = ScreenPoly{{}, 0, 0, 0, 0, 0, 0, id, kNotMoved, kNoCut, 0};
+        for (ScreenVertex& v : tri.v) v = vertex(w * 10, h * 10);
+        if (TriangleRaster::signed_area(tri.v[0], tri.v[1], tri.v[2]) == 0) return false;
+        update_extents(tri);
+        return true;
+    }
+};
+
+/// Cuts the pieces in `live` (their cut records in `cuts`) `rounds` times over by the planes of random
+/// triangles, first by `first_wall`'s when given; each cut keeps both pieces when both are non-empty,
+/// their boxes narrowed as Newell does. With `shallow`, the walls are slightly moved copies of one, so
+/// that the cut lines of a chain meet at shallow angles.
+void cut_randomly(RandomScreen& rs, int w, int h, bool shallow, int rounds, const ScreenPoly* first_wall, std::vector<PieceCut>& cuts,
+                  std::vector<ScreenPoly>& live) {
+    ScreenPoly base{{}, 0, 0, 0, 0, 0, 0, 99, kNotMoved, kNoCut, 0};
+    for (ScreenVertex& v : base.v) v = rs.vertex(w * 12, h * 12);
+    for (int round = 0; round < rounds; ++round) {
+        std::vector<ScreenPoly> next;
+        for (size_t i = 0; i < live.size(); ++i) {
+            const ScreenPoly& p = live[i];
+            ScreenPoly wall{{}, 0, 0, 0, 0, 0, 0, 100u + static_cast<uint32_t>(round), kNotMoved, kNoCut, 0};
+            for (ScreenVertex& v : wall.v) v = rs.vertex(w * 12, h * 12);
+            if (shallow)
+                for (int k = 0; k < 3; ++k) {
+                    const int32_t dx = rs.coord(6), dy = rs.coord(6), dz = rs.coord(1 << 20);
+                    wall.v[k] = screen_vertex(base.v[k].x + dx, base.v[k].y + dy, base.v[k].z + static_cast<uint32_t>(dz));
+                }
+            if (round == 0 && first_wall != nullptr) wall = *first_wall;
+            if (TriangleRaster::signed_area(wall.v[0], wall.v[1], wall.v[2]) == 0) {
+                next.push_back(p);
+                continue;
+            }
+            ScreenPoly far{}, near{};
+            PieceCut far_cut{}, near_cut{};
+            if (cut_polygon(p, {cuts.data(), cuts.size()}, plane_of(wall), wall.tri, far, near, far_cut, near_cut) != CutResult::cut) {
+                next.push_back(p);
+                continue;
+            }
+            piece_box(p, {cuts.data(), cuts.size()}, far_cut.line, far);
+            piece_box(p, {cuts.data(), cuts.size()}, near_cut.line, near);
+            far.cut = static_cast<uint32_t>(cuts.size());
+            cuts.push_back(far_cut);
+            near.cut = static_cast<uint32_t>(cuts.size());
+            cuts.push_back(near_cut);
+            next.push_back(far);
+            next.push_back(near);
+        }
+        live.swap(next);
+    }
+}
+}  // namespace
+
 TEST_CASE("a piece's box holds every pixel centre it draws, after chains of cuts at any angle") {
     // Random triangles cut again and again by the planes of random triangles: each cut keeps both pieces
     // when both are non-empty, down to chains of 8. Every pixel centre PieceRaster draws for a piece must
@@ -204,59 +275,16 @@ TEST_CASE("a piece's box holds every pixel centre it draws, after chains of cuts
     const FrameView<Grey8Format> frame = whole_frame(w, h);
     const BandBounds bb = band_bounds(frame);
     const int32_t ox = kSubpixel / 2 - w * (kSubpixel / 2), oy = kSubpixel / 2 - h * (kSubpixel / 2);
-    auto sv = [](int32_t x, int32_t y, uint32_t z) { ScreenVertex v; v.x = static_cast<int16_t>(x); v.y = static_cast<int16_t>(y); v.z = z; return v; };
     long pieces_checked = 0, centres = 0, outside = 0, outside_rounded = 0, coverage_errors = 0, points = 0, bad_points = 0;
     for (uint32_t seed = 1; seed <= 6000; ++seed) {
         std::mt19937 rng(seed);
-        auto coord = [&](int32_t half) { return static_cast<int32_t>(rng() % static_cast<uint32_t>(2 * half + 1)) - half; };
-        auto depth = [&]() { return (1u << 29) + static_cast<uint32_t>(rng() % (1u << 28)); };
-        auto vertex = [&](int32_t hx, int32_t hy) {  // named steps: argument order is unspecified in C++
-            const int32_t x = coord(hx), y = coord(hy);
-            return sv(x, y, depth());
-        };
-        ScreenPoly tri{{}, 0, 0, 0, 0, 0, 0, 1, kNotMoved, kNoCut, 0};
-        for (ScreenVertex& v : tri.v) v = vertex(w * 10, h * 10);
-        if (TriangleRaster::signed_area(tri.v[0], tri.v[1], tri.v[2]) == 0) continue;
-        update_extents(tri);
-        ScreenPoly base{{}, 0, 0, 0, 0, 0, 0, 99, kNotMoved, kNoCut, 0};
-        for (ScreenVertex& v : base.v) v = vertex(w * 12, h * 12);
+        RandomScreen rs{rng};
         std::vector<PieceCut> cuts;
         cuts.reserve(64);
+        ScreenPoly tri;
+        if (!rs.triangle(w, h, 1, tri)) continue;
         std::vector<ScreenPoly> live{tri};
-        for (int round = 0; round < 8; ++round) {
-            std::vector<ScreenPoly> next;
-            for (size_t i = 0; i < live.size(); ++i) {
-                const ScreenPoly& p = live[i];
-                // A plane through a random triangle; on odd seeds a slightly moved copy of the seed's first
-                // wall, so that the cut lines of a chain meet at shallow angles.
-                ScreenPoly wall{{}, 0, 0, 0, 0, 0, 0, 100u + static_cast<uint32_t>(round), kNotMoved, kNoCut, 0};
-                for (ScreenVertex& v : wall.v) v = vertex(w * 12, h * 12);
-                if (seed % 2 == 1)
-                    for (int k = 0; k < 3; ++k) {
-                        const int32_t dx = coord(6), dy = coord(6), dz = coord(1 << 20);
-                        wall.v[k] = sv(base.v[k].x + dx, base.v[k].y + dy, base.v[k].z + static_cast<uint32_t>(dz));
-                    }
-                if (TriangleRaster::signed_area(wall.v[0], wall.v[1], wall.v[2]) == 0) {
-                    next.push_back(p);
-                    continue;
-                }
-                ScreenPoly far{}, near{};
-                PieceCut far_cut{}, near_cut{};
-                if (cut_polygon(p, {cuts.data(), cuts.size()}, plane_of(wall), wall.tri, far, near, far_cut, near_cut) != CutResult::cut) {
-                    next.push_back(p);
-                    continue;
-                }
-                piece_box(p, {cuts.data(), cuts.size()}, far_cut.line, far);  // as Newell does for the pieces it keeps
-                piece_box(p, {cuts.data(), cuts.size()}, near_cut.line, near);
-                far.cut = static_cast<uint32_t>(cuts.size());
-                cuts.push_back(far_cut);
-                near.cut = static_cast<uint32_t>(cuts.size());
-                cuts.push_back(near_cut);
-                next.push_back(far);
-                next.push_back(near);
-            }
-            live.swap(next);
-        }
+        cut_randomly(rs, w, h, seed % 2 == 1, 8, nullptr, cuts, live);
         std::vector<int> count(static_cast<size_t>(w) * h, 0), want(static_cast<size_t>(w) * h, 0);
         auto cover = [&](const ScreenPoly& p, std::vector<int>& c, const ScreenPoly* rounded_box) {
             with_poly_raster(p, {cuts.data(), cuts.size()}, bb, frame, [&](const auto& r, int32_t y0, int32_t y1) {
@@ -304,6 +332,76 @@ TEST_CASE("a piece's box holds every pixel centre it draws, after chains of cuts
     CHECK(points > 150000);
     CHECK(bad_points == 0);
     CHECK(coverage_errors == 0);
+}
+
+TEST_CASE("projections_disjoint() and drawn_under() agree with the pixels two cut triangles draw") {
+    // Two random triangles, each cut four times over (on odd seeds by planes close to one another, so
+    // that the pieces have edges a few subpixels long between cuts). For every pair of pieces of the
+    // two: when projections_disjoint() says disjoint, no pixel centre may be drawn by both (an outline's
+    // grid points can turn a short edge any way; separating on them let Newell draw a piece first that
+    // lay in front of another over 47 pixels); drawn_under() must say whether the second's depth is at
+    // most the first's at every shared centre, as a pixel-by-pixel comparison of the depths drawn.
+    const int w = 40, h = 32;
+    const FrameView<Grey8Format> frame = whole_frame(w, h);
+    const BandBounds bb = band_bounds(frame);
+    long pairs = 0, disjoint = 0, disjoint_shared = 0, overlapping = 0, under = 0, under_wrong = 0;
+    for (uint32_t seed = 1; seed <= 8000; ++seed) {
+        std::mt19937 rng(seed * 7919u);
+        RandomScreen rs{rng};
+        std::vector<PieceCut> cuts;
+        cuts.reserve(256);
+        ScreenPoly ta, tb;
+        if (!rs.triangle(w, h, 1, ta) || !rs.triangle(w, h, 2, tb)) continue;
+        // On even seeds each is cut first by the other's plane, as Newell cuts a piercing pair: their
+        // pieces then meet along nearly the same line.
+        std::vector<ScreenPoly> a{ta}, b{tb};
+        cut_randomly(rs, w, h, seed % 2 == 1, 5, seed % 2 == 0 ? &tb : nullptr, cuts, a);
+        cut_randomly(rs, w, h, seed % 3 != 0, 5, seed % 2 == 0 ? &ta : nullptr, cuts, b);
+        const Span<const PieceCut> cs{cuts.data(), cuts.size()};
+        // Each piece's depth at every pixel centre it draws (0: not drawn), stepped pixel by pixel.
+        auto depths = [&](const ScreenPoly& p) {
+            std::vector<uint64_t> d(static_cast<size_t>(w) * h, 0);
+            with_poly_raster(p, cs, bb, frame, [&](const auto& r, int32_t y0, int32_t y1) {
+                return r.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t z) {
+                    for (int32_t x = x0; x < x1; ++x, z += r.dzdx()) d[static_cast<size_t>(y) * w + x] = uint64_t{z} + 1;
+                });
+            });
+            return d;
+        };
+        std::vector<std::vector<uint64_t>> da, db;
+        for (const ScreenPoly& p : a) da.push_back(depths(p));
+        for (const ScreenPoly& p : b) db.push_back(depths(p));
+        for (size_t i = 0; i < a.size(); ++i)
+            for (size_t k = 0; k < b.size(); ++k) {
+                Outline oa, ob;
+                outline_of(a[i], cs, oa);
+                outline_of(b[k], cs, ob);
+                long shared = 0;
+                bool want_under = true;
+                for (size_t px = 0; px < da[i].size(); ++px)
+                    if (da[i][px] != 0 && db[k][px] != 0) {
+                        ++shared;
+                        want_under = want_under && db[k][px] <= da[i][px];
+                    }
+                ++pairs;
+                overlapping += shared != 0;
+                if (projections_disjoint(oa, ob)) {
+                    ++disjoint;
+                    disjoint_shared += shared != 0;
+                }
+                const bool got_under = drawn_under(a[i], b[k], cs, w, h);
+                under += got_under && shared != 0;
+                under_wrong += got_under != want_under;
+            }
+    }
+    MESSAGE("pairs " << pairs << ", sharing a pixel " << overlapping << ", disjoint " << disjoint << " (sharing a pixel: "
+                     << disjoint_shared << "), drawn under with a shared pixel " << under << ", drawn_under() wrong " << under_wrong);
+    CHECK(pairs > 150000);
+    CHECK(overlapping > 10000);
+    CHECK(disjoint > 100000);
+    CHECK(under > 5000);
+    CHECK(disjoint_shared == 0);
+    CHECK(under_wrong == 0);
 }
 
 TEST_CASE("Newell's cut pool at capacity N finishes the frame exactly; at N - 1 it reports the drop") {
@@ -378,7 +476,8 @@ TEST_CASE("newell_order refuses an order list or scratch smaller than the polygo
     BoundedList<PieceCut> cuts(cut_store.data(), cut_store.size());
     std::vector<SortKey> keys(10), sort_scratch(10);
     NewellScratch scratch{{keys.data(), 10}, {sort_scratch.data(), 10}, {heap.data(), 10}, {pos.data(), 10},
-                          {links.data(), 20},  {cells.data(), cells.size()},  {chain.data(), 10}};
+                          {links.data(), 20},  {cells.data(), cells.size()},  {chain.data(), 10},
+                          {}};
     NewellStats ns;
     BoundedList<uint32_t> order(ord.data(), ord.size());
     CHECK(newell_order(view, polys, cuts, scratch, order, ns) == Status::ok);
@@ -447,7 +546,7 @@ TEST_CASE("Newell with a full pool never writes past a chain of N entries, and o
         std::vector<uint32_t> heap(cap), pos(cap), links(2 * cap), cells(grid_cells(s.width, s.height)), ord(cap);
         std::vector<uint32_t> chain(chain_len + 4, 0xC0FFEEu);  // the caller's array, then 4 words it does not own
         const NewellScratch scratch{{keys.data(), cap}, {sort_scratch.data(), cap}, {heap.data(), cap}, {pos.data(), cap},
-                                    {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), chain_len}};
+                                    {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), chain_len}, {}};
         BoundedList<uint32_t> order(ord.data(), cap);
         Run r;
         NewellOptions opt;
@@ -471,6 +570,51 @@ TEST_CASE("Newell with a full pool never writes past a chain of N entries, and o
     CHECK(spare.chain_tail_intact);
 }
 
+TEST_CASE("Newell breaks a cycle at a pair its pixels order, and reports it when NewellScratch::reorders is full") {
+    // boxes-143-6 without culling closes a cycle of pieces that no plane cuts and whose closing pair's
+    // shared pixels disagree with the order found: it is broken at another pair of the cycle, which its
+    // pixels allow, kept in `reorders` while both wait. Without room there the pair stays unresolved
+    // (a wrong pixel) and the status says so; with room the status is ok and nothing is unresolved.
+    const tool::Scene s = test::generated_scene("boxes-143-6");
+    View view;
+    REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
+    std::vector<ScreenVertex> verts(s.positions.size());
+    REQUIRE(project_vertices(view, s.mesh().positions, {verts.data(), verts.size()}) == Status::ok);
+    auto run = [&](size_t room, NewellStats& ns, bool& tail_intact) {
+        const size_t cap = 2048;
+        std::vector<ScreenPoly> store(cap);
+        BoundedList<ScreenPoly> polys(store.data(), cap);
+        FrameStats st;
+        build_polys(view, s.mesh(), {verts.data(), verts.size()}, false, polys, st);
+        std::vector<PieceCut> cut_store(2 * cap);
+        BoundedList<PieceCut> cuts(cut_store.data(), cut_store.size());
+        std::vector<SortKey> keys(cap), sort_scratch(cap);
+        std::vector<uint32_t> heap(cap), pos(cap), links(2 * cap), cells(grid_cells(s.width, s.height)), ord(cap), chain(cap);
+        std::vector<uint32_t> reorders(room + 4, 0xC0FFEEu);  // the caller's array, then 4 words it does not own
+        const NewellScratch scratch{{keys.data(), cap}, {sort_scratch.data(), cap}, {heap.data(), cap}, {pos.data(), cap},
+                                    {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), cap},
+                                    {reorders.data(), room}};
+        BoundedList<uint32_t> order(ord.data(), cap);
+        NewellOptions opt;
+        opt.face_ids = s.mesh().ids;
+        const Status status = newell_order(view, polys, cuts, scratch, order, ns, opt);
+        tail_intact = std::all_of(reorders.begin() + static_cast<ptrdiff_t>(room), reorders.end(), [](uint32_t w) { return w == 0xC0FFEEu; });
+        return status;
+    };
+    NewellStats with_room, without, odd;
+    bool intact_room = false, intact_none = false, intact_odd = false;
+    CHECK(run(kNewellReorders, with_room, intact_room) == Status::ok);
+    CHECK(run(0, without, intact_none) == Status::capacity_exceeded);
+    CHECK(run(1, odd, intact_odd) == Status::capacity_exceeded);  // one entry holds no pair
+    MESSAGE("with room: pixel-decided " << with_room.pixel_decided << ", unresolved " << with_room.unresolved
+                                        << "; without: pixel-decided " << without.pixel_decided << ", unresolved " << without.unresolved);
+    CHECK(with_room.unresolved == 0);
+    CHECK(with_room.pixel_decided > 0);
+    CHECK(without.unresolved > 0);
+    CHECK(odd.unresolved == without.unresolved);
+    CHECK((intact_room && intact_none && intact_odd));
+}
+
 TEST_CASE("Newell's pair-test budget: any budget gives every polygon once, and ok only with the unlimited order") {
     // Three bars in a cycle with back faces: cycles whose consecutive pairs cannot be cut, broken by a cut
     // between two other polygons of the cycle. Whatever the budget, each polygon goes out once; the status
@@ -484,14 +628,16 @@ TEST_CASE("Newell's pair-test budget: any budget gives every polygon once, and o
     std::vector<ScreenPoly> store(cap);
     std::vector<PieceCut> cut_store(2 * cap);
     std::vector<SortKey> keys(cap), sort_scratch(cap);
-    std::vector<uint32_t> heap(cap), pos(cap), links(2 * cap), cells(grid_cells(s.width, s.height)), ord(cap), chain(cap);
+    std::vector<uint32_t> heap(cap), pos(cap), links(2 * cap), cells(grid_cells(s.width, s.height)), ord(cap), chain(cap),
+        reorders(kNewellReorders);
     auto run = [&](uint64_t budget, NewellStats& ns, std::vector<uint32_t>& out, size_t& polygons) {
         BoundedList<ScreenPoly> polys(store.data(), cap);
         FrameStats st;
         build_polys(view, s.mesh(), {verts.data(), verts.size()}, false, polys, st);
         BoundedList<PieceCut> cuts(cut_store.data(), cut_store.size());
         const NewellScratch scratch{{keys.data(), cap}, {sort_scratch.data(), cap}, {heap.data(), cap}, {pos.data(), cap},
-                                    {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), cap}};
+                                    {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), cap},
+                                    {reorders.data(), reorders.size()}};
         BoundedList<uint32_t> order(ord.data(), cap);
         NewellOptions opt;
         opt.face_ids = s.mesh().ids;

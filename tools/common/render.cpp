@@ -35,7 +35,7 @@ uint32_t count_covered(Span<const ScreenPoly> polys, Span<const PieceCut> cuts, 
 struct SortedStore {
     std::vector<ScreenPoly> polys;
     std::vector<PieceCut> cuts;
-    std::vector<uint32_t> order, heap, heap_pos, links, cells, chain;
+    std::vector<uint32_t> order, heap, heap_pos, links, cells, chain, reorders;
     std::vector<SortKey> keys, scratch;
 };
 
@@ -70,6 +70,7 @@ Status order_polygons(const RenderOptions& opt, const View& view, const Mesh& me
     store.heap.resize(cap);
     store.heap_pos.resize(cap);
     store.chain.resize(cap);
+    store.reorders.resize(kNewellReorders);
     store.links.resize(2 * cap);
     store.cells.resize(grid_cells(view.width, view.height));
     order = BoundedList<uint32_t>(store.order.data(), cap);
@@ -78,7 +79,7 @@ Status order_polygons(const RenderOptions& opt, const View& view, const Mesh& me
     const NewellScratch scratch{{store.keys.data(), built},       {store.scratch.data(), built},
                                 {store.heap.data(), cap},        {store.heap_pos.data(), cap},
                                 {store.links.data(), 2 * cap},   {store.cells.data(), store.cells.size()},
-                                {store.chain.data(), cap}};
+                                {store.chain.data(), cap},       {store.reorders.data(), kNewellReorders}};
     NewellOptions nopt;
     nopt.face_ids = mesh.ids;  // a fanned OBJ face is flat: its triangles need no order among themselves
     const Status s = newell_order(view, polys, cuts, scratch, order, ns, nopt);

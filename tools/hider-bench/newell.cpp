@@ -103,7 +103,7 @@ int newell_run_command(const Args& args) {
         return 0;
     }
     AlignedBuffer<PieceCut> cut_store(2 * (cap - built));
-    AlignedBuffer<uint32_t> order_store(cap), heap(cap), heap_pos(cap), links(2 * cap), chain(cap);
+    AlignedBuffer<uint32_t> order_store(cap), heap(cap), heap_pos(cap), links(2 * cap), chain(cap), reorders(kNewellReorders);
     AlignedBuffer<uint32_t> cells(grid_cells(p.view.width, p.view.height));
     BoundedList<PieceCut> cuts(cut_store.data(), cut_store.size());
     BoundedList<uint32_t> order(order_store.data(), cap);
@@ -113,7 +113,8 @@ int newell_run_command(const Args& args) {
     job.cuts = &cuts;
     AlignedBuffer<SortKey> keys(built), sort_scratch(built);
     job.scratch = {{keys.data(), built}, {sort_scratch.data(), built}, {heap.data(), cap}, {heap_pos.data(), cap},
-                   {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), cap}};
+                   {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), cap},
+                   {reorders.data(), reorders.size()}};
     job.order = &order;
     job.options.face_ids = {p.scene.ids.data(), p.scene.ids.size()};  // as render() passes them
     hider_bench_newell(&job);

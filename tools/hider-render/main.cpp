@@ -97,7 +97,9 @@ int warn_incomplete(const RenderOptions& opt, const RenderResult& r, bool strict
     if (n.budget_exhausted)
         std::cerr << kind << "Newell's budget of pair tests ran out after " << n.pair_tests
                   << "; the rest is drawn in depth order\n";
-    if (n.dropped == 0 && n.too_deep == 0 && !n.budget_exhausted)
+    if (n.dropped == 0 && n.too_deep == 0 && !n.budget_exhausted && n.unresolved != 0)
+        std::cerr << kind << n.unresolved << " pairs of a cycle kept in an order some of their shared pixels disagree with\n";
+    else if (n.dropped == 0 && n.too_deep == 0 && !n.budget_exhausted)
         std::cerr << kind << "the frame is incomplete: " << status_name(r.stats.status) << "\n";
     (void)opt;
     return strict ? 2 : 0;
@@ -283,9 +285,9 @@ int main(int argc, char** argv) {
                         static_cast<size_t>(s.triangles_in));
         if (opt.algo == Algo::newell || opt.algo == Algo::reverse) {
             const NewellStats& n = result.newell;
-            std::printf("newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u\n",
+            std::printf("newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u pixel-decided %u\n",
                         result.polygons, static_cast<unsigned long long>(n.pair_tests), n.moves, n.splits, n.cycles,
-                        n.unresolved, n.dropped, n.too_deep);
+                        n.unresolved, n.dropped, n.too_deep, n.pixel_decided);
         }
         if (s.status != Status::ok) std::printf("status %s\n", status_name(s.status));
     }

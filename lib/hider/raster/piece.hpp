@@ -36,6 +36,21 @@ constexpr bool cut_keeps(const CutLine& c, int32_t x, int32_t y) {
     return e > 0 || (e == 0 && keeps_line(c));
 }
 
+/// Narrows the span [lo, hi) of pixel row y to the centres `cut` keeps, as PieceRaster does (x_origin,
+/// y_origin: the centre of pixel (0, 0)); a horizontal cut keeps the whole row or none of it. For one
+/// row at a time (a division per call): PieceRaster steps its cuts from row to row instead.
+inline void narrow_to_cut(const CutLine& cut, int32_t y, int32_t x_origin, int32_t y_origin, int32_t& lo, int32_t& hi) {
+    if (cut.y0 == cut.y1) {
+        if (!cut_keeps(cut, cut.x0, y * kSubpixel + y_origin)) hi = lo;
+        return;
+    }
+    const bool down = cut.y1 > cut.y0;
+    const int32_t xu = down ? cut.x0 : cut.x1, yu = down ? cut.y0 : cut.y1, xl = down ? cut.x1 : cut.x0, yl = down ? cut.y1 : cut.y0;
+    const int32_t px = edge_walker(xu, yu, xl, yl, y, x_origin, y_origin).px;  // the first centre on or right of it
+    if (keeps_line(cut)) lo = max(lo, px);
+    else hi = min(hi, px);
+}
+
 /// A piece set up for traversal: TriangleRaster's rows with each span narrowed to the cut lines.
 /// Same interface as TriangleRaster (setup, then scan/spans for any rows, bands included).
 class PieceRaster {

@@ -6,13 +6,16 @@
 // twice in one chain of moves means a cycle, cut by the plane between them. Polygons that pierce each
 // other are cut along their intersection when first compared, both of them. A cut makes two pieces that
 // keep their parent's exact edges (plane.hpp, raster/piece.hpp: no cracks), and each piece remembers the
-// plane that cut it and its side of it, so no pair is cut twice. Work is bounded: the caller's pools
-// bound the pieces, a budget the pair tests. Plane tests are exact 128-bit sums with a slack for the
+// plane that cut it and its side of it, so no pair is cut twice. A cycle no cut breaks is ordered by
+// the pixel centres its pairs share (pixel_order.hpp): its closing pair stays as found when they agree,
+// else the cycle is broken at a pair of it they allow. Work is bounded: the caller's pools bound the
+// pieces, a budget the pair tests. Plane tests are exact 128-bit sums with a slack for the
 // rounding of cut points; polygons of one face (NewellOptions) are never ordered against each other.
 #pragma once
 #include <hider/sort/grid.hpp>
 #include <hider/sort/painter.hpp>
 #include <hider/sort/piece_box.hpp>
+#include <hider/sort/pixel_order.hpp>
 #include <hider/sort/plane.hpp>
 
 namespace hider {
@@ -23,8 +26,9 @@ struct NewellStats {
     uint32_t moves = 0;             ///< Q moved before P
     uint32_t splits = 0;            ///< polygons cut in two by another's plane
     uint32_t cycles = 0;            ///< cycles of overlap found (each broken by a cut when possible)
-    uint32_t unresolved = 0;        ///< pairs left in the order found because no cut was possible: a cycle
-                                    ///< of slivers decided below the grid (status ok), or the limits below
+    uint32_t unresolved = 0;        ///< pairs left in the order found with no cut and pixels that disagree:
+                                    ///< the limits below, or a full NewellScratch::reorders (capacity_exceeded)
+    uint32_t pixel_decided = 0;     ///< pairs no cut could order, ordered by the pixel centres they share
     uint32_t dropped = 0;           ///< cuts not made because the polygon or cut pool was full
     uint32_t too_deep = 0;          ///< cuts not made because a piece already had kMaxPieceCuts cuts
     bool budget_exhausted = false;  ///< the pair-test budget ran out; the rest went in depth order
@@ -51,7 +55,13 @@ struct NewellScratch {
     Span<uint32_t> links;     ///< >= 2 N (the grid)
     Span<uint32_t> cells;     ///< >= grid_cells(width, height)
     Span<uint32_t> chain;     ///< >= N (the polygons of the current chain of moves)
+    /// Two entries per pair at which a cycle was broken by its pixels while both wait (any size, 0 too;
+    /// kNewellReorders is plenty: a cycle that finds it full stays unresolved, capacity_exceeded).
+    Span<uint32_t> reorders;
 };
+
+/// NewellScratch::reorders entries that no scene tested has filled (four pairs at once).
+constexpr size_t kNewellReorders = 16;
 
 namespace detail {
 
@@ -61,8 +71,8 @@ public:
     static constexpr uint32_t kNone = 0xFFFFFFFFu;
 
     Newell(BoundedList<ScreenPoly>& polys, BoundedList<PieceCut>& cuts, const NewellScratch& s, BoundedList<uint32_t>& order,
-           NewellStats& ns, uint64_t budget, Span<const uint32_t> faces)
-        : polys_(polys), cuts_(cuts), s_(s), order_(order), ns_(ns), budget_(budget), faces_(faces) {}
+           NewellStats& ns, uint64_t budget, Span<const uint32_t> faces, int32_t width, int32_t height)
+        : polys_(polys), cuts_(cuts), s_(s), order_(order), ns_(ns), budget_(budget), faces_(faces), width_(width), height_(height) {}
 
     Status run(const ScreenGrid& grid_setup) {
         grid_ = grid_setup;
@@ -104,8 +114,8 @@ private:
 
     /// What comparing the candidate with the waiting polygons decided.
     struct Action {
-        enum Kind : uint8_t { none, move, cut } kind = none;
-        uint32_t q = kNone;  ///< move: the polygon that becomes the candidate
+        enum Kind : uint8_t { none, move, cut, restart } kind = none;
+        uint32_t q = kNone;  ///< move, restart: the polygon that becomes the candidate
         Cut cuts[2];
         int count = 0;  ///< cut: how many of cuts[] to make
     };
@@ -137,6 +147,13 @@ private:
                 s_.chain[chain_len_++] = act.q;
                 ++ns_.moves;
                 return act.q;
+            case Action::restart:  // a cycle broken at a pair its pixels order: q starts a fresh chain
+                heap_remove(act.q);
+                push(cur);
+                ++chain_;
+                chain_len_ = 0;
+                s_.chain[chain_len_++] = act.q;
+                return act.q;
             case Action::cut: {
                 bool cur_cut = false;
                 for (int i = 0; i < act.count; ++i) {
@@ -164,6 +181,7 @@ private:
         if (p.xmax <= q.xmin || q.xmax <= p.xmin) return false;  // (1) no shared pixel centre possible
         if (p.ymax <= q.ymin || q.ymax <= p.ymin) return false;  // (2)
         if (!faces_.empty() && faces_[p.tri] == faces_[q.tri]) return false;  // one flat face
+        if (reorder_count_ != 0 && reordered(cur, qi)) return false;  // its pixels allow P first (break_by_pixels)
         if (!cand.ready) {
             outline_of(p, cuts(), cand.outline);
             cand.plane = plane_of(p);
@@ -189,6 +207,7 @@ private:
         const int q_vs_p = q_side != 0 ? q_side : side_by_cut(q, pp, p.tri, q_cut, qc);
         if (q_vs_p < 0) return false;  // (4)
         bool too_deep = p_cut == CutResult::too_deep || q_cut == CutResult::too_deep;
+        bool cycle = false;
         act.count = 0;
         if (q_vs_p > 0 || p_vs_q < 0) {  // (3') or (4'): Q must be drawn before P
             if (q.moved_at != chain_) {
@@ -197,6 +216,7 @@ private:
                 return true;
             }
             ++ns_.cycles;  // a cycle: cut one of them by the other's plane, or another pair of the cycle
+            cycle = true;
             if (p_cut == CutResult::cut) take(act, cur, pc);
             else if (q_cut == CutResult::cut) take(act, qi, qc);
             else too_deep = !break_cycle(qi, act) && (too_deep || cycle_too_deep_);
@@ -211,6 +231,18 @@ private:
             }
             ++ns_.dropped;
             status_ = Status::capacity_exceeded;
+        } else if (!too_deep) {
+            // Nothing cuts the pair: keep the order found if its shared pixels agree, or break the cycle
+            // at another pair of it whose pixels do.
+            if (pixel_test() && drawn_under(p, q, cuts(), width_, height_)) {
+                ++ns_.pixel_decided;
+                return false;
+            }
+            if (cycle && break_by_pixels(qi, act)) {
+                ++ns_.pixel_decided;
+                return true;
+            }
+            status_ = Status::capacity_exceeded;  // the order found draws a shared pixel wrong
         }
         ++ns_.unresolved;
         if (too_deep) {
@@ -255,6 +287,44 @@ private:
                     const uint32_t x = s_.chain[i], y = s_.chain[k];
                     if (cut_straddling(x, y, exact != 0, act) || cut_straddling(y, x, exact != 0, act)) return true;
                 }
+        return false;
+    }
+
+    /// Counts one pixel test as a pair test; false when the budget is spent (status set).
+    bool pixel_test() {
+        if (ns_.pair_tests + 1 > budget_) {
+            ns_.budget_exhausted = true;
+            status_ = Status::capacity_exceeded;
+            return false;
+        }
+        ++ns_.pair_tests;
+        return true;
+    }
+
+    bool reordered(uint32_t a, uint32_t b) const {
+        for (size_t i = 0; i < reorder_count_; i += 2)
+            if (s_.reorders[i] == a && s_.reorders[i + 1] == b) return true;
+        return false;
+    }
+
+    /// A cycle closed at Q that no cut breaks, and whose closing pair's pixels disagree with the order
+    /// found: finds a polygon of the chain that its pixels allow before the one moved before it, and
+    /// restarts from it (act: restart) with that pair kept in scratch.reorders, exempt from the tests
+    /// while both wait. False when none does or reorders is full.
+    bool break_by_pixels(uint32_t q, Action& act) {
+        if (reorder_count_ + 2 > s_.reorders.size()) return false;
+        size_t j = chain_len_;
+        while (j-- > 0 && s_.chain[j] != q) {}
+        for (size_t i = j; i + 1 < chain_len_; ++i) {
+            const uint32_t x = s_.chain[i], y = s_.chain[i + 1];  // y was moved before x
+            if (!pixel_test()) return false;
+            if (!drawn_under(polys_[x], polys_[y], cuts(), width_, height_)) continue;
+            s_.reorders[reorder_count_++] = x;
+            s_.reorders[reorder_count_++] = y;
+            act.kind = Action::restart;
+            act.q = x;
+            return true;
+        }
         return false;
     }
 
@@ -336,6 +406,14 @@ private:
         const bool added = order_.push_back(id);  // order.capacity() >= polys.capacity()
         HIDER_ASSERT(added);
         (void)added;
+        for (size_t i = 0; i < reorder_count_;)  // a pair with a polygon drawn is never tested again
+            if (s_.reorders[i] == id || s_.reorders[i + 1] == id) {
+                reorder_count_ -= 2;
+                s_.reorders[i] = s_.reorders[reorder_count_];
+                s_.reorders[i + 1] = s_.reorders[reorder_count_ + 1];
+            } else {
+                i += 2;
+            }
         grid_.remove(id, polys_[id]);
         ++chain_;
         chain_len_ = 0;
@@ -418,6 +496,7 @@ private:
     NewellStats& ns_;
     uint64_t budget_;
     Span<const uint32_t> faces_;
+    int32_t width_, height_;
     ScreenGrid grid_;
     static constexpr uint32_t kPending = 0xFFFFFFFEu;
     size_t n_ = 0;          ///< polygons in the sorted input (the built ones)
@@ -428,6 +507,7 @@ private:
     uint32_t chain_ = 0;
     size_t chain_len_ = 0;  ///< the chain's polygons are scratch.chain[0..chain_len_), the candidate last
     bool cycle_too_deep_ = false;  ///< break_cycle() met a straddling polygon too deep to cut
+    size_t reorder_count_ = 0;  ///< entries of scratch.reorders in use (pairs a, b: a may go before b)
     Status status_ = Status::ok;
 };
 
@@ -437,9 +517,11 @@ private:
 /// it lies in front of, cutting polygons into the free capacity of `polys` (and two `cuts` records per
 /// cut) as needed. Paint the result with paint_in_order() or paint_front_to_back(), passing `cuts`.
 /// Errors (nothing done): invalid_argument when order, the scratch arrays or the frame size of `view`
-/// do not fit polys.capacity() (NewellScratch), or opt.face_ids does not cover every polygon's tri. When a pool fills or a piece reaches kMaxPieceCuts, that
-/// pair keeps the order found, and when the pair-test budget runs out the rest go in depth order: the
-/// result is then capacity_exceeded and NewellStats says which; the frame still draws. Cost: one grid
+/// do not fit polys.capacity() (NewellScratch), or opt.face_ids does not cover every polygon's tri.
+/// When a pool fills, a piece reaches kMaxPieceCuts, or a cycle that no cut breaks finds neither its
+/// closing pair's shared pixels in the order found nor room in scratch.reorders, that pair keeps the
+/// order found, and when the pair-test budget runs out the rest go in depth order: the result is then
+/// capacity_exceeded and NewellStats says which; the frame still draws. Cost: one grid
 /// query per candidate, pair tests only for overlapping boxes; at most the budget of pair tests, and
 /// an input triangle cut by k planes makes at most (k^2 + k + 2) / 2 pieces.
 inline Status newell_order(const View& view, BoundedList<ScreenPoly>& polys, BoundedList<PieceCut>& cuts,
@@ -455,7 +537,7 @@ inline Status newell_order(const View& view, BoundedList<ScreenPoly>& polys, Bou
     const uint64_t budget = opt.max_pair_tests != 0 ? opt.max_pair_tests : kNewellTestsPerPolygon * cap + 65536;
     for (size_t i = 0; i < polys.size() && !opt.face_ids.empty(); ++i)
         if (polys[i].tri >= opt.face_ids.size()) return Status::invalid_argument;
-    return detail::Newell(polys, cuts, scratch, order, ns, budget, opt.face_ids).run(grid);
+    return detail::Newell(polys, cuts, scratch, order, ns, budget, opt.face_ids, view.width, view.height).run(grid);
 }
 
 }  // namespace hider

@@ -238,31 +238,36 @@ inline void outline_of(const ScreenPoly& p, Span<const PieceCut> cuts, Outline& 
     for (uint32_t c = p.cut; c != kNoCut && o.count > 0; c = cuts[c].prev) detail::clip_outline(o, cuts[c].line, p.v);
 }
 
-/// Twice the signed area of an outline's grid points (its winding; 0 for a degenerate one).
-inline int64_t outline_area(const Outline& o) {
-    int64_t a = 0;
-    for (int i = 0; i < o.count; ++i) {
-        const OutlinePoint& p = o.v[i];
-        const OutlinePoint& q = o.v[i + 1 == o.count ? 0 : i + 1];
-        a += int64_t{p.x} * q.y - int64_t{q.x} * p.y;
-    }
-    return a;
-}
-
-/// True when the projections of two convex outlines share no pixel-centre interior: some edge of one
-/// has every vertex of the other on its outer side or on it (separating axis; exact in int64).
+/// True when the projections of two convex outlines share no pixel-centre interior: the exact line of
+/// some edge of one has every vertex of the other, exactly, on its outer side or on it (separating
+/// axis). Exact lines matter: the grid points of a short edge between two cuts can point anywhere.
 inline bool projections_disjoint(const Outline& p, const Outline& q) {
     auto separated_by = [](const Outline& s, const Outline& o) {
-        const int64_t area = outline_area(s);
-        if (area == 0) return false;
+        if (s.count < 3) return false;
+        detail::LineEquation tri[3];
+        const detail::LineEquation* edges = s.edge;
+        if (!s.edges) {  // a whole triangle: the lines through its vertices, inside >= 0
+            const int64_t area = cut_side({s.v[0].x, s.v[0].y, s.v[1].x, s.v[1].y}, s.v[2].x, s.v[2].y);
+            if (area == 0) return false;
+            const bool turn = area > 0;
+            for (int i = 0; i < 3; ++i) {
+                const OutlinePoint &a = s.v[i], &b = s.v[i == 2 ? 0 : i + 1];
+                const CutLine edge{a.x, a.y, b.x, b.y};
+                tri[i] = detail::line_equation(turn ? edge : reversed(edge));
+            }
+            edges = tri;
+        }
         for (int i = 0; i < s.count; ++i) {
-            const OutlinePoint& a = s.v[i];
-            const OutlinePoint& b = s.v[i + 1 == s.count ? 0 : i + 1];
-            if (a.x == b.x && a.y == b.y) continue;
+            const detail::LineEquation& l = edges[i];
+            if (l.a == 0 && l.b == 0) continue;
+            const int64_t near = abs_value(int64_t{l.a}) + abs_value(int64_t{l.b});
             bool all_out = true;
             for (int k = 0; k < o.count && all_out; ++k) {
-                const int64_t e = int64_t{b.x - a.x} * (o.v[k].y - a.y) - int64_t{b.y - a.y} * (o.v[k].x - a.x);
-                all_out = !((area > 0 && e > 0) || (area < 0 && e < 0));  // inside has the sign of the area
+                // A rounded point is within half a subpixel of its vertex: farther than that from the
+                // line, it is on the vertex's side; else the exact vertex decides.
+                int64_t e = int64_t{l.a} * o.v[k].x + int64_t{l.b} * o.v[k].y + l.c0;
+                if (o.rounded && 2 * abs_value(e) <= near) e = detail::line_value(l, detail::outline_vertex(o, k));
+                all_out = e <= 0;
             }
             if (all_out) return true;
         }
