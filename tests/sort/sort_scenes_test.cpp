@@ -117,6 +117,15 @@ TEST_CASE("Newell orders by their shared pixels the pairs of a cycle no cut brea
     }
 }
 
+TEST_CASE("Newell and the reverse painter agree with the z-buffer where a cut line passed a pixel centre") {
+    // Found by sweeps: a cut line through two grid points passed a pixel centre on the wrong side of the
+    // exact crossing of the two planes, and that pixel went to the wrong face with the status ok (1 or 2
+    // pixels each). crossing_line() now checks the centres next to the line and moves its ends.
+    for (const auto& [name, cull] : {std::pair<const char*, bool>{"soup-159-200", true}, {"soup-245-200", false}, {"stacked-49-12", true},
+                                     {"stacked-60-12", true}, {"stacked-183-8", true}, {"dense-44-100", false}})
+        check_off_edge_exact(name, cull);
+}
+
 TEST_CASE("Newell and the reverse painter render band by band exactly on soups and sticks seen from inside") {
     // A piece's box decides which bands draw it (with_poly_raster) and which pairs Newell tests, so it
     // must hold every pixel the piece draws; the fuzzer found a cut chain whose rounded box did not, as a

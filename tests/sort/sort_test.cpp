@@ -91,7 +91,7 @@ TEST_CASE("a plane classifies its own vertices as on it and cuts a straddling tr
     std::vector<PieceCut> cuts;
     ScreenPoly far{}, near{};
     PieceCut far_cut{}, near_cut{};
-    REQUIRE(cut_polygon(stick, {}, pl, wall.tri, far, near, far_cut, near_cut) == CutResult::cut);
+    REQUIRE(cut_polygon(stick, {}, pl, wall.tri, 100, 50, far, near, far_cut, near_cut) == CutResult::cut);  // the frame below
     far.cut = 0;
     near.cut = 1;
     cuts = {far_cut, near_cut};
@@ -244,7 +244,7 @@ void cut_randomly(RandomScreen& rs, int w, int h, bool shallow, int rounds, cons
             }
             ScreenPoly far{}, near{};
             PieceCut far_cut{}, near_cut{};
-            if (cut_polygon(p, {cuts.data(), cuts.size()}, plane_of(wall), wall.tri, far, near, far_cut, near_cut) != CutResult::cut) {
+            if (cut_polygon(p, {cuts.data(), cuts.size()}, plane_of(wall), wall.tri, w, h, far, near, far_cut, near_cut) != CutResult::cut) {
                 next.push_back(p);
                 continue;
             }
@@ -332,6 +332,59 @@ TEST_CASE("a piece's box holds every pixel centre it draws, after chains of cuts
     CHECK(points > 150000);
     CHECK(bad_points == 0);
     CHECK(coverage_errors == 0);
+}
+
+TEST_CASE("a cut line puts every pixel centre of its triangle on the side of the plane the piece takes") {
+    // The line through two grid points that cut_polygon() cuts along is within a subpixel of where the
+    // planes cross, so a pixel centre closer than that to the crossing could go to the wrong piece, and
+    // Newell would draw it in the wrong order (single pixels in random soups). Every centre the far
+    // piece draws must lie on the far side of the plane or on it (exactly, in 128 bits), every centre
+    // the near piece draws on the near side or on it.
+    const int w = 64, h = 48;
+    const FrameView<Grey8Format> frame = whole_frame(w, h);
+    const BandBounds bb = band_bounds(frame);
+    const int32_t ox = kSubpixel / 2 - w * (kSubpixel / 2), oy = kSubpixel / 2 - h * (kSubpixel / 2);
+    long cuts_made = 0, centres = 0, wrong = 0, wrong_cuts = 0;
+    for (uint32_t seed = 1; seed <= 20000; ++seed) {
+        std::mt19937 rng(seed * 104729u);
+        RandomScreen rs{rng};
+        ScreenPoly tri, wall;
+        if (!rs.triangle(w, h, 1, tri) || !rs.triangle(w, h, 2, wall)) continue;
+        const ScreenPlane pl = plane_of(wall);
+        ScreenPoly far{}, near{};
+        PieceCut far_cut{}, near_cut{};
+        if (cut_polygon(tri, {}, pl, wall.tri, w, h, far, near, far_cut, near_cut) != CutResult::cut) continue;
+        ++cuts_made;
+        const PieceCut records[2] = {far_cut, near_cut};
+        far.cut = 0;
+        near.cut = 1;
+        long bad = 0;
+        for (const ScreenPoly* piece : {&far, &near})
+            with_poly_raster(*piece, {records, 2}, bb, frame, [&](const auto& r, int32_t y0, int32_t y1) {
+                return r.spans(y0, y1, [&](int32_t y, int32_t x0, int32_t x1, uint32_t) {
+                    for (int32_t x = x0; x < x1; ++x) {
+                        // The plane's side at the centre on the triangle's plane: side() at the centre with the
+                        // triangle's exact depth there, times the triangle's doubled area (barycentric, exact).
+                        const __int128 cx = ox + x * kSubpixel, cy = oy + y * kSubpixel;
+                        const ScreenVertex* v = tri.v;
+                        __int128 area = __int128{v[1].x - v[0].x} * (v[2].y - v[0].y) - __int128{v[2].x - v[0].x} * (v[1].y - v[0].y);
+                        __int128 w1 = (cx - v[0].x) * (v[2].y - v[0].y) - (cy - v[0].y) * (v[2].x - v[0].x);
+                        __int128 w2 = __int128{v[1].x - v[0].x} * (cy - v[0].y) - __int128{v[1].y - v[0].y} * (cx - v[0].x);
+                        const __int128 z_area = __int128{v[0].z} * area + w1 * (__int128{v[1].z} - v[0].z) + w2 * (__int128{v[2].z} - v[0].z);
+                        __int128 s = (pl.a * (cx - pl.origin.x) + pl.b * (cy - pl.origin.y)) * area + pl.c * (z_area - __int128{pl.origin.z} * area);
+                        if (area < 0) s = -s;
+                        ++centres;
+                        bad += piece == &far ? s < 0 : s > 0;
+                    }
+                });
+            });
+        wrong += bad;
+        wrong_cuts += bad != 0;
+    }
+    MESSAGE("cuts " << cuts_made << ", pixel centres " << centres << ", on the wrong side " << wrong << " (in " << wrong_cuts << " cuts)");
+    CHECK(cuts_made > 5000);
+    CHECK(centres > 1000000);
+    CHECK(wrong == 0);
 }
 
 TEST_CASE("projections_disjoint() and drawn_under() agree with the pixels two cut triangles draw") {
@@ -571,11 +624,11 @@ TEST_CASE("Newell with a full pool never writes past a chain of N entries, and o
 }
 
 TEST_CASE("Newell breaks a cycle at a pair its pixels order, and reports it when NewellScratch::reorders is full") {
-    // boxes-143-6 without culling closes a cycle of pieces that no plane cuts and whose closing pair's
-    // shared pixels disagree with the order found: it is broken at another pair of the cycle, which its
-    // pixels allow, kept in `reorders` while both wait. Without room there the pair stays unresolved
-    // (a wrong pixel) and the status says so; with room the status is ok and nothing is unresolved.
-    const tool::Scene s = test::generated_scene("boxes-143-6");
+    // boxes-69-10 without culling closes cycles of pieces that no plane cuts and whose closing pair's
+    // shared pixels disagree with the order found: each is broken at another pair of the cycle, which
+    // its pixels allow, kept in `reorders` while both wait. Without room there such a pair stays
+    // unresolved (a wrong pixel) and the status says so; with room the status is ok, nothing unresolved.
+    const tool::Scene s = test::generated_scene("boxes-69-10");
     View view;
     REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
     std::vector<ScreenVertex> verts(s.positions.size());

@@ -40,7 +40,7 @@ std::map<std::string, uint64_t> parse_newell_line(const std::string& out) {
             v[key] = static_cast<uint64_t>(parsed);
         }
     }
-    for (const char* key : {"polygons", "after", "pair-tests", "moves", "cuts", "cycles", "unresolved", "dropped", "too-deep"})
+    for (const char* key : {"polygons", "after", "pair-tests", "moves", "cuts", "cycles", "pixel-ordered", "unresolved", "dropped", "too-deep"})
         if (v.count(key) == 0) fail(std::string("newell-run printed no '") + key + "':\n" + out);
     return v;
 }
@@ -64,7 +64,7 @@ void check_against_render(const std::string& path, const Args& camera, bool cull
     if (!render(scene, opt, r, why)) fail(path + ": render: " + why);
     const NewellStats& n = r.newell;
     if (v.at("after") != r.polygons || v.at("pair-tests") != n.pair_tests || v.at("moves") != n.moves ||
-        v.at("cuts") != n.splits || v.at("cycles") != n.cycles || v.at("unresolved") != n.unresolved ||
+        v.at("cuts") != n.splits || v.at("cycles") != n.cycles || v.at("pixel-ordered") != n.pixel_decided || v.at("unresolved") != n.unresolved ||
         v.at("dropped") != n.dropped || v.at("too-deep") != n.too_deep)
         fail(path + ": the measured newell_order disagrees with render() (common/render.cpp)");
 }
@@ -122,8 +122,8 @@ int newell_run_command(const Args& args) {
         fail(model_path + ": newell_order: " + status_name(job.status));
     const NewellStats& s = job.stats;
     std::printf("newell polygons %zu after %zu pair-tests %" PRIu64 " moves %" PRIu32 " cuts %" PRIu32 " cycles %" PRIu32
-                " unresolved %" PRIu32 " dropped %" PRIu32 " too-deep %" PRIu32 "\n",
-                built, order.size(), s.pair_tests, s.moves, s.splits, s.cycles, s.unresolved, s.dropped, s.too_deep);
+                " pixel-ordered %" PRIu32 " unresolved %" PRIu32 " dropped %" PRIu32 " too-deep %" PRIu32 "\n",
+                built, order.size(), s.pair_tests, s.moves, s.splits, s.cycles, s.pixel_decided, s.unresolved, s.dropped, s.too_deep);
     return 0;
 }
 
@@ -142,9 +142,9 @@ int newell_command(const Args& args) {
                 "kept; pool: 16 cuts per triangle + 1024. polygons = screen polygons, after = after cuts. callgrind\n"
                 "Ir inside hider_bench_sort (painter_order of the same polygons) and hider_bench_newell (newell_order).\n"
                 "Statistics checked against render() of common/render.cpp.\n\n");
-    std::printf("| scene | back faces | polygons | after | pair tests | moves | cuts | cycles | unresolved | dropped "
-                "| too deep | painter Ir | Newell Ir | Newell / painter | Newell Ir/polygon |\n");
-    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("| scene | back faces | polygons | after | pair tests | moves | cuts | cycles | pixel-ordered | unresolved "
+                "| dropped | too deep | painter Ir | Newell Ir | Newell / painter | Newell Ir/polygon |\n");
+    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     std::fflush(stdout);
     std::vector<std::string> scenes;
     for (const std::string& file : files) scenes.push_back(models + "/" + file);
@@ -166,9 +166,10 @@ int newell_command(const Args& args) {
             check_against_render(path, camera, cull, v);
             const double newell_ir = static_cast<double>(newell.ir), painter_ir = static_cast<double>(painter.ir);
             std::printf("| %s | %s | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64
-                        " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %s | %s |\n",
+                        " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %" PRIu64 " | %s | %s |\n",
                         file.c_str(), cull ? "culled" : "kept", v.at("polygons"), v.at("after"), v.at("pair-tests"),
-                        v.at("moves"), v.at("cuts"), v.at("cycles"), v.at("unresolved"), v.at("dropped"), v.at("too-deep"), painter.ir,
+                        v.at("moves"), v.at("cuts"), v.at("cycles"), v.at("pixel-ordered"), v.at("unresolved"), v.at("dropped"),
+                        v.at("too-deep"), painter.ir,
                         newell.ir, ratio(newell_ir, painter_ir, 1).c_str(),
                         ratio(newell_ir, static_cast<double>(v.at("polygons")), 1).c_str());
             std::fflush(stdout);

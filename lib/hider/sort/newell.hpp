@@ -337,7 +337,7 @@ private:
         const ScreenPlane pl = plane_of(py);
         if (!straddles(px, pl, exact)) return false;
         Cut& c = act.cuts[act.count];
-        const CutResult r = cut_polygon(px, cuts(), pl, py.tri, c.far, c.near, c.far_cut, c.near_cut);
+        const CutResult r = cut_polygon(px, cuts(), pl, py.tri, width_, height_, c.far, c.near, c.far_cut, c.near_cut);
         cycle_too_deep_ = cycle_too_deep_ || r == CutResult::too_deep;
         if (r != CutResult::cut) return false;
         take(act, x, c);
@@ -369,7 +369,7 @@ private:
     /// The side of x, which straddles plane pl, from the cut along it (pieces into far/near): a cut that
     /// leaves nothing of nonzero area on one side decides the side, else 0. `cut` tells how the try went.
     int side_by_cut(const ScreenPoly& x, const ScreenPlane& pl, uint32_t plane_tri, CutResult& cut, Cut& pieces) {
-        cut = cut_polygon(x, cuts(), pl, plane_tri, pieces.far, pieces.near, pieces.far_cut, pieces.near_cut);
+        cut = cut_polygon(x, cuts(), pl, plane_tri, width_, height_, pieces.far, pieces.near, pieces.far_cut, pieces.near_cut);
         if (cut == CutResult::far_only) return 1;
         if (cut == CutResult::near_only) return -1;
         return 0;

@@ -95,11 +95,77 @@ inline int known_side(const ScreenPoly& p, Span<const PieceCut> cuts, uint32_t p
     return 0;
 }
 
-/// The line where plane pl crosses the plane of polygon p on the screen, through two grid points on
+/// How far beyond a triangle's box crossing_line() looks for a better end of a cut line (subpixels).
+constexpr int64_t kCrossingSearch = 1024;
+
+namespace detail {
+/// Where a plane crosses a triangle's plane, as an affine function of the screen point whose sign is
+/// the point's side of the plane (on the triangle's plane): side(x, y) = sign(na (x - x0) + nb (y - y0)
+/// + h0), negated when `flip`. Kept within 2^62 for points of the triangle's box.
+struct PlaneCrossing {
+    int64_t na, nb, h0, x0, y0;
+    bool flip;
+    int side(int64_t x, int64_t y) const {
+        const int64_t v = na * (x - x0) + nb * (y - y0) + h0;
+        const int s = v > 0 ? 1 : (v < 0 ? -1 : 0);
+        return flip ? -s : s;
+    }
+};
+
+/// True when point (x, y) lies in triangle v or on its border.
+inline bool in_triangle(const ScreenVertex (&v)[3], int64_t x, int64_t y) {
+    int neg = 0, pos = 0;
+    for (int i = 0; i < 3; ++i) {
+        const ScreenVertex &a = v[i], &b = v[i == 2 ? 0 : i + 1];
+        const int64_t e = int64_t{b.x - a.x} * (y - a.y) - int64_t{b.y - a.y} * (x - a.x);
+        neg += e < 0;
+        pos += e > 0;
+    }
+    return neg == 0 || pos == 0;
+}
+
+/// True when `line` (kept side: the plane's far side) puts a pixel centre of triangle v (box[] its
+/// bounding box: x0, x1, y0, y1) on the other side from the crossing k (a centre exactly on the crossing goes either
+/// way). With the line within a few subpixels of the crossing, such a centre lies between them: one of
+/// the two centres next to the line on each row or column of centres along it.
+inline bool misplaces_centre(const CutLine& line, const PlaneCrossing& k, const ScreenVertex (&v)[3], const int64_t (&box)[4],
+                             int32_t x_origin, int32_t y_origin) {
+    const int64_t ldx = line.x1 - line.x0, ldy = line.y1 - line.y0;
+    const bool along_x = abs_value(ldx) >= abs_value(ldy);  // walk the major axis: a, the minor one: b
+    const int64_t a0 = along_x ? box[0] : box[2], a1 = along_x ? box[1] : box[3];
+    const int64_t b0 = along_x ? box[2] : box[0], b1 = along_x ? box[3] : box[1];
+    const int64_t ao = along_x ? x_origin : y_origin, bo = along_x ? y_origin : x_origin;
+    const int64_t pa = along_x ? line.x0 : line.y0, pb = along_x ? line.y0 : line.x0;
+    int64_t la = along_x ? ldx : ldy, lb = along_x ? ldy : ldx;  // la != 0
+    if (la < 0) { la = -la; lb = -lb; }
+    int64_t a = ao + kSubpixel * div_floor(a0 - ao + kSubpixel - 1, kSubpixel);  // the first centre at or after a0
+    if (a > a1) return false;
+    // The line's b at a is pb + (a - pa) lb / la; j indexes the last centre before it (exactly, stepped).
+    const int64_t den = la * kSubpixel, step = lb * kSubpixel;
+    int64_t num = (pb - bo) * la + (a - pa) * lb;
+    int64_t j = div_floor(num, den), rem = num - j * den;  // rem in [0, den)
+    for (; a <= a1; a += kSubpixel) {
+        for (int64_t b = bo + j * kSubpixel, i = 0; i < 2; ++i, b += kSubpixel) {
+            if (b < b0 || b > b1) continue;
+            const int64_t x = along_x ? a : b, y = along_x ? b : a;
+            const int s = k.side(x, y);
+            if (s != 0 && cut_keeps(line, static_cast<int32_t>(x), static_cast<int32_t>(y)) != (s > 0) && in_triangle(v, x, y)) return true;
+        }
+        rem += step;  // |step| <= den
+        while (rem >= den) { rem -= den; ++j; }
+        while (rem < 0) { rem += den; --j; }
+    }
+    return false;
+}
+}  // namespace detail
+
+/// The line where plane pl crosses the plane of polygon p on the screen, through two grid points near
 /// the border of p's triangle's bounding box, oriented to keep pl's far side (side() > 0). The line is
-/// the zero set of the plane's side function, which is affine over p's triangle. False when the planes
-/// are parallel or the line misses the box.
-inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, CutLine& far_side) {
+/// the zero set of the plane's side function, which is affine over p's triangle. Its ends are rounded to
+/// the grid, so it can pass a pixel centre on the wrong side of the exact crossing (a width x height
+/// frame's centres): then ends moved by a subpixel or two are tried for one that puts every centre of
+/// the box on its own side. False when the planes are parallel or the line misses the box.
+inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, int32_t width, int32_t height, CutLine& far_side) {
     Int128 h[3];
     int bits = 0;
     for (int i = 0; i < 3; ++i) {
@@ -114,7 +180,8 @@ inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, CutLine& f
     const int64_t dx1 = p.v[1].x - x0, dy1 = p.v[1].y - y0, dx2 = p.v[2].x - x0, dy2 = p.v[2].y - y0;
     const int64_t na = (hs[1] - hs[0]) * dy2 - (hs[2] - hs[0]) * dy1;  // gradient of h times the area
     const int64_t nb = (hs[2] - hs[0]) * dx1 - (hs[1] - hs[0]) * dx2;
-    const int64_t h0 = hs[0] * (dx1 * dy2 - dx2 * dy1);
+    const int64_t area = dx1 * dy2 - dx2 * dy1;
+    const int64_t h0 = hs[0] * area;
     if (na == 0 && nb == 0) return false;
     // Where na (x - x0) + nb (y - y0) + h0 = 0 meets the four sides of the box.
     const int64_t bx0 = min(p.v[0].x, min(p.v[1].x, p.v[2].x)), bx1 = max(p.v[0].x, max(p.v[1].x, p.v[2].x));
@@ -140,15 +207,67 @@ inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, CutLine& f
             if (d > best) { best = d; ia = i; ib = k; }
         }
     if (ia < 0) return false;
-    CutLine line{static_cast<int16_t>(px[ia]), static_cast<int16_t>(py[ia]), static_cast<int16_t>(px[ib]), static_cast<int16_t>(py[ib])};
     // Orient by the vertex farthest from the plane: it must land on the side of its own sign.
     int far = 0;
     for (int i = 1; i < 3; ++i)
         if (abs_value(hs[i]) > abs_value(hs[far])) far = i;
     if (hs[far] == 0) return false;
-    const bool keeps_far_vertex = cut_side(line, p.v[far].x, p.v[far].y) > 0;
-    far_side = keeps_far_vertex == (hs[far] > 0) ? line : reversed(line);
-    return true;
+    auto oriented = [&](int64_t xa, int64_t ya, int64_t xb, int64_t yb) {
+        const CutLine line{static_cast<int16_t>(xa), static_cast<int16_t>(ya), static_cast<int16_t>(xb), static_cast<int16_t>(yb)};
+        const bool keeps_far_vertex = cut_side(line, p.v[far].x, p.v[far].y) > 0;
+        return keeps_far_vertex == (hs[far] > 0) ? line : reversed(line);
+    };
+    far_side = oriented(px[ia], py[ia], px[ib], py[ib]);
+    const detail::PlaneCrossing k{na, nb, h0, x0, y0, area < 0};
+    const int64_t box[4] = {bx0, bx1, by0, by1};
+    const int32_t x_origin = kSubpixel / 2 - width * (kSubpixel / 2), y_origin = kSubpixel / 2 - height * (kSubpixel / 2);
+    if (!detail::misplaces_centre(far_side, k, p.v, box, x_origin, y_origin)) return true;
+    // Move the box border ends across the line, a subpixel or two each.
+    const bool line_along_x = abs_value(px[ib] - px[ia]) >= abs_value(py[ib] - py[ia]);
+    static constexpr int8_t kMoves[24][2] = {{1, 1}, {-1, -1}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, -1}, {-1, 1},
+                                             {2, 2}, {-2, -2}, {2, 1}, {1, 2}, {-2, -1}, {-1, -2}, {2, 0}, {-2, 0},
+                                             {0, 2}, {0, -2}, {2, -1}, {-1, 2}, {-2, 1}, {1, -2}, {2, -2}, {-2, 2}};
+    for (const auto& mv : kMoves) {
+        const int64_t xa = px[ia] + (line_along_x ? 0 : mv[0]), ya = py[ia] + (line_along_x ? mv[0] : 0);
+        const int64_t xb = px[ib] + (line_along_x ? 0 : mv[1]), yb = py[ib] + (line_along_x ? mv[1] : 0);
+        if (abs_value(xa) > kCoordLimit || abs_value(ya) > kCoordLimit || abs_value(xb) > kCoordLimit || abs_value(yb) > kCoordLimit) continue;
+        const CutLine line = oriented(xa, ya, xb, yb);
+        if (!detail::misplaces_centre(line, k, p.v, box, x_origin, y_origin)) {
+            far_side = line;
+            return true;
+        }
+    }
+    // Then ends where the exact crossing nearly meets a grid point, beyond each side of the box: the
+    // line through them is far closer to the crossing than one through rounded box borders.
+    const bool along_x = abs_value(na) <= abs_value(nb);  // the crossing is mostly horizontal: ends by x
+    const int64_t m = along_x ? na : nb, d = along_x ? nb : na, o_major = along_x ? x0 : y0, o_minor = along_x ? y0 : x0;
+    const int64_t ad = abs_value(d);
+    auto near_grid = [&](int64_t from, int64_t to, int64_t& at, int64_t& minor) {  // over [from, to] within the limits
+        from = max<int64_t>(from, -kCoordLimit);
+        to = min<int64_t>(to, kCoordLimit);
+        if (from > to) return false;
+        // The crossing's minor coordinate at t is o_minor + num / d, num = -(m (t - o_major) + h0): its
+        // nearest grid point q and the remainder r = num - q d, stepped along t without a division.
+        const int64_t num = -(m * (from - o_major) + h0), step = d < 0 ? m : -m;  // r in units of d's sign
+        int64_t q = div_round(num, d), r = (d < 0 ? -1 : 1) * (num - q * d);
+        int64_t best_err = -1;
+        for (int64_t t = from; t <= to; ++t, r += step) {
+            while (2 * r > ad) { r -= ad; ++q; }
+            while (2 * r < -ad) { r += ad; --q; }
+            if (abs_value(o_minor + q) > kCoordLimit || (best_err >= 0 && abs_value(r) >= best_err)) continue;
+            best_err = abs_value(r);
+            at = t;
+            minor = o_minor + q;
+        }
+        return best_err >= 0;
+    };
+    const int64_t lo = along_x ? bx0 : by0, hi = along_x ? bx1 : by1;
+    int64_t ta = 0, ma = 0, tb = 0, mb = 0;
+    if (near_grid(lo - kCrossingSearch, lo, ta, ma) && near_grid(hi, hi + kCrossingSearch, tb, mb) && ta != tb) {
+        const CutLine line = along_x ? oriented(ta, ma, tb, mb) : oriented(ma, ta, mb, tb);
+        if (!detail::misplaces_centre(line, k, p.v, box, x_origin, y_origin)) far_side = line;
+    }
+    return true;  // else the nearest line through the box borders, as found
 }
 
 /// How one polygon's cut by a plane went.
@@ -160,24 +279,18 @@ enum class CutResult : uint8_t {
     too_deep,   ///< the polygon already carries kMaxPieceCuts cuts
 };
 
-/// Cuts polygon p by plane pl (the plane of mesh triangle plane_tri) into far and near pieces, each
-/// keeping p's triangle, tri and flags, with one more cut record in far_cut / near_cut. The caller
-/// stores the records in the pool `cuts` holds p's chain in and sets far.cut / near.cut to their indices.
-/// The pieces keep p's box, which holds them; piece_box() (sort/piece_box.hpp) gives a piece that is
-/// kept the box of its exact region (a trial cut needs no box).
-inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, const ScreenPlane& pl, uint32_t plane_tri,
-                             ScreenPoly& far, ScreenPoly& near, PieceCut& far_cut, PieceCut& near_cut) {
-    int depth = 0;
-    for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev) ++depth;
-    if (depth >= kMaxPieceCuts) return CutResult::too_deep;
-    CutLine line{};
-    if (!crossing_line(pl, p, line)) return CutResult::no_line;
+namespace detail {
+/// cut_polygon() once the line is found: the pieces of p on each side of `line` (keeping the far side).
+/// Out of line, so that its outlines are off the stack while crossing_line() runs.
+__attribute__((noinline)) inline CutResult split_along(const ScreenPoly& p, Span<const PieceCut> cuts, const CutLine& line,
+                                                       uint32_t plane_tri, ScreenPoly& far, ScreenPoly& near, PieceCut& far_cut,
+                                                       PieceCut& near_cut) {
     // One outline at a time (a chip's stack): the far side's, then the near side's from p's again.
     Outline o;
     outline_of(p, cuts, o);
     // Each side keeps a region of nonzero area exactly when some vertex lies strictly on it.
-    const int sides = detail::clip_outline(o, line, p.v);
-    const bool far_ok = (sides & detail::kKeptSide) != 0, near_ok = (sides & detail::kCutSide) != 0;
+    const int sides = clip_outline(o, line, p.v);
+    const bool far_ok = (sides & kKeptSide) != 0, near_ok = (sides & kCutSide) != 0;
     if (!far_ok || !near_ok) return far_ok ? CutResult::far_only : (near_ok ? CutResult::near_only : CutResult::no_line);
     far_cut = {line, p.cut, plane_tri | kCutFar};
     near_cut = {reversed(line), p.cut, plane_tri};
@@ -194,9 +307,25 @@ inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, con
     };
     make(o, far);
     outline_of(p, cuts, o);
-    detail::clip_outline(o, reversed(line), p.v);
+    clip_outline(o, reversed(line), p.v);
     make(o, near);
     return CutResult::cut;
+}
+}  // namespace detail
+
+/// Cuts polygon p by plane pl (the plane of mesh triangle plane_tri) into far and near pieces, each
+/// keeping p's triangle, tri and flags, with one more cut record in far_cut / near_cut. The caller
+/// stores the records in the pool `cuts` holds p's chain in and sets far.cut / near.cut to their indices.
+/// The pieces keep p's box, which holds them; piece_box() (sort/piece_box.hpp) gives a piece that is
+/// kept the box of its exact region (a trial cut needs no box).
+inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, const ScreenPlane& pl, uint32_t plane_tri,
+                             int32_t width, int32_t height, ScreenPoly& far, ScreenPoly& near, PieceCut& far_cut, PieceCut& near_cut) {
+    int depth = 0;
+    for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev) ++depth;
+    if (depth >= kMaxPieceCuts) return CutResult::too_deep;
+    CutLine line{};
+    if (!crossing_line(pl, p, width, height, line)) return CutResult::no_line;
+    return detail::split_along(p, cuts, line, plane_tri, far, near, far_cut, near_cut);
 }
 
 }  // namespace hider
