@@ -64,7 +64,7 @@ void check_against_render(const std::string& path, const Args& camera, bool cull
     if (!render(scene, opt, r, why)) fail(path + ": render: " + why);
     const NewellStats& n = r.newell;
     if (v.at("after") != r.polygons || v.at("pair-tests") != n.pair_tests || v.at("moves") != n.moves ||
-        v.at("cuts") != n.splits || v.at("cycles") != n.cycles || v.at("pixel-ordered") != n.pixel_decided || v.at("unresolved") != n.unresolved ||
+        v.at("cuts") != n.splits || v.at("cycles") != n.cycles || v.at("pixel-ordered") != n.pixel_ordered || v.at("unresolved") != n.unresolved ||
         v.at("dropped") != n.dropped || v.at("too-deep") != n.too_deep)
         fail(path + ": the measured newell_order disagrees with render() (common/render.cpp)");
 }
@@ -123,7 +123,7 @@ int newell_run_command(const Args& args) {
     const NewellStats& s = job.stats;
     std::printf("newell polygons %zu after %zu pair-tests %" PRIu64 " moves %" PRIu32 " cuts %" PRIu32 " cycles %" PRIu32
                 " pixel-ordered %" PRIu32 " unresolved %" PRIu32 " dropped %" PRIu32 " too-deep %" PRIu32 "\n",
-                built, order.size(), s.pair_tests, s.moves, s.splits, s.cycles, s.pixel_decided, s.unresolved, s.dropped, s.too_deep);
+                built, order.size(), s.pair_tests, s.moves, s.splits, s.cycles, s.pixel_ordered, s.unresolved, s.dropped, s.too_deep);
     return 0;
 }
 

@@ -97,9 +97,11 @@ int warn_incomplete(const RenderOptions& opt, const RenderResult& r, bool strict
     if (n.budget_exhausted)
         std::cerr << kind << "Newell's budget of pair tests ran out after " << n.pair_tests
                   << "; the rest is drawn in depth order\n";
-    if (n.dropped == 0 && n.too_deep == 0 && !n.budget_exhausted && n.unresolved != 0)
-        std::cerr << kind << n.unresolved << " pairs of a cycle kept in an order some of their shared pixels disagree with\n";
-    else if (n.dropped == 0 && n.too_deep == 0 && !n.budget_exhausted)
+    if (n.unresolved != 0)
+        std::cerr << kind << n.unresolved << " pairs left uncut in an order some of their shared pixels disagree with\n";
+    if (n.inexact_cuts != 0)
+        std::cerr << kind << n.inexact_cuts << " cuts along a line that leaves a pixel centre on the wrong side of the plane\n";
+    if (n.dropped == 0 && n.too_deep == 0 && !n.budget_exhausted && n.unresolved == 0 && n.inexact_cuts == 0)
         std::cerr << kind << "the frame is incomplete: " << status_name(r.stats.status) << "\n";
     (void)opt;
     return strict ? 2 : 0;
@@ -285,9 +287,9 @@ int main(int argc, char** argv) {
                         static_cast<size_t>(s.triangles_in));
         if (opt.algo == Algo::newell || opt.algo == Algo::reverse) {
             const NewellStats& n = result.newell;
-            std::printf("newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u pixel-decided %u\n",
+            std::printf("newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u pixel-ordered %u inexact-cuts %u\n",
                         result.polygons, static_cast<unsigned long long>(n.pair_tests), n.moves, n.splits, n.cycles,
-                        n.unresolved, n.dropped, n.too_deep, n.pixel_decided);
+                        n.unresolved, n.dropped, n.too_deep, n.pixel_ordered, n.inexact_cuts);
         }
         if (s.status != Status::ok) std::printf("status %s\n", status_name(s.status));
     }

@@ -26,11 +26,14 @@ struct NewellStats {
     uint32_t moves = 0;             ///< Q moved before P
     uint32_t splits = 0;            ///< polygons cut in two by another's plane
     uint32_t cycles = 0;            ///< cycles of overlap found (each broken by a cut when possible)
-    uint32_t unresolved = 0;        ///< pairs left in the order found with no cut and pixels that disagree:
-                                    ///< the limits below, or a full NewellScratch::reorders (capacity_exceeded)
-    uint32_t pixel_decided = 0;     ///< pairs no cut could order, ordered by the pixel centres they share
+    uint32_t unresolved = 0;        ///< pairs left in the order found: no cut, and their shared pixels
+                                    ///< disagree (a cycle with NewellScratch::reorders full, or a piercing pair
+                                    ///< no line cuts), or the limits below (all capacity_exceeded)
+    uint32_t pixel_ordered = 0;     ///< pairs no cut could order, ordered by the pixel centres they share
     uint32_t dropped = 0;           ///< cuts not made because the polygon or cut pool was full
     uint32_t too_deep = 0;          ///< cuts not made because a piece already had kMaxPieceCuts cuts
+    uint32_t inexact_cuts = 0;      ///< cuts made along a line that puts a pixel centre on the wrong side
+                                    ///< of the plane (CutResult::cut_inexact; capacity_exceeded)
     bool budget_exhausted = false;  ///< the pair-test budget ran out; the rest went in depth order
 };
 
@@ -60,7 +63,7 @@ struct NewellScratch {
     Span<uint32_t> reorders;
 };
 
-/// NewellScratch::reorders entries that no scene tested has filled (four pairs at once).
+/// NewellScratch::reorders entries for 8 pairs at once (the sweeps of README.md never held more than 4).
 constexpr size_t kNewellReorders = 16;
 
 namespace detail {
@@ -102,6 +105,7 @@ private:
         uint32_t id = kNone;
         ScreenPoly far, near;
         PieceCut far_cut, near_cut;
+        bool inexact = false;  ///< CutResult::cut_inexact
     };
 
     /// The candidate, with its outline and plane computed when a first pair needs them.
@@ -159,6 +163,10 @@ private:
                 for (int i = 0; i < act.count; ++i) {
                     const Cut& c = act.cuts[i];
                     cur_cut = cur_cut || c.id == cur;
+                    if (c.inexact) {
+                        ++ns_.inexact_cuts;
+                        status_ = Status::capacity_exceeded;
+                    }
                     replace(c.id, c.far, c.near, c.far_cut, c.near_cut, c.id != cur);
                 }
                 return cur_cut ? kNone : cur;
@@ -217,12 +225,12 @@ private:
             }
             ++ns_.cycles;  // a cycle: cut one of them by the other's plane, or another pair of the cycle
             cycle = true;
-            if (p_cut == CutResult::cut) take(act, cur, pc);
-            else if (q_cut == CutResult::cut) take(act, qi, qc);
+            if (made(p_cut)) take(act, cur, pc);
+            else if (made(q_cut)) take(act, qi, qc);
             else too_deep = !break_cycle(qi, act) && (too_deep || cycle_too_deep_);
         } else {  // piercing: each straddles the other's plane, so cut both along their intersection
-            if (p_cut == CutResult::cut) take(act, cur, pc);
-            if (q_cut == CutResult::cut) take(act, qi, qc);
+            if (made(p_cut)) take(act, cur, pc);
+            if (made(q_cut)) take(act, qi, qc);
         }
         if (act.count != 0) {
             if (polys_.size() + act.count <= polys_.capacity() && cuts_.size() + 2 * act.count <= cuts_.capacity()) {
@@ -235,11 +243,11 @@ private:
             // Nothing cuts the pair: keep the order found if its shared pixels agree, or break the cycle
             // at another pair of it whose pixels do.
             if (pixel_test() && drawn_under(p, q, cuts(), width_, height_)) {
-                ++ns_.pixel_decided;
+                ++ns_.pixel_ordered;
                 return false;
             }
             if (cycle && break_by_pixels(qi, act)) {
-                ++ns_.pixel_decided;
+                ++ns_.pixel_ordered;
                 return true;
             }
             status_ = Status::capacity_exceeded;  // the order found draws a shared pixel wrong
@@ -252,6 +260,8 @@ private:
         act.count = 0;
         return false;
     }
+
+    static bool made(CutResult r) { return r == CutResult::cut || r == CutResult::cut_inexact; }
 
     /// Adds polygon id's cut c to the action (the first slot keeps P's cut until then).
     static void take(Action& act, uint32_t id, const Cut& c) {
@@ -314,7 +324,8 @@ private:
     bool break_by_pixels(uint32_t q, Action& act) {
         if (reorder_count_ + 2 > s_.reorders.size()) return false;
         size_t j = chain_len_;
-        while (j-- > 0 && s_.chain[j] != q) {}
+        while (j > 0 && s_.chain[j - 1] != q) --j;
+        if (j-- == 0) return false;  // q is always in the chain (moved in it); kept safe all the same
         for (size_t i = j; i + 1 < chain_len_; ++i) {
             const uint32_t x = s_.chain[i], y = s_.chain[i + 1];  // y was moved before x
             if (!pixel_test()) return false;
@@ -339,7 +350,8 @@ private:
         Cut& c = act.cuts[act.count];
         const CutResult r = cut_polygon(px, cuts(), pl, py.tri, width_, height_, c.far, c.near, c.far_cut, c.near_cut);
         cycle_too_deep_ = cycle_too_deep_ || r == CutResult::too_deep;
-        if (r != CutResult::cut) return false;
+        if (!made(r)) return false;
+        c.inexact = r == CutResult::cut_inexact;
         take(act, x, c);
         return true;
     }
@@ -370,6 +382,7 @@ private:
     /// leaves nothing of nonzero area on one side decides the side, else 0. `cut` tells how the try went.
     int side_by_cut(const ScreenPoly& x, const ScreenPlane& pl, uint32_t plane_tri, CutResult& cut, Cut& pieces) {
         cut = cut_polygon(x, cuts(), pl, plane_tri, width_, height_, pieces.far, pieces.near, pieces.far_cut, pieces.near_cut);
+        pieces.inexact = cut == CutResult::cut_inexact;
         if (cut == CutResult::far_only) return 1;
         if (cut == CutResult::near_only) return -1;
         return 0;

@@ -41,14 +41,15 @@ __attribute__((noinline)) inline void poly_rows(const ScreenPoly& p, Span<const 
     });
 }
 
-/// The first pixel row at or below subpixel y, and the row after the last at or above it.
+/// The first pixel row whose centre is at or below subpixel y (so, for y + 1, the row after the last
+/// whose centre is at or above y).
 constexpr int32_t row_at_or_below(int32_t y, int32_t height) { return (y - (kSubpixel / 2 - height * (kSubpixel / 2)) + kSubpixel - 1) >> kSubpixelBits; }
 
 }  // namespace detail
 
 /// True when drawing p before q leaves the nearer one at every pixel centre both draw: there q's depth
 /// is at most p's (a tie goes to q, drawn last). Cost: a set-up of each per kPixelOrderRows rows of
-/// their shared box, and one step per row.
+/// their shared box, and per row a division for each cut (narrow_to_cut()).
 inline bool drawn_under(const ScreenPoly& p, const ScreenPoly& q, Span<const PieceCut> cuts, int32_t width, int32_t height) {
     const int32_t y_begin = max(int32_t{0}, detail::row_at_or_below(max(p.ymin, q.ymin), height));
     const int32_t y_end = min(height, detail::row_at_or_below(min(p.ymax, q.ymax) + 1, height));
@@ -57,7 +58,7 @@ inline bool drawn_under(const ScreenPoly& p, const ScreenPoly& q, Span<const Pie
         uint32_t pdz, qdz;
         detail::poly_rows(p, cuts, width, height, y, pr, pdz);
         detail::poly_rows(q, cuts, width, height, y, qr, qdz);
-        for (int32_t i = 0; i < min(detail::kPixelOrderRows, y_end - y); ++i) {  // rows below the frame are not drawn
+        for (int32_t i = 0; i < min(detail::kPixelOrderRows, y_end - y); ++i) {  // the last pass may be short
             const int32_t lo = max(pr[i].x0, qr[i].x0), hi = min(pr[i].x1, qr[i].x1);
             if (lo >= hi) continue;
             // Both depths step by a constant along the row, so their difference is linear: its two ends decide.

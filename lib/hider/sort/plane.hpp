@@ -101,7 +101,8 @@ constexpr int64_t kCrossingSearch = 1024;
 namespace detail {
 /// Where a plane crosses a triangle's plane, as an affine function of the screen point whose sign is
 /// the point's side of the plane (on the triangle's plane): side(x, y) = sign(na (x - x0) + nb (y - y0)
-/// + h0), negated when `flip`. Kept within 2^62 for points of the triangle's box.
+/// + h0), negated when `flip`. From the vertices' sides shifted to 28 bits (crossing_line()), so it is
+/// exact up to that rounding, a tiny fraction of a subpixel across the box. Below 2^62 in the box.
 struct PlaneCrossing {
     int64_t na, nb, h0, x0, y0;
     bool flip;
@@ -116,7 +117,7 @@ struct PlaneCrossing {
 inline bool in_triangle(const ScreenVertex (&v)[3], int64_t x, int64_t y) {
     int neg = 0, pos = 0;
     for (int i = 0; i < 3; ++i) {
-        const ScreenVertex &a = v[i], &b = v[i == 2 ? 0 : i + 1];
+        const ScreenVertex &a = v[i], &b = v[next3(i)];
         const int64_t e = int64_t{b.x - a.x} * (y - a.y) - int64_t{b.y - a.y} * (x - a.x);
         neg += e < 0;
         pos += e > 0;
@@ -124,10 +125,11 @@ inline bool in_triangle(const ScreenVertex (&v)[3], int64_t x, int64_t y) {
     return neg == 0 || pos == 0;
 }
 
-/// True when `line` (kept side: the plane's far side) puts a pixel centre of triangle v (box[] its
-/// bounding box: x0, x1, y0, y1) on the other side from the crossing k (a centre exactly on the crossing goes either
-/// way). With the line within a few subpixels of the crossing, such a centre lies between them: one of
-/// the two centres next to the line on each row or column of centres along it.
+/// True when `line` (kept side: the plane's far side) puts a pixel centre of triangle v within box[]
+/// (x0, x1, y0, y1: the triangle's box within the frame's centres) on the other side from the crossing
+/// k (a centre exactly on the crossing goes either way). With the line within a few subpixels of the
+/// crossing, such a centre lies between them: one of the two centres next to the line on each row or
+/// column of centres along it.
 inline bool misplaces_centre(const CutLine& line, const PlaneCrossing& k, const ScreenVertex (&v)[3], const int64_t (&box)[4],
                              int32_t x_origin, int32_t y_origin) {
     const int64_t ldx = line.x1 - line.x0, ldy = line.y1 - line.y0;
@@ -157,15 +159,47 @@ inline bool misplaces_centre(const CutLine& line, const PlaneCrossing& k, const 
     }
     return false;
 }
+/// The point of [from, to] (within the coordinate limits) on the major axis (x when along_x) where
+/// crossing k comes nearest to a grid point, and that grid point's minor coordinate; false when none
+/// is in range. The remainder is stepped along the axis, without a division per step.
+inline bool near_grid(const PlaneCrossing& k, bool along_x, int64_t from, int64_t to, int64_t& at, int64_t& minor) {
+    from = max<int64_t>(from, -kCoordLimit);
+    to = min<int64_t>(to, kCoordLimit);
+    if (from > to) return false;
+    const int64_t m = along_x ? k.na : k.nb, d = along_x ? k.nb : k.na, o_major = along_x ? k.x0 : k.y0;
+    const int64_t o_minor = along_x ? k.y0 : k.x0, ad = abs_value(d);  // |m| <= |d|, d != 0
+    // The minor coordinate at t is o_minor + num / d, num = -(m (t - o_major) + h0): its nearest grid
+    // point q and the remainder r = num - q d (in units of d's sign, |r| <= |d| / 2).
+    const int64_t num = -(m * (from - o_major) + k.h0), step = d < 0 ? m : -m;
+    int64_t q = div_round(num, d), r = (d < 0 ? -1 : 1) * (num - q * d), best = -1;
+    for (int64_t t = from; t <= to; ++t, r += step) {
+        while (2 * r > ad) { r -= ad; ++q; }
+        while (2 * r < -ad) { r += ad; --q; }
+        if (abs_value(o_minor + q) > kCoordLimit || (best >= 0 && abs_value(r) >= best)) continue;
+        best = abs_value(r);
+        at = t;
+        minor = o_minor + q;
+    }
+    return best >= 0;
+}
 }  // namespace detail
 
+/// How crossing_line() went.
+enum class CrossingResult : uint8_t {
+    none,     ///< the planes are parallel, or their crossing misses the triangle's box
+    exact,    ///< every pixel centre of the triangle lies on the side of the line its plane side says
+    inexact,  ///< no line tried does that: a centre within a tiny distance of the crossing goes wrong
+};
+
+/// The line where plane pl crosses the plane of polygon p on the screen
 /// The line where plane pl crosses the plane of polygon p on the screen, through two grid points near
 /// the border of p's triangle's bounding box, oriented to keep pl's far side (side() > 0). The line is
 /// the zero set of the plane's side function, which is affine over p's triangle. Its ends are rounded to
-/// the grid, so it can pass a pixel centre on the wrong side of the exact crossing (a width x height
-/// frame's centres): then ends moved by a subpixel or two are tried for one that puts every centre of
-/// the box on its own side. False when the planes are parallel or the line misses the box.
-inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, int32_t width, int32_t height, CutLine& far_side) {
+/// the grid, so it can pass a pixel centre of a width x height frame on the wrong side of the crossing:
+/// then ends moved by a subpixel or two, or ends beyond the box where the crossing nearly meets a grid
+/// point, are tried for one that puts every centre of the triangle on its own side (exact), else the
+/// line stays as found (inexact). None when the planes are parallel or the line misses the box.
+inline CrossingResult crossing_line(const ScreenPlane& pl, const ScreenPoly& p, int32_t width, int32_t height, CutLine& far_side) {
     Int128 h[3];
     int bits = 0;
     for (int i = 0; i < 3; ++i) {
@@ -182,7 +216,7 @@ inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, int32_t wi
     const int64_t nb = (hs[2] - hs[0]) * dx1 - (hs[1] - hs[0]) * dx2;
     const int64_t area = dx1 * dy2 - dx2 * dy1;
     const int64_t h0 = hs[0] * area;
-    if (na == 0 && nb == 0) return false;
+    if (na == 0 && nb == 0) return CrossingResult::none;
     // Where na (x - x0) + nb (y - y0) + h0 = 0 meets the four sides of the box.
     const int64_t bx0 = min(p.v[0].x, min(p.v[1].x, p.v[2].x)), bx1 = max(p.v[0].x, max(p.v[1].x, p.v[2].x));
     const int64_t by0 = min(p.v[0].y, min(p.v[1].y, p.v[2].y)), by1 = max(p.v[0].y, max(p.v[1].y, p.v[2].y));
@@ -206,22 +240,28 @@ inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, int32_t wi
             const int64_t d = (px[i] - px[k]) * (px[i] - px[k]) + (py[i] - py[k]) * (py[i] - py[k]);
             if (d > best) { best = d; ia = i; ib = k; }
         }
-    if (ia < 0) return false;
-    // Orient by the vertex farthest from the plane: it must land on the side of its own sign.
+    if (ia < 0) return CrossingResult::none;
+    // Orient by the crossing's gradient: the line keeps the side where the plane is farther.
+    const detail::PlaneCrossing k{na, nb, h0, x0, y0, area < 0};
     int far = 0;
     for (int i = 1; i < 3; ++i)
         if (abs_value(hs[i]) > abs_value(hs[far])) far = i;
-    if (hs[far] == 0) return false;
+    if (hs[far] == 0) return CrossingResult::none;
     auto oriented = [&](int64_t xa, int64_t ya, int64_t xb, int64_t yb) {
         const CutLine line{static_cast<int16_t>(xa), static_cast<int16_t>(ya), static_cast<int16_t>(xb), static_cast<int16_t>(yb)};
+        const int64_t g = ((xb - xa) * nb - (yb - ya) * na) * (area < 0 ? -1 : 1);  // below 2^62
+        if (g != 0) return g > 0 ? line : reversed(line);
+        // Across the gradient (a degenerate line): the vertex farthest from the plane lands on its own side.
         const bool keeps_far_vertex = cut_side(line, p.v[far].x, p.v[far].y) > 0;
         return keeps_far_vertex == (hs[far] > 0) ? line : reversed(line);
     };
     far_side = oriented(px[ia], py[ia], px[ib], py[ib]);
-    const detail::PlaneCrossing k{na, nb, h0, x0, y0, area < 0};
-    const int64_t box[4] = {bx0, bx1, by0, by1};
+    // The centres to check: the triangle's box within the frame's.
     const int32_t x_origin = kSubpixel / 2 - width * (kSubpixel / 2), y_origin = kSubpixel / 2 - height * (kSubpixel / 2);
-    if (!detail::misplaces_centre(far_side, k, p.v, box, x_origin, y_origin)) return true;
+    const int64_t box[4] = {max<int64_t>(bx0, x_origin), min<int64_t>(bx1, x_origin + (width - 1) * kSubpixel),
+                            max<int64_t>(by0, y_origin), min<int64_t>(by1, y_origin + (height - 1) * kSubpixel)};
+    auto good = [&](const CutLine& line) { return !detail::misplaces_centre(line, k, p.v, box, x_origin, y_origin); };
+    if (good(far_side)) return CrossingResult::exact;
     // Move the box border ends across the line, a subpixel or two each.
     const bool line_along_x = abs_value(px[ib] - px[ia]) >= abs_value(py[ib] - py[ia]);
     static constexpr int8_t kMoves[24][2] = {{1, 1}, {-1, -1}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, -1}, {-1, 1},
@@ -232,47 +272,32 @@ inline bool crossing_line(const ScreenPlane& pl, const ScreenPoly& p, int32_t wi
         const int64_t xb = px[ib] + (line_along_x ? 0 : mv[1]), yb = py[ib] + (line_along_x ? mv[1] : 0);
         if (abs_value(xa) > kCoordLimit || abs_value(ya) > kCoordLimit || abs_value(xb) > kCoordLimit || abs_value(yb) > kCoordLimit) continue;
         const CutLine line = oriented(xa, ya, xb, yb);
-        if (!detail::misplaces_centre(line, k, p.v, box, x_origin, y_origin)) {
+        if (good(line)) {
             far_side = line;
-            return true;
+            return CrossingResult::exact;
         }
     }
-    // Then ends where the exact crossing nearly meets a grid point, beyond each side of the box: the
-    // line through them is far closer to the crossing than one through rounded box borders.
+    // Then ends where the crossing nearly meets a grid point, beyond each side of the box: the line
+    // through them is far closer to the crossing than one through rounded box borders.
     const bool along_x = abs_value(na) <= abs_value(nb);  // the crossing is mostly horizontal: ends by x
-    const int64_t m = along_x ? na : nb, d = along_x ? nb : na, o_major = along_x ? x0 : y0, o_minor = along_x ? y0 : x0;
-    const int64_t ad = abs_value(d);
-    auto near_grid = [&](int64_t from, int64_t to, int64_t& at, int64_t& minor) {  // over [from, to] within the limits
-        from = max<int64_t>(from, -kCoordLimit);
-        to = min<int64_t>(to, kCoordLimit);
-        if (from > to) return false;
-        // The crossing's minor coordinate at t is o_minor + num / d, num = -(m (t - o_major) + h0): its
-        // nearest grid point q and the remainder r = num - q d, stepped along t without a division.
-        const int64_t num = -(m * (from - o_major) + h0), step = d < 0 ? m : -m;  // r in units of d's sign
-        int64_t q = div_round(num, d), r = (d < 0 ? -1 : 1) * (num - q * d);
-        int64_t best_err = -1;
-        for (int64_t t = from; t <= to; ++t, r += step) {
-            while (2 * r > ad) { r -= ad; ++q; }
-            while (2 * r < -ad) { r += ad; --q; }
-            if (abs_value(o_minor + q) > kCoordLimit || (best_err >= 0 && abs_value(r) >= best_err)) continue;
-            best_err = abs_value(r);
-            at = t;
-            minor = o_minor + q;
-        }
-        return best_err >= 0;
-    };
     const int64_t lo = along_x ? bx0 : by0, hi = along_x ? bx1 : by1;
     int64_t ta = 0, ma = 0, tb = 0, mb = 0;
-    if (near_grid(lo - kCrossingSearch, lo, ta, ma) && near_grid(hi, hi + kCrossingSearch, tb, mb) && ta != tb) {
+    if (detail::near_grid(k, along_x, lo - kCrossingSearch, lo, ta, ma) && detail::near_grid(k, along_x, hi, hi + kCrossingSearch, tb, mb) &&
+        ta != tb) {
         const CutLine line = along_x ? oriented(ta, ma, tb, mb) : oriented(ma, ta, mb, tb);
-        if (!detail::misplaces_centre(line, k, p.v, box, x_origin, y_origin)) far_side = line;
+        if (good(line)) {
+            far_side = line;
+            return CrossingResult::exact;
+        }
     }
-    return true;  // else the nearest line through the box borders, as found
+    return CrossingResult::inexact;  // the nearest line through the box borders, as found
 }
 
 /// How one polygon's cut by a plane went.
 enum class CutResult : uint8_t {
     cut,        ///< two pieces, each wholly on one side
+    cut_inexact,  ///< two pieces, but the line puts a pixel centre within a tiny distance of the crossing
+                  ///< on the wrong side (crossing_line(): inexact)
     far_only,   ///< no region of nonzero area is left on the near side: the polygon counts as far
     near_only,  ///< ... on the far side: it counts as near
     no_line,    ///< the planes do not cross inside the polygon's box
@@ -324,8 +349,12 @@ inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, con
     for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev) ++depth;
     if (depth >= kMaxPieceCuts) return CutResult::too_deep;
     CutLine line{};
-    if (!crossing_line(pl, p, width, height, line)) return CutResult::no_line;
-    return detail::split_along(p, cuts, line, plane_tri, far, near, far_cut, near_cut);
+    const CrossingResult crossing = crossing_line(pl, p, width, height, line);
+    if (crossing == CrossingResult::none) return CutResult::no_line;
+    const CutResult r = detail::split_along(p, cuts, line, plane_tri, far, near, far_cut, near_cut);
+    if (crossing == CrossingResult::exact || r == CutResult::no_line) return r;
+    // A side decided from an inexact line could be wrong at the centre it misplaces: undecided instead.
+    return r == CutResult::cut ? CutResult::cut_inexact : CutResult::no_line;
 }
 
 }  // namespace hider
