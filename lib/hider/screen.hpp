@@ -9,6 +9,9 @@ constexpr int kSubpixelBits = 4;                    ///< screen coordinates carr
 constexpr int32_t kSubpixel = 1 << kSubpixelBits;   ///< subpixels per pixel
 constexpr int32_t kCoordLimit = (1 << 14) - 1;      ///< |x|, |y| <= this keeps edge functions in int32
 constexpr int32_t kGuardBand = (1 << 14) - 64;      ///< clip planes sit here; rounding stays below the limit
+
+/// The coordinate (subpixels from the frame centre) of the centre of pixel 0 on an axis of `size` pixels.
+constexpr int32_t pixel_centre_origin(int32_t size) { return kSubpixel / 2 - size * (kSubpixel / 2); }
 /// Depths are kept in [kDepthMargin, 2^32 - 1 - kDepthMargin] so plane-stepping error never wraps.
 constexpr uint32_t kDepthMargin = 4096;
 constexpr uint32_t kDepthNear = kDepthMargin;

@@ -154,29 +154,39 @@ inline OutlinePoint cut_point(const Outline& o, int i, const LineEquation& line,
     return {static_cast<int16_t>(div_round(p.x, p.d)), static_cast<int16_t>(div_round(p.y, p.d)), depth_at(v, p)};
 }
 
+/// The lines of triangle outline o's three edges (its grid points are the triangle's vertices), each
+/// keeping the triangle's inside (>= 0).
+inline void triangle_edges(const Outline& o, LineEquation* out) {
+    const bool turn = cut_side({o.v[0].x, o.v[0].y, o.v[1].x, o.v[1].y}, o.v[2].x, o.v[2].y) >= 0;
+    for (int i = 0; i < 3; ++i) {
+        const OutlinePoint &a = o.v[i], &b = o.v[next3(i)];
+        const CutLine edge{a.x, a.y, b.x, b.y};
+        out[i] = line_equation(turn ? edge : reversed(edge));
+    }
+}
+
+/// Line l's value at vertex i of o with the sign of the exact vertex: its grid point is within half a
+/// subpixel of the vertex, so farther than that from the line it is on the vertex's side.
+__attribute__((always_inline)) inline int64_t vertex_side(const Outline& o, int i, const LineEquation& l) {
+    const int64_t e = int64_t{l.a} * o.v[i].x + int64_t{l.b} * o.v[i].y + l.c0;
+    if (!o.rounded || 2 * abs_value(e) > abs_value(int64_t{l.a}) + abs_value(int64_t{l.b})) return e;  // unrounded: exact
+    return line_value(l, outline_vertex(o, i));
+}
+
 /// Clips outline o of triangle v (without edges: the triangle itself) by the half-plane cut_side(line)
 /// >= 0, in place, each vertex's side decided exactly. Returns kKeptSide and/or kCutSide: the sides o
 /// had vertices strictly on before (the outline is unchanged without kCutSide).
 inline int clip_outline(Outline& o, const CutLine& cut, const ScreenVertex (&v)[3]) {
     if (!o.edges) {  // the whole triangle: its three edges, its inside kept
-        const bool turn = cut_side({o.v[0].x, o.v[0].y, o.v[1].x, o.v[1].y}, o.v[2].x, o.v[2].y) >= 0;
-        for (int i = 0; i < 3; ++i) {
-            const OutlinePoint &a = o.v[i], &b = o.v[i == 2 ? 0 : i + 1];
-            const CutLine edge{a.x, a.y, b.x, b.y};
-            o.edge[i] = line_equation(turn ? edge : reversed(edge));
-        }
+        triangle_edges(o, o.edge);
         o.edges = true;
     }
     const LineEquation line = line_equation(cut);
     const int n = o.count;
     int8_t s[3 + kMaxPieceCuts];
     int sides = 0;
-    const int64_t near = abs_value(int64_t{line.a}) + abs_value(int64_t{line.b});
     for (int i = 0; i < n; ++i) {
-        // A grid point is within half a subpixel of its vertex: farther than that from the line, it
-        // is on the vertex's side.
-        int64_t e = int64_t{line.a} * o.v[i].x + int64_t{line.b} * o.v[i].y + line.c0;
-        if (2 * abs_value(e) <= near) e = line_value(line, outline_vertex(o, i));
+        const int64_t e = vertex_side(o, i, line);
         s[i] = static_cast<int8_t>(e > 0 ? 1 : (e < 0 ? -1 : 0));
         sides |= e > 0 ? kKeptSide : (e < 0 ? kCutSide : 0);
     }
@@ -246,29 +256,16 @@ inline bool projections_disjoint(const Outline& p, const Outline& q) {
         if (s.count < 3) return false;
         detail::LineEquation tri[3];
         const detail::LineEquation* edges = s.edge;
-        if (!s.edges) {  // a whole triangle: the lines through its vertices, inside >= 0
-            const int64_t area = cut_side({s.v[0].x, s.v[0].y, s.v[1].x, s.v[1].y}, s.v[2].x, s.v[2].y);
-            if (area == 0) return false;
-            const bool turn = area > 0;
-            for (int i = 0; i < 3; ++i) {
-                const OutlinePoint &a = s.v[i], &b = s.v[i == 2 ? 0 : i + 1];
-                const CutLine edge{a.x, a.y, b.x, b.y};
-                tri[i] = detail::line_equation(turn ? edge : reversed(edge));
-            }
+        if (!s.edges) {  // a whole triangle: the lines through its vertices
+            if (cut_side({s.v[0].x, s.v[0].y, s.v[1].x, s.v[1].y}, s.v[2].x, s.v[2].y) == 0) return false;
+            detail::triangle_edges(s, tri);
             edges = tri;
         }
         for (int i = 0; i < s.count; ++i) {
             const detail::LineEquation& l = edges[i];
             if (l.a == 0 && l.b == 0) continue;
-            const int64_t near = abs_value(int64_t{l.a}) + abs_value(int64_t{l.b});
             bool all_out = true;
-            for (int k = 0; k < o.count && all_out; ++k) {
-                // A rounded point is within half a subpixel of its vertex: farther than that from the
-                // line, it is on the vertex's side; else the exact vertex decides.
-                int64_t e = int64_t{l.a} * o.v[k].x + int64_t{l.b} * o.v[k].y + l.c0;
-                if (o.rounded && 2 * abs_value(e) <= near) e = detail::line_value(l, detail::outline_vertex(o, k));
-                all_out = e <= 0;
-            }
+            for (int k = 0; k < o.count && all_out; ++k) all_out = detail::vertex_side(o, k, l) <= 0;
             if (all_out) return true;
         }
         return false;

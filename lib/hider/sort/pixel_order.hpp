@@ -33,7 +33,7 @@ __attribute__((noinline)) inline void poly_rows(const ScreenPoly& p, Span<const 
     TriangleRaster tr;
     if (!tr.setup(p.v[0], p.v[1], p.v[2], width, height)) return;
     dzdx = tr.dzdx();
-    const int32_t x_origin = kSubpixel / 2 - width * (kSubpixel / 2), y_origin = kSubpixel / 2 - height * (kSubpixel / 2);
+    const int32_t x_origin = pixel_centre_origin(width), y_origin = pixel_centre_origin(height);
     tr.spans(y, y + kPixelOrderRows, [&](int32_t row, int32_t x0, int32_t x1, uint32_t z) {
         int32_t lo = x0, hi = x1;
         for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev) narrow_to_cut(cuts[c].line, row, x_origin, y_origin, lo, hi);
@@ -43,7 +43,7 @@ __attribute__((noinline)) inline void poly_rows(const ScreenPoly& p, Span<const 
 
 /// The first pixel row whose centre is at or below subpixel y (so, for y + 1, the row after the last
 /// whose centre is at or above y).
-constexpr int32_t row_at_or_below(int32_t y, int32_t height) { return (y - (kSubpixel / 2 - height * (kSubpixel / 2)) + kSubpixel - 1) >> kSubpixelBits; }
+constexpr int32_t row_at_or_below(int32_t y, int32_t height) { return (y - pixel_centre_origin(height) + kSubpixel - 1) >> kSubpixelBits; }
 
 }  // namespace detail
 

@@ -257,7 +257,7 @@ inline CrossingResult crossing_line(const ScreenPlane& pl, const ScreenPoly& p, 
     };
     far_side = oriented(px[ia], py[ia], px[ib], py[ib]);
     // The centres to check: the triangle's box within the frame's.
-    const int32_t x_origin = kSubpixel / 2 - width * (kSubpixel / 2), y_origin = kSubpixel / 2 - height * (kSubpixel / 2);
+    const int32_t x_origin = pixel_centre_origin(width), y_origin = pixel_centre_origin(height);
     const int64_t box[4] = {max<int64_t>(bx0, x_origin), min<int64_t>(bx1, x_origin + (width - 1) * kSubpixel),
                             max<int64_t>(by0, y_origin), min<int64_t>(by1, y_origin + (height - 1) * kSubpixel)};
     auto good = [&](const CutLine& line) { return !detail::misplaces_centre(line, k, p.v, box, x_origin, y_origin); };
