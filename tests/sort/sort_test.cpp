@@ -676,6 +676,24 @@ TEST_CASE("Newell breaks a cycle at a pair its pixels order, and reports it when
     CHECK(without.unresolved > 0);
     CHECK(odd.unresolved == without.unresolved);
     CHECK((intact_room && intact_none && intact_odd));
+    // The peak it reports is a size that repeats the run: the same statistics, status ok.
+    CHECK(with_room.reorders_peak >= 2);
+    CHECK(with_room.reorders_peak <= kNewellReorders);
+    CHECK(without.reorders_peak == 0);
+    NewellStats at_peak;
+    bool intact_peak = false;
+    CHECK(run(with_room.reorders_peak, at_peak, intact_peak) == Status::ok);
+    CHECK(intact_peak);
+    CHECK(at_peak.pair_tests == with_room.pair_tests);
+    CHECK(at_peak.splits == with_room.splits);
+    CHECK(at_peak.pixel_ordered == with_room.pixel_ordered);
+    CHECK(at_peak.reorders_peak == with_room.reorders_peak);
+    if (with_room.reorders_peak > 2) {  // and two words fewer does not
+        NewellStats below;
+        bool intact_below = false;
+        CHECK(run(with_room.reorders_peak - 2, below, intact_below) == Status::capacity_exceeded);
+        CHECK(intact_below);
+    }
 }
 
 TEST_CASE("Newell's pair-test budget: any budget gives every polygon once, and ok only with the unlimited order") {

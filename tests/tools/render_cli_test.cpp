@@ -331,6 +331,8 @@ TEST_CASE("An unknown --algo is rejected with the list of available algorithms")
                 {"unknown algo 'scanline'", "available: zbuffer, painter, newell, reverse"});
     check_error(render(triangle_model(), {"--painter-key", "nearest"}), {"unknown painter key 'nearest'", "farthest", "barycenter"});
     check_error(render(triangle_model(), {"--pool", "0"}), {"--pool needs a polygon count"});
+    check_error(render(triangle_model(), {"--reorders", "3"}), {"--reorders needs an even word count 0..65536", "'3'"});
+    check_error(render(triangle_model(), {"--reorders", "65538"}), {"--reorders needs an even word count"});
 }
 
 TEST_CASE("An unknown --shade is rejected with the list of available shades") {
@@ -595,6 +597,38 @@ TEST_CASE("A full Newell pool is a warning naming the pool and the size it neede
     CHECK(enough.code == 0);
     CHECK(enough.err.empty());
     // The default pool holds it.
+    const Run dflt = render(model, with(cam, {"--no-cull", "--algo", "newell", "--strict"}));
+    CHECK(dflt.code == 0);
+    CHECK(dflt.err.empty());
+}
+
+TEST_CASE("Pairs Newell cannot order for want of reorders words are a warning naming the size; --strict exits 2") {
+    // boxes-69-10 without culling holds cycles no cut breaks, which Newell orders by their pixels and
+    // keeps in NewellScratch::reorders (README.md, "Newell").
+    const auto [model, cam] = generated("boxes-69-10");
+    const Run none = render(model, with(cam, {"--no-cull", "--algo", "newell", "--reorders", "0", "--stats"}));
+    INFO("stderr: ", none.err);
+    CHECK(none.code == 0);
+    CHECK(none.output_created);
+    CHECK(contains(none.out, "status capacity exceeded"));
+    CHECK(contains(none.err, "hider-render: warning: "));
+    CHECK(contains(none.err, " pairs left uncut in an order some of their shared pixels disagree with: the 0 words"));
+    const size_t at = none.err.find("needs --reorders ");
+    REQUIRE(at != std::string::npos);
+    const long needed = std::atol(none.err.c_str() + at + 17);
+    CHECK(needed >= 2);
+    CHECK(needed % 2 == 0);
+    const Run strict = render(model, with(cam, {"--no-cull", "--algo", "reverse", "--reorders", "0", "--strict"}));
+    CHECK(strict.code == 2);
+    CHECK(contains(strict.err, "hider-render: error: "));
+    // The size it names is enough, and --stats reports it as the peak: no warning, exit 0 with --strict.
+    const Run enough = render(model, with(cam, {"--no-cull", "--algo", "newell", "--reorders", std::to_string(needed), "--strict", "--stats"}));
+    INFO("stderr with the named size: ", enough.err);
+    CHECK(enough.code == 0);
+    CHECK(enough.err.empty());
+    CHECK(contains(enough.out, "unresolved 0 "));
+    CHECK(contains(enough.out, "reorders-peak " + std::to_string(needed) + "\n"));
+    // So does the default (kNewellReorders words).
     const Run dflt = render(model, with(cam, {"--no-cull", "--algo", "newell", "--strict"}));
     CHECK(dflt.code == 0);
     CHECK(dflt.err.empty());

@@ -70,7 +70,7 @@ Status order_polygons(const RenderOptions& opt, const View& view, const Mesh& me
     store.heap.resize(cap);
     store.heap_pos.resize(cap);
     store.chain.resize(cap);
-    store.reorders.resize(kNewellReorders);
+    store.reorders.resize(opt.reorders);
     store.links.resize(2 * cap);
     store.cells.resize(grid_cells(view.width, view.height));
     order = BoundedList<uint32_t>(store.order.data(), cap);
@@ -79,7 +79,7 @@ Status order_polygons(const RenderOptions& opt, const View& view, const Mesh& me
     const NewellScratch scratch{{store.keys.data(), built},       {store.scratch.data(), built},
                                 {store.heap.data(), cap},        {store.heap_pos.data(), cap},
                                 {store.links.data(), 2 * cap},   {store.cells.data(), store.cells.size()},
-                                {store.chain.data(), cap},       {store.reorders.data(), kNewellReorders}};
+                                {store.chain.data(), cap},       {store.reorders.data(), opt.reorders}};
     NewellOptions nopt;
     nopt.face_ids = mesh.ids;  // a fanned OBJ face is flat: its triangles need no order among themselves
     const Status s = newell_order(view, polys, cuts, scratch, order, ns, nopt);
@@ -98,6 +98,25 @@ bool render_sorted(const Scene& scene, const RenderOptions& opt, const View& vie
     st.status = order_polygons(opt, view, mesh, verts, extra, store, polys, cuts, order, st, out.newell);
     out.pool = extra;
     out.pool_needed = 0;
+    out.reorders_needed = 0;
+    if (opt.algo != Algo::painter && out.newell.unresolved != 0) {
+        // How many reorders words would order every pair by its pixels: the same view with more.
+        for (size_t more = std::max<size_t>(2 * opt.reorders, 64); more <= kMaxReorders; more *= 4) {
+            RenderOptions o2 = opt;
+            o2.reorders = more;
+            SortedStore s2;
+            BoundedList<ScreenPoly> p2;
+            BoundedList<PieceCut> c2;
+            BoundedList<uint32_t> ord2;
+            FrameStats st2;
+            NewellStats n2;
+            order_polygons(o2, view, mesh, verts, extra, s2, p2, c2, ord2, st2, n2);
+            if (n2.unresolved == 0) {
+                out.reorders_needed = n2.reorders_peak;  // a run that needed no more than it held
+                break;
+            }
+        }
+    }
     if (opt.algo != Algo::painter && out.newell.dropped != 0) {
         // How large the pool would have had to be: the same order with room to spare.
         for (size_t more = std::max<size_t>(2 * extra, 1024); more <= kMaxSplitPool; more *= 2) {

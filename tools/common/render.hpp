@@ -18,6 +18,8 @@ enum class PixelFormat { rgb565, rgb888, grey8 };
 
 /// Largest room for Newell's cuts the tools give or try (polygons).
 constexpr size_t kMaxSplitPool = size_t{1} << 24;
+/// The most words of NewellScratch::reorders hider-render tries before it gives up naming a size.
+constexpr size_t kMaxReorders = size_t{1} << 16;
 
 /// The room for cuts hider-render gives Newell by default for a mesh of `triangles` triangles.
 size_t default_split_pool(size_t triangles);
@@ -37,6 +39,7 @@ struct RenderOptions {
     Rgb base{255, 255, 255};
     DepthKey painter_key = DepthKey::farthest;  ///< painter only
     size_t split_pool = 0;  ///< newell/reverse: extra polygons for cuts; 0 = default_split_pool()
+    size_t reorders = kNewellReorders;  ///< newell/reverse: words of NewellScratch::reorders (two a pair)
 };
 
 /// What the ray caster or ray tracer did (render_ray.hpp).
@@ -54,6 +57,8 @@ struct RenderResult {
     size_t polygons = 0;          ///< object-space algorithms: polygons drawn after cuts
     size_t pool = 0;              ///< newell and reverse: the room for cuts it had (polygons)
     size_t pool_needed = 0;       ///< when cuts were dropped: the room that would have held them (0: more than kMaxSplitPool)
+    size_t reorders_needed = 0;   ///< when pairs were unresolved: the reorders words that resolve them all (0: none
+                                  ///< up to kMaxReorders does; some pair is a piercing one no line cuts)
     RayCounts ray;                ///< raycast and ray-traced scenes only
 };
 

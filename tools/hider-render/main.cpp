@@ -31,7 +31,7 @@ const char* kUsage =
     "usage: hider-render MODEL.obj|TREE.hbsp -o OUT.ppm|OUT.png [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
     "                    [--fov DEG] [--near N] [--far F] [--shade headlight|id|depth] [--no-cull]\n"
     "                    [--algo NAME] [--depth-bits 16|32] [--band ROWS] [--format rgb565|rgb888|grey8]\n"
-    "                    [--painter-key farthest|barycenter] [--pool N] [--stats] [--strict]\n"
+    "                    [--painter-key farthest|barycenter] [--pool N] [--reorders N] [--stats] [--strict]\n"
     "       hider-render --scene FILE.txt -o OUT.ppm|OUT.png [--size WxH] [--band ROWS] [--format ...] [--stats]\n";
 
 [[noreturn]] void fail(const std::string& msg) {
@@ -97,20 +97,26 @@ int warn_incomplete(const RenderOptions& opt, const RenderResult& r, bool strict
     if (n.budget_exhausted)
         std::cerr << kind << "Newell's budget of pair tests ran out after " << n.pair_tests
                   << "; the rest is drawn in depth order\n";
-    if (n.unresolved != 0)
-        std::cerr << kind << n.unresolved << " pairs left uncut in an order some of their shared pixels disagree with\n";
+    if (n.unresolved != 0) {
+        std::cerr << kind << n.unresolved << " pairs left uncut in an order some of their shared pixels disagree with";
+        if (r.reorders_needed != 0)
+            std::cerr << ": the " << opt.reorders << " words of pixel-ordered pairs are too few, this view needs --reorders "
+                      << r.reorders_needed << "\n";
+        else
+            std::cerr << " (a pair no line cuts, or more than " << kMaxReorders << " words of pixel-ordered pairs)\n";
+    }
     if (n.inexact_cuts != 0)
         std::cerr << kind << n.inexact_cuts << " cuts along a line that leaves a pixel centre on the wrong side of the plane\n";
     if (n.dropped == 0 && n.too_deep == 0 && !n.budget_exhausted && n.unresolved == 0 && n.inexact_cuts == 0)
         std::cerr << kind << "the frame is incomplete: " << status_name(r.stats.status) << "\n";
-    (void)opt;
     return strict ? 2 : 0;
 }
 
 /// Options that only make sense with an OBJ model (the scene file sets its own camera and shading).
 bool model_only_option(const std::string& a) {
     return a == "--eye" || a == "--target" || a == "--up" || a == "--fov" || a == "--near" || a == "--far" ||
-           a == "--shade" || a == "--no-cull" || a == "--depth-bits" || a == "--painter-key" || a == "--pool";
+           a == "--shade" || a == "--no-cull" || a == "--depth-bits" || a == "--painter-key" || a == "--pool" ||
+           a == "--reorders";
 }
 
 /// --scene FILE.txt: ray traces a scene file (README.md, "Ray-traced scenes").
@@ -215,6 +221,12 @@ int main(int argc, char** argv) {
             long n = 0;
             if (!parse_int(v, n) || n < 1 || n > (1L << 24)) fail("--pool needs a polygon count 1..16777216 (got '" + v + "')");
             opt.split_pool = static_cast<size_t>(n);
+        } else if (a == "--reorders") {
+            const std::string v = value();
+            long n = 0;
+            if (!parse_int(v, n) || n < 0 || n > static_cast<long>(kMaxReorders) || n % 2 != 0)
+                fail("--reorders needs an even word count 0.." + std::to_string(kMaxReorders) + " (got '" + v + "')");
+            opt.reorders = static_cast<size_t>(n);
         } else if (a == "--stats") stats = true;
         else if (a == "--strict") strict = true;
         else if (a == "-h" || a == "--help") {
@@ -223,7 +235,7 @@ int main(int argc, char** argv) {
             std::cout << kUsage << "algorithms: " << algo_names() << "\n"
                       << "defaults: --size " << c.width << 'x' << c.height << " --fov " << c.fov_deg
                       << " --algo zbuffer --shade headlight --depth-bits " << d.depth_bits
-                      << " --format rgb565 --painter-key farthest, the whole frame at once, the camera framing the model\n";
+                      << " --format rgb565 --painter-key farthest --reorders " << d.reorders << ", the whole frame at once, the camera framing the model\n";
             return 0;
         }
         else if (!a.empty() && a[0] == '-') fail("unknown option '" + a + "'\n" + kUsage);
@@ -287,9 +299,9 @@ int main(int argc, char** argv) {
                         static_cast<size_t>(s.triangles_in));
         if (opt.algo == Algo::newell || opt.algo == Algo::reverse) {
             const NewellStats& n = result.newell;
-            std::printf("newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u pixel-ordered %u inexact-cuts %u\n",
+            std::printf("newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u pixel-ordered %u inexact-cuts %u reorders-peak %u\n",
                         result.polygons, static_cast<unsigned long long>(n.pair_tests), n.moves, n.splits, n.cycles,
-                        n.unresolved, n.dropped, n.too_deep, n.pixel_ordered, n.inexact_cuts);
+                        n.unresolved, n.dropped, n.too_deep, n.pixel_ordered, n.inexact_cuts, n.reorders_peak);
         }
         if (s.status != Status::ok) std::printf("status %s\n", status_name(s.status));
     }
