@@ -634,6 +634,28 @@ TEST_CASE("Pairs Newell cannot order for want of reorders words are a warning na
     CHECK(dflt.err.empty());
 }
 
+TEST_CASE("An inexact Newell cut is a warning; --strict makes it exit 2") {
+    // In mikado-43-30 without culling one cut's crossing passes two pixel centres on opposite sides
+    // within a few thousandths of a subpixel, and no line through grid points that crossing_line() tries
+    // puts both on their sides (README.md, "Newell"): the frame is drawn, the cut reported.
+    const auto [model, cam] = generated("mikado-43-30");
+    const Run r = render(model, with(cam, {"--no-cull", "--algo", "newell", "--stats"}));
+    INFO("stderr: ", r.err);
+    CHECK(r.code == 0);
+    CHECK(r.output_created);
+    CHECK(contains(r.out, "status capacity exceeded"));
+    const size_t at = r.out.find("inexact-cuts ");
+    REQUIRE(at != std::string::npos);
+    const long n = std::atol(r.out.c_str() + at + 13);
+    CHECK(n >= 1);
+    CHECK(contains(r.err, "hider-render: warning: " + std::to_string(n) +
+                              " cuts along a line that leaves a pixel centre on the wrong side of the plane\n"));
+    const Run strict = render(model, with(cam, {"--no-cull", "--algo", "reverse", "--strict"}));
+    CHECK(strict.code == 2);
+    CHECK(contains(strict.err, "hider-render: error: "));
+    CHECK(contains(strict.err, " cuts along a line that leaves a pixel centre on the wrong side of the plane"));
+}
+
 TEST_CASE("A far plane beyond the scene is clamped, and the default near plane does not follow it") {
     const std::string torus = std::string(HIDER_TEST_DATA) + "/models/torus.obj";
     for (const char* far : {"5000", "1e308"}) {

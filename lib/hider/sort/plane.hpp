@@ -106,8 +106,9 @@ namespace detail {
 struct PlaneCrossing {
     int64_t na, nb, h0, x0, y0;
     bool flip;
+    int64_t value(int64_t x, int64_t y) const { return na * (x - x0) + nb * (y - y0) + h0; }
     int side(int64_t x, int64_t y) const {
-        const int64_t v = na * (x - x0) + nb * (y - y0) + h0;
+        const int64_t v = value(x, y);
         const int s = v > 0 ? 1 : (v < 0 ? -1 : 0);
         return flip ? -s : s;
     }
@@ -129,9 +130,10 @@ inline bool in_triangle(const ScreenVertex (&v)[3], int64_t x, int64_t y) {
 /// (x0, x1, y0, y1: the triangle's box within the frame's centres) on the other side from the crossing
 /// k (a centre exactly on the crossing goes either way). With the line within a few subpixels of the
 /// crossing, such a centre lies between them: one of the two centres next to the line on each row or
-/// column of centres along it.
+/// column of centres along it. With `nearest`, the walk goes on and leaves there the misplaced centre
+/// nearest the crossing (where a better line must pass closest).
 inline bool misplaces_centre(const CutLine& line, const PlaneCrossing& k, const ScreenVertex (&v)[3], const int64_t (&box)[4],
-                             int32_t x_origin, int32_t y_origin) {
+                             int32_t x_origin, int32_t y_origin, int64_t (*nearest)[2] = nullptr) {
     const int64_t ldx = line.x1 - line.x0, ldy = line.y1 - line.y0;
     const bool along_x = abs_value(ldx) >= abs_value(ldy);  // walk the major axis: a, the minor one: b
     const int64_t a0 = along_x ? box[0] : box[2], a1 = along_x ? box[1] : box[3];
@@ -146,18 +148,26 @@ inline bool misplaces_centre(const CutLine& line, const PlaneCrossing& k, const 
     const int64_t den = la * kSubpixel, step = lb * kSubpixel;
     int64_t num = (pb - bo) * la + (a - pa) * lb;
     int64_t j = div_floor(num, den), rem = num - j * den;  // rem in [0, den)
+    int64_t least = -1;  // |k.value()| of the nearest misplaced centre so far
     for (; a <= a1; a += kSubpixel) {
         for (int64_t b = bo + j * kSubpixel, i = 0; i < 2; ++i, b += kSubpixel) {
             if (b < b0 || b > b1) continue;
             const int64_t x = along_x ? a : b, y = along_x ? b : a;
             const int s = k.side(x, y);
-            if (s != 0 && cut_keeps(line, static_cast<int32_t>(x), static_cast<int32_t>(y)) != (s > 0) && in_triangle(v, x, y)) return true;
+            if (s == 0 || cut_keeps(line, static_cast<int32_t>(x), static_cast<int32_t>(y)) == (s > 0) || !in_triangle(v, x, y)) continue;
+            if (nearest == nullptr) return true;
+            const int64_t d = abs_value(k.value(x, y));
+            if (least < 0 || d < least) {
+                least = d;
+                (*nearest)[0] = x;
+                (*nearest)[1] = y;
+            }
         }
         rem += step;  // |step| <= den
         while (rem >= den) { rem -= den; ++j; }
         while (rem < 0) { rem += den; --j; }
     }
-    return false;
+    return least >= 0;
 }
 /// The point of [from, to] (within the coordinate limits) on the major axis (x when along_x) where
 /// crossing k comes nearest to a grid point, and that grid point's minor coordinate; false when none
@@ -182,6 +192,131 @@ inline bool near_grid(const PlaneCrossing& k, bool along_x, int64_t from, int64_
     }
     return best >= 0;
 }
+/// The grid point where crossing k meets the line of pixel centres through centre c along the major
+/// axis (x when along_x; `centre_origin` the major coordinate of a centre), rounded and moved off a
+/// centre toward the crossing, within kCrossingSearch of c: a line through it passes that line of
+/// centres in the same gap as the crossing. False when the crossing does not meet it there.
+inline bool centre_line_pivot(const PlaneCrossing& k, bool along_x, const int64_t (&c)[2], int64_t centre_origin, int64_t& at,
+                              int64_t& minor) {
+    const int64_t m = along_x ? k.na : k.nb, d = along_x ? k.nb : k.na;
+    const int64_t o_major = along_x ? k.x0 : k.y0, o_minor = along_x ? k.y0 : k.x0;
+    const int64_t c_major = along_x ? c[0] : c[1];
+    minor = along_x ? c[1] : c[0];
+    if (m == 0) return false;
+    // m (t - o_major) + d (minor - o_minor) + h0 = 0; |d| >= |m|, both below 2^31 in the box.
+    const int64_t num = -(d * (minor - o_minor) + k.h0);
+    const int64_t ahead = div_round(num, m);  // the crossing's t - o_major, rounded
+    if (abs_value(ahead + o_major - c_major) > kCrossingSearch) return false;
+    at = o_major + ahead;
+    if ((at - centre_origin) % kSubpixel == 0) {  // on a centre: one subpixel toward the crossing
+        const int64_t exact2 = 2 * num, r2 = exact2 - 2 * ahead * m;  // sign of (num / m - ahead) times m's
+        if (r2 == 0) return false;                                     // the crossing passes the centre itself
+        at += ((r2 > 0) == (m > 0)) ? 1 : -1;
+    }
+    return abs_value(at) <= kCoordLimit && abs_value(minor) <= kCoordLimit;
+}
+
+/// A candidate line of crossing_line() and what it is checked against: crossing k over triangle v, the
+/// pixel centres within box[] (x0, x1, y0, y1), the vertex farthest from the plane and its side (to
+/// orient a line across the gradient), and the major axis of points given as (major, minor).
+struct LineFit {
+    PlaneCrossing k;
+    const ScreenPoly* p;
+    int64_t box[4];
+    int32_t x_origin, y_origin;
+    int far;
+    bool far_positive;
+    bool along_x;
+
+    /// The line through (xa, ya) and (xb, yb), kept side the plane's far side.
+    CutLine oriented(int64_t xa, int64_t ya, int64_t xb, int64_t yb) const {
+        const CutLine line{static_cast<int16_t>(xa), static_cast<int16_t>(ya), static_cast<int16_t>(xb), static_cast<int16_t>(yb)};
+        const int64_t g = ((xb - xa) * k.nb - (yb - ya) * k.na) * (k.flip ? -1 : 1);  // below 2^62
+        if (g != 0) return g > 0 ? line : reversed(line);
+        // Across the gradient (a degenerate line): the vertex farthest from the plane lands on its own side.
+        const bool keeps_far_vertex = cut_side(line, p->v[far].x, p->v[far].y) > 0;
+        return keeps_far_vertex == far_positive ? line : reversed(line);
+    }
+    /// True, with `line` set, when the line through (xa, ya) and (xb, yb) puts every centre on the side
+    /// of the crossing it is on; else `miss` holds the misplaced centre nearest the crossing (`line` is
+    /// set all the same). False for ends past the coordinate limits or equal ends.
+    __attribute__((always_inline)) bool fits_xy(int64_t xa, int64_t ya, int64_t xb, int64_t yb, CutLine& line, int64_t (&miss)[2]) const {
+        if (abs_value(xa) > kCoordLimit || abs_value(ya) > kCoordLimit || abs_value(xb) > kCoordLimit || abs_value(yb) > kCoordLimit ||
+            (xa == xb && ya == yb))
+            return false;
+        line = oriented(xa, ya, xb, yb);
+        return !misplaces_centre(line, k, p->v, box, x_origin, y_origin, &miss);
+    }
+    /// fits_xy() for points (t0, m0) and (t1, m1) given as (major, minor); false when t0 == t1.
+    __attribute__((always_inline)) bool fits(int64_t t0, int64_t m0, int64_t t1, int64_t m1, CutLine& line, int64_t (&miss)[2]) const {
+        if (t0 == t1) return false;
+        return along_x ? fits_xy(t0, m0, t1, m1, line, miss) : fits_xy(m0, t0, m1, t1, line, miss);
+    }
+};
+
+/// The ends near_grid() found beyond each side of the box (major, minor), where it found one.
+struct CrossingEnds {
+    bool a = false, b = false;
+    int64_t ta = 0, ma = 0, tb = 0, mb = 0;
+};
+
+/// crossing_line()'s last resort: pivots where the crossing meets the line of centres (along the major
+/// axis) through the misplaced centre nearest it, which the line must pass in the same gap. Each pivot
+/// with each end and with a step along the crossing's slope; in a second round, for the centre the
+/// first pivot's lines misplaced, also with the first pivot, and the point between the two centres where
+/// the crossing nearly meets a grid point with the same partners (two centres on opposite sides, each
+/// close to the crossing). True, with `line` set, when one fits.
+__attribute__((noinline)) inline bool pivot_search(const LineFit& f, const CrossingEnds& e, int64_t (&nearest)[2], CutLine& line) {
+    const int64_t m = f.along_x ? f.k.na : f.k.nb, d = f.along_x ? f.k.nb : f.k.na;  // |m| <= |d|, d != 0
+    // The step: 2 kCrossingSearch along the major axis and the crossing's rise over it, at least one.
+    const int64_t run = 2 * kCrossingSearch;
+    int64_t rise = div_round(-m * run, d);  // |m| run < 2^57
+    if (rise == 0 && m != 0) rise = (m < 0) == (d < 0) ? -1 : 1;
+    int64_t first[2] = {0, 0}, first_miss[2] = {0, 0};  // the first round's pivot and centre
+    for (int round = 0; round < 2; ++round) {
+        int64_t pivots[2][2];
+        if (!centre_line_pivot(f.k, f.along_x, nearest, f.along_x ? f.x_origin : f.y_origin, pivots[0][0], pivots[0][1])) return false;
+        int count = 1;
+        if (round > 0) {
+            const int64_t c0 = f.along_x ? nearest[0] : nearest[1], c1 = f.along_x ? first_miss[0] : first_miss[1];
+            if (c0 != c1 && near_grid(f.k, f.along_x, min(c0, c1), max(c0, c1), pivots[1][0], pivots[1][1])) count = 2;
+        }
+        int64_t next[2] = {nearest[0], nearest[1]};
+        bool moved = false;  // next holds another centre one of these lines misplaced
+        for (int q = 0; q < count; ++q) {
+            const int64_t tp = pivots[q][0], mp = pivots[q][1];
+            for (int i = 0; i < 5; ++i) {
+                int64_t t1 = first[0], m1 = first[1];  // i = 4, in the second round
+                if (i < 2) {
+                    if (!(i == 0 ? e.a : e.b)) continue;
+                    t1 = i == 0 ? e.ta : e.tb;
+                    m1 = i == 0 ? e.ma : e.mb;
+                } else if (i < 4) {
+                    if (rise == 0) continue;
+                    t1 = i == 2 ? tp + run : tp - run;
+                    m1 = i == 2 ? mp + rise : mp - rise;
+                } else if (round == 0) {
+                    continue;
+                }
+                int64_t at[2] = {nearest[0], nearest[1]};
+                if (f.fits(tp, mp, t1, m1, line, at)) return true;
+                if (!moved && (at[0] != nearest[0] || at[1] != nearest[1])) {
+                    next[0] = at[0];
+                    next[1] = at[1];
+                    moved = true;
+                }
+            }
+        }
+        if (!moved) return false;
+        first[0] = pivots[0][0];
+        first[1] = pivots[0][1];
+        first_miss[0] = nearest[0];
+        first_miss[1] = nearest[1];
+        nearest[0] = next[0];
+        nearest[1] = next[1];
+    }
+    return false;
+}
 }  // namespace detail
 
 /// How crossing_line() went.
@@ -191,15 +326,13 @@ enum class CrossingResult : uint8_t {
     inexact,  ///< no line tried does that: a centre within a tiny distance of the crossing goes wrong
 };
 
-/// The line where plane pl crosses the plane of polygon p on the screen
-/// The line where plane pl crosses the plane of polygon p on the screen, through two grid points near
-/// the border of p's triangle's bounding box, oriented to keep pl's far side (side() > 0). The line is
-/// the zero set of the plane's side function, which is affine over p's triangle. Its ends are rounded to
-/// the grid, so it can pass a pixel centre of a width x height frame on the wrong side of the crossing:
-/// then ends moved by a subpixel or two, or ends beyond the box where the crossing nearly meets a grid
-/// point, are tried for one that puts every centre of the triangle on its own side (exact), else the
-/// line stays as found (inexact). None when the planes are parallel or the line misses the box.
-inline CrossingResult crossing_line(const ScreenPlane& pl, const ScreenPoly& p, int32_t width, int32_t height, CutLine& far_side) {
+namespace detail {
+/// crossing_line() up to its pivots, out of line so that its frame is gone while they run: the line
+/// through the box borders (`first`), moved ends, then ends near the grid beyond the box (`e`). When none
+/// fits (inexact), `f` and `nearest` (the centre the last line misplaced nearest the crossing) are set.
+__attribute__((noinline)) inline CrossingResult first_lines(const ScreenPlane& pl, const ScreenPoly& p, int32_t width, int32_t height,
+                                                            LineFit& f, CrossingEnds& e, int64_t (&nearest)[2], CutLine& first,
+                                                            CutLine& far_side) {
     Int128 h[3];
     int bits = 0;
     for (int i = 0; i < 3; ++i) {
@@ -242,26 +375,23 @@ inline CrossingResult crossing_line(const ScreenPlane& pl, const ScreenPoly& p, 
         }
     if (ia < 0) return CrossingResult::none;
     // Orient by the crossing's gradient: the line keeps the side where the plane is farther.
-    const detail::PlaneCrossing k{na, nb, h0, x0, y0, area < 0};
     int far = 0;
     for (int i = 1; i < 3; ++i)
         if (abs_value(hs[i]) > abs_value(hs[far])) far = i;
     if (hs[far] == 0) return CrossingResult::none;
-    auto oriented = [&](int64_t xa, int64_t ya, int64_t xb, int64_t yb) {
-        const CutLine line{static_cast<int16_t>(xa), static_cast<int16_t>(ya), static_cast<int16_t>(xb), static_cast<int16_t>(yb)};
-        const int64_t g = ((xb - xa) * nb - (yb - ya) * na) * (area < 0 ? -1 : 1);  // below 2^62
-        if (g != 0) return g > 0 ? line : reversed(line);
-        // Across the gradient (a degenerate line): the vertex farthest from the plane lands on its own side.
-        const bool keeps_far_vertex = cut_side(line, p.v[far].x, p.v[far].y) > 0;
-        return keeps_far_vertex == (hs[far] > 0) ? line : reversed(line);
-    };
-    far_side = oriented(px[ia], py[ia], px[ib], py[ib]);
     // The centres to check: the triangle's box within the frame's.
     const int32_t x_origin = pixel_centre_origin(width), y_origin = pixel_centre_origin(height);
-    const int64_t box[4] = {max<int64_t>(bx0, x_origin), min<int64_t>(bx1, x_origin + (width - 1) * kSubpixel),
-                            max<int64_t>(by0, y_origin), min<int64_t>(by1, y_origin + (height - 1) * kSubpixel)};
-    auto good = [&](const CutLine& line) { return !detail::misplaces_centre(line, k, p.v, box, x_origin, y_origin); };
-    if (good(far_side)) return CrossingResult::exact;
+    f = LineFit{{na, nb, h0, x0, y0, area < 0},
+                &p,
+                {max<int64_t>(bx0, x_origin), min<int64_t>(bx1, x_origin + (width - 1) * kSubpixel),
+                 max<int64_t>(by0, y_origin), min<int64_t>(by1, y_origin + (height - 1) * kSubpixel)},
+                x_origin,
+                y_origin,
+                far,
+                hs[far] > 0,
+                abs_value(na) <= abs_value(nb)};  // the crossing is mostly horizontal: ends by x
+    if (f.fits_xy(px[ia], py[ia], px[ib], py[ib], far_side, nearest)) return CrossingResult::exact;
+    first = far_side;
     // Move the box border ends across the line, a subpixel or two each.
     const bool line_along_x = abs_value(px[ib] - px[ia]) >= abs_value(py[ib] - py[ia]);
     static constexpr int8_t kMoves[24][2] = {{1, 1}, {-1, -1}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, -1}, {-1, 1},
@@ -270,27 +400,36 @@ inline CrossingResult crossing_line(const ScreenPlane& pl, const ScreenPoly& p, 
     for (const auto& mv : kMoves) {
         const int64_t xa = px[ia] + (line_along_x ? 0 : mv[0]), ya = py[ia] + (line_along_x ? mv[0] : 0);
         const int64_t xb = px[ib] + (line_along_x ? 0 : mv[1]), yb = py[ib] + (line_along_x ? mv[1] : 0);
-        if (abs_value(xa) > kCoordLimit || abs_value(ya) > kCoordLimit || abs_value(xb) > kCoordLimit || abs_value(yb) > kCoordLimit) continue;
-        const CutLine line = oriented(xa, ya, xb, yb);
-        if (good(line)) {
-            far_side = line;
-            return CrossingResult::exact;
-        }
+        int64_t unused[2];
+        if (f.fits_xy(xa, ya, xb, yb, far_side, unused)) return CrossingResult::exact;
     }
     // Then ends where the crossing nearly meets a grid point, beyond each side of the box: the line
     // through them is far closer to the crossing than one through rounded box borders.
-    const bool along_x = abs_value(na) <= abs_value(nb);  // the crossing is mostly horizontal: ends by x
-    const int64_t lo = along_x ? bx0 : by0, hi = along_x ? bx1 : by1;
-    int64_t ta = 0, ma = 0, tb = 0, mb = 0;
-    if (detail::near_grid(k, along_x, lo - kCrossingSearch, lo, ta, ma) && detail::near_grid(k, along_x, hi, hi + kCrossingSearch, tb, mb) &&
-        ta != tb) {
-        const CutLine line = along_x ? oriented(ta, ma, tb, mb) : oriented(ma, ta, mb, tb);
-        if (good(line)) {
-            far_side = line;
-            return CrossingResult::exact;
-        }
-    }
-    return CrossingResult::inexact;  // the nearest line through the box borders, as found
+    const int64_t lo = f.along_x ? bx0 : by0, hi = f.along_x ? bx1 : by1;
+        e.a = near_grid(f.k, f.along_x, lo - kCrossingSearch, lo, e.ta, e.ma);
+    e.b = near_grid(f.k, f.along_x, hi, hi + kCrossingSearch, e.tb, e.mb);
+    if (e.a && e.b && f.fits(e.ta, e.ma, e.tb, e.mb, far_side, nearest)) return CrossingResult::exact;
+    return CrossingResult::inexact;
+}
+}  // namespace detail
+
+/// The line where plane pl crosses the plane of polygon p on the screen
+/// The line where plane pl crosses the plane of polygon p on the screen, through two grid points near
+/// the border of p's triangle's bounding box, oriented to keep pl's far side (side() > 0). The line is
+/// the zero set of the plane's side function, which is affine over p's triangle. Its ends are rounded to
+/// the grid, so it can pass a pixel centre of a width x height frame on the wrong side of the crossing:
+/// then ends moved by a subpixel or two, or ends beyond the box where the crossing nearly meets a grid
+/// point, are tried for one that puts every centre of the triangle on its own side (exact), else the
+/// line stays as found (inexact). None when the planes are parallel or the line misses the box.
+inline CrossingResult crossing_line(const ScreenPlane& pl, const ScreenPoly& p, int32_t width, int32_t height, CutLine& far_side) {
+    detail::LineFit f{};
+    detail::CrossingEnds e;
+    int64_t nearest[2] = {0, 0};
+    CutLine first{};
+    const CrossingResult r = detail::first_lines(pl, p, width, height, f, e, nearest, first, far_side);
+    if (r != CrossingResult::inexact || detail::pivot_search(f, e, nearest, far_side)) return r == CrossingResult::inexact ? CrossingResult::exact : r;
+    far_side = first;  // the nearest line through the box borders, as found
+    return CrossingResult::inexact;
 }
 
 /// How one polygon's cut by a plane went.
