@@ -86,6 +86,19 @@ Status order_polygons(const RenderOptions& opt, const View& view, const Mesh& me
     return s != Status::ok ? s : st.status;
 }
 
+/// Newell's statistics for the order order_polygons() finds with `extra` polygons of room (sizing runs).
+NewellStats trial_order(const RenderOptions& opt, const View& view, const Mesh& mesh, const std::vector<ScreenVertex>& verts,
+                        size_t extra) {
+    SortedStore store;
+    BoundedList<ScreenPoly> polys;
+    BoundedList<PieceCut> cuts;
+    BoundedList<uint32_t> order;
+    FrameStats st;
+    NewellStats ns;
+    order_polygons(opt, view, mesh, verts, extra, store, polys, cuts, order, st, ns);
+    return ns;
+}
+
 template <class Format, class Depth>
 bool render_sorted(const Scene& scene, const RenderOptions& opt, const View& view, const Mesh& mesh,
                    const std::vector<ScreenVertex>& verts, const DrawOptions& draw, RenderResult& out) {
@@ -104,13 +117,7 @@ bool render_sorted(const Scene& scene, const RenderOptions& opt, const View& vie
         for (size_t more = std::max<size_t>(2 * opt.reorders, 64); more <= kMaxReorders; more *= 4) {
             RenderOptions o2 = opt;
             o2.reorders = more;
-            SortedStore s2;
-            BoundedList<ScreenPoly> p2;
-            BoundedList<PieceCut> c2;
-            BoundedList<uint32_t> ord2;
-            FrameStats st2;
-            NewellStats n2;
-            order_polygons(o2, view, mesh, verts, extra, s2, p2, c2, ord2, st2, n2);
+            const NewellStats n2 = trial_order(o2, view, mesh, verts, extra);
             if (n2.unresolved == 0) {
                 out.reorders_needed = n2.reorders_peak;  // a run that needed no more than it held
                 break;
@@ -120,13 +127,7 @@ bool render_sorted(const Scene& scene, const RenderOptions& opt, const View& vie
     if (opt.algo != Algo::painter && out.newell.dropped != 0) {
         // How large the pool would have had to be: the same order with room to spare.
         for (size_t more = std::max<size_t>(2 * extra, 1024); more <= kMaxSplitPool; more *= 2) {
-            SortedStore s2;
-            BoundedList<ScreenPoly> p2;
-            BoundedList<PieceCut> c2;
-            BoundedList<uint32_t> o2;
-            FrameStats st2;
-            NewellStats n2;
-            order_polygons(opt, view, mesh, verts, more, s2, p2, c2, o2, st2, n2);
+            const NewellStats n2 = trial_order(opt, view, mesh, verts, more);
             if (n2.dropped == 0) {
                 out.pool_needed = n2.splits;  // one polygon per cut
                 break;
