@@ -238,17 +238,18 @@ struct LineFit {
         return keeps_far_vertex == far_positive ? line : reversed(line);
     }
     /// True, with `line` set, when the line through (xa, ya) and (xb, yb) puts every centre on the side
-    /// of the crossing it is on; else `miss` holds the misplaced centre nearest the crossing (`line` is
-    /// set all the same). False for ends past the coordinate limits or equal ends.
-    __attribute__((always_inline)) bool fits_xy(int64_t xa, int64_t ya, int64_t xb, int64_t yb, CutLine& line, int64_t (&miss)[2]) const {
+    /// of the crossing it is on; else `miss`, when given, holds the misplaced centre nearest the crossing
+    /// (without it the walk stops at the first; `line` is set all the same). False for ends past the
+    /// coordinate limits or equal ends.
+    __attribute__((always_inline)) bool fits_xy(int64_t xa, int64_t ya, int64_t xb, int64_t yb, CutLine& line, int64_t (*miss)[2]) const {
         if (abs_value(xa) > kCoordLimit || abs_value(ya) > kCoordLimit || abs_value(xb) > kCoordLimit || abs_value(yb) > kCoordLimit ||
             (xa == xb && ya == yb))
             return false;
         line = oriented(xa, ya, xb, yb);
-        return !misplaces_centre(line, k, p->v, box, x_origin, y_origin, &miss);
+        return !misplaces_centre(line, k, p->v, box, x_origin, y_origin, miss);
     }
     /// fits_xy() for points (t0, m0) and (t1, m1) given as (major, minor); false when t0 == t1.
-    __attribute__((always_inline)) bool fits(int64_t t0, int64_t m0, int64_t t1, int64_t m1, CutLine& line, int64_t (&miss)[2]) const {
+    __attribute__((always_inline)) bool fits(int64_t t0, int64_t m0, int64_t t1, int64_t m1, CutLine& line, int64_t (*miss)[2]) const {
         if (t0 == t1) return false;
         return along_x ? fits_xy(t0, m0, t1, m1, line, miss) : fits_xy(m0, t0, m1, t1, line, miss);
     }
@@ -299,7 +300,7 @@ __attribute__((noinline)) inline bool pivot_search(const LineFit& f, const Cross
                     continue;
                 }
                 int64_t at[2] = {nearest[0], nearest[1]};
-                if (f.fits(tp, mp, t1, m1, line, at)) return true;
+                if (f.fits(tp, mp, t1, m1, line, &at)) return true;
                 if (!moved && (at[0] != nearest[0] || at[1] != nearest[1])) {
                     next[0] = at[0];
                     next[1] = at[1];
@@ -390,7 +391,7 @@ __attribute__((noinline)) inline CrossingResult first_lines(const ScreenPlane& p
                 far,
                 hs[far] > 0,
                 abs_value(na) <= abs_value(nb)};  // the crossing is mostly horizontal: ends by x
-    if (f.fits_xy(px[ia], py[ia], px[ib], py[ib], far_side, nearest)) return CrossingResult::exact;
+    if (f.fits_xy(px[ia], py[ia], px[ib], py[ib], far_side, &nearest)) return CrossingResult::exact;
     first = far_side;
     // Move the box border ends across the line, a subpixel or two each.
     const bool line_along_x = abs_value(px[ib] - px[ia]) >= abs_value(py[ib] - py[ia]);
@@ -400,15 +401,14 @@ __attribute__((noinline)) inline CrossingResult first_lines(const ScreenPlane& p
     for (const auto& mv : kMoves) {
         const int64_t xa = px[ia] + (line_along_x ? 0 : mv[0]), ya = py[ia] + (line_along_x ? mv[0] : 0);
         const int64_t xb = px[ib] + (line_along_x ? 0 : mv[1]), yb = py[ib] + (line_along_x ? mv[1] : 0);
-        int64_t unused[2];
-        if (f.fits_xy(xa, ya, xb, yb, far_side, unused)) return CrossingResult::exact;
+        if (f.fits_xy(xa, ya, xb, yb, far_side, nullptr)) return CrossingResult::exact;
     }
     // Then ends where the crossing nearly meets a grid point, beyond each side of the box: the line
     // through them is far closer to the crossing than one through rounded box borders.
     const int64_t lo = f.along_x ? bx0 : by0, hi = f.along_x ? bx1 : by1;
         e.a = near_grid(f.k, f.along_x, lo - kCrossingSearch, lo, e.ta, e.ma);
     e.b = near_grid(f.k, f.along_x, hi, hi + kCrossingSearch, e.tb, e.mb);
-    if (e.a && e.b && f.fits(e.ta, e.ma, e.tb, e.mb, far_side, nearest)) return CrossingResult::exact;
+    if (e.a && e.b && f.fits(e.ta, e.ma, e.tb, e.mb, far_side, &nearest)) return CrossingResult::exact;
     return CrossingResult::inexact;
 }
 }  // namespace detail
