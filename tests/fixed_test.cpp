@@ -1,8 +1,10 @@
 // Fixed<F> and the integer helpers: exact raw results, the rounding rules, saturation, and accuracy
 // against a double reference across the whole range (tolerances in LSBs).
 #include <hider/fixed.hpp>
+#include <hider/int128.hpp>
 #include <hider/view.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -326,4 +328,39 @@ TEST_CASE("div_floor32 floors for every sign, including INT32_MIN") {
     for (int32_t n : {0, 1, -1, 15, -15, 16, -16, 17, -17, INT32_MAX, INT32_MIN, INT32_MIN + 1})
         for (int32_t d : {1, 2, 3, 16, 17, INT32_MAX})
             CHECK(hider::div_floor32(n, d) == floor_div(n, d));
+}
+
+TEST_CASE("mul128 of an Int128 by an int64 is exact wherever the product fits 128 bits") {
+    using hider::Int128;
+    using hider::mul128;
+    std::mt19937_64 rng(12345);
+    auto to128 = [](__int128 v) {
+        Int128 r;
+        r.lo = static_cast<uint64_t>(v);
+        r.hi = static_cast<int64_t>(v >> 64);
+        return r;
+    };
+    long checked = 0, wrong = 0;
+    for (int i = 0; i < 200000; ++i) {
+        // a of up to 100 bits, b of up to 126 minus a's bits (at most 63), both signs: the product fits.
+        const int abits = 1 + static_cast<int>(rng() % 100);
+        const int bbits = 1 + static_cast<int>(rng() % static_cast<uint64_t>(std::min(63, 126 - abits)));
+        __int128 a = (static_cast<__int128>(rng()) << 64 | rng()) & ((static_cast<__int128>(1) << abits) - 1);
+        int64_t b = static_cast<int64_t>(rng() & ((uint64_t{1} << bbits) - 1));
+        if (rng() & 1) a = -a;
+        if (rng() & 1) b = -b;
+        const Int128 got = mul128(to128(a), b), want = to128(a * b);
+        ++checked;
+        wrong += got.lo != want.lo || got.hi != want.hi;
+    }
+    const __int128 as[4] = {0, -1, static_cast<__int128>(INT64_MIN), static_cast<__int128>(1) << 90};
+    const int64_t bs[5] = {0, 1, -1, int64_t{1} << 30, -(int64_t{1} << 30)};
+    for (const __int128 a : as)
+        for (const int64_t b : bs) {
+            const Int128 got = mul128(to128(a), b), want = to128(a * b);
+            ++checked;
+            wrong += got.lo != want.lo || got.hi != want.hi;
+        }
+    CHECK(checked > 200000);
+    CHECK(wrong == 0);
 }

@@ -51,4 +51,17 @@ constexpr Int128 mul128(int64_t a, int64_t b) {
     return negative ? -r : r;
 }
 
+/// Exact product of a and b when it fits 128 bits: the low word times b exactly, the high word's
+/// product only in its low 64 bits (the rest would overflow).
+constexpr Int128 mul128(const Int128& a, int64_t b) {
+    const Int128 upper = mul128(static_cast<int64_t>(a.lo >> 32), b);  // times 2^32
+    Int128 r = mul128(static_cast<int64_t>(a.lo & 0xFFFFFFFFu), b);
+    Int128 shifted;
+    shifted.lo = upper.lo << 32;
+    shifted.hi = static_cast<int64_t>((static_cast<uint64_t>(upper.hi) << 32) | (upper.lo >> 32));
+    r = r + shifted;
+    r.hi = static_cast<int64_t>(static_cast<uint64_t>(r.hi) + static_cast<uint64_t>(a.hi) * static_cast<uint64_t>(b));
+    return r;
+}
+
 }  // namespace hider

@@ -127,8 +127,8 @@ TEST_CASE("Newell and the reverse painter agree with the z-buffer where a cut li
 }
 
 TEST_CASE("A cut whose crossing passes a pixel centre by a hair is exact: the line pivots where the crossing passes it") {
-    // Found by sweeps: crossings within 0.0003 to 0.1 subpixel of a pixel centre over their length (one
-    // nearly along a column of centres, one along a row), where no line through the box borders or
+    // Found by sweeps: crossings within 0.0003 to 0.1 subpixel of a pixel centre over their length
+    // (stacked-349-8 nearly along a column of centres, boxes-211-10 along a row), where no line through the box borders or
     // through grid points near the crossing beyond the box passed every centre on its side, so the cut
     // was reported inexact and the frame capacity_exceeded. The pivots of crossing_line() now find a line.
     for (const auto& [name, cull] : {std::pair<const char*, bool>{"stacked-349-8", true}, {"boxes-211-10", true}, {"stacked-47-12", true},

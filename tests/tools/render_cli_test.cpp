@@ -588,6 +588,9 @@ TEST_CASE("A full Newell pool is a warning naming the pool and the size it neede
     REQUIRE(at != std::string::npos);
     const long needed = std::atol(small.err.c_str() + at + 16);
     CHECK(needed > 100);
+    // The pairs the dropped cuts leave unresolved are not blamed on the pixel-ordered pairs' room.
+    CHECK(contains(small.err, "pairs left uncut in an order some of their shared pixels disagree with (see the other warnings)"));
+    CHECK_FALSE(contains(small.err, "--reorders"));
     const Run strict = render(model, with(cam, {"--no-cull", "--algo", "reverse", "--pool", "100", "--strict"}));
     CHECK(strict.code == 2);
     CHECK(contains(strict.err, "hider-render: error: Newell's cut pool of 100 polygons is full"));
@@ -637,7 +640,8 @@ TEST_CASE("Pairs Newell cannot order for want of reorders words are a warning na
 TEST_CASE("An inexact Newell cut is a warning; --strict makes it exit 2") {
     // In mikado-43-30 without culling one cut's crossing passes two pixel centres on opposite sides
     // within a few thousandths of a subpixel, and no line through grid points that crossing_line() tries
-    // puts both on their sides (README.md, "Newell"): the frame is drawn, the cut reported.
+    // puts both on their sides (README.md, "Newell"): the frame is drawn, the cut reported. Should
+    // crossing_line() learn to place this one, the test needs another scene whose cut stays inexact.
     const auto [model, cam] = generated("mikado-43-30");
     const Run r = render(model, with(cam, {"--no-cull", "--algo", "newell", "--stats"}));
     INFO("stderr: ", r.err);

@@ -112,11 +112,15 @@ bool render_sorted(const Scene& scene, const RenderOptions& opt, const View& vie
     out.pool = extra;
     out.pool_needed = 0;
     out.reorders_needed = 0;
-    if (opt.algo != Algo::painter && out.newell.unresolved != 0) {
-        // How many reorders words would order every pair by its pixels: the same view with more.
+    out.reorders_tried = opt.reorders;
+    const NewellStats& ns = out.newell;
+    if (opt.algo != Algo::painter && ns.unresolved != 0 && ns.dropped == 0 && ns.too_deep == 0 && !ns.budget_exhausted) {
+        // How many reorders words would order every pair by its pixels: the same view with more (not
+        // when a full pool, the cut limit or the budget left pairs unresolved: their warnings say so).
         for (size_t more = std::max<size_t>(2 * opt.reorders, 64); more <= kMaxReorders; more *= 4) {
             RenderOptions o2 = opt;
             o2.reorders = more;
+            out.reorders_tried = more;
             const NewellStats n2 = trial_order(o2, view, mesh, verts, extra);
             if (n2.unresolved == 0) {
                 out.reorders_needed = n2.reorders_peak;  // a run that needed no more than it held

@@ -58,7 +58,8 @@ struct RenderResult {
     size_t pool = 0;              ///< newell and reverse: the room for cuts it had (polygons)
     size_t pool_needed = 0;       ///< when cuts were dropped: the room that would have held them (0: more than kMaxSplitPool)
     size_t reorders_needed = 0;   ///< when pairs were unresolved: the reorders words that resolve them all (0: none
-                                  ///< up to kMaxReorders does; some pair is a piercing one no line cuts)
+                                  ///< up to reorders_tried does; some pair is a piercing one no line cuts)
+    size_t reorders_tried = 0;    ///< the most reorders words a sizing run had
     RayCounts ray;                ///< raycast and ray-traced scenes only
 };
 

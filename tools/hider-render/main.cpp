@@ -102,8 +102,10 @@ int warn_incomplete(const RenderOptions& opt, const RenderResult& r, bool strict
         if (r.reorders_needed != 0)
             std::cerr << ": the " << opt.reorders << " words of pixel-ordered pairs are too few, this view needs --reorders "
                       << r.reorders_needed << "\n";
+        else if (n.dropped != 0 || n.too_deep != 0 || n.budget_exhausted)
+            std::cerr << " (see the other warnings)\n";
         else
-            std::cerr << " (a pair no line cuts, or more than " << kMaxReorders << " words of pixel-ordered pairs)\n";
+            std::cerr << " (a pair no line cuts, or more than " << r.reorders_tried << " words of pixel-ordered pairs)\n";
     }
     if (n.inexact_cuts != 0)
         std::cerr << kind << n.inexact_cuts << " cuts along a line that leaves a pixel centre on the wrong side of the plane\n";

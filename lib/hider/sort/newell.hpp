@@ -30,8 +30,8 @@ struct NewellStats {
                                     ///< disagree (a cycle with NewellScratch::reorders full, or a piercing pair
                                     ///< no line cuts), or the limits below (all capacity_exceeded)
     uint32_t pixel_ordered = 0;     ///< pairs no cut could order, ordered by the pixel centres they share
-    uint32_t reorders_peak = 0;     ///< most words of NewellScratch::reorders in use at once: an array of
-                                    ///< this size repeats the run (sizing it for a scene)
+    uint32_t reorders_peak = 0;     ///< most words of NewellScratch::reorders in use at once: when no pair
+                                    ///< is unresolved, an array of this size repeats the run (sizing it)
     uint32_t dropped = 0;           ///< cuts not made because the polygon or cut pool was full
     uint32_t too_deep = 0;          ///< cuts not made because a piece already had kMaxPieceCuts cuts
     uint32_t inexact_cuts = 0;      ///< cuts made along a line that puts a pixel centre on the wrong side

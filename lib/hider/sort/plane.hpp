@@ -101,16 +101,38 @@ constexpr int64_t kCrossingSearch = 1024;
 namespace detail {
 /// Where a plane crosses a triangle's plane, as an affine function of the screen point whose sign is
 /// the point's side of the plane (on the triangle's plane): side(x, y) = sign(na (x - x0) + nb (y - y0)
-/// + h0), negated when `flip`. From the vertices' sides shifted to 28 bits (crossing_line()), so it is
-/// exact up to that rounding, a tiny fraction of a subpixel across the box. Below 2^62 in the box.
+/// + h0), negated when `flip`. From the vertices' sides shifted down by `shift` bits to 28
+/// (crossing_line()): within the triangle the rounding moves the value by less than |area|, so a point
+/// whose value is that small has its side decided exactly from the plane, in 128 bits (exact_sign()).
+/// value() is below 2^62 in the box.
 struct PlaneCrossing {
     int64_t na, nb, h0, x0, y0;
     bool flip;
+    int shift;
+    int64_t area;              ///< the triangle's doubled area (v[0] to v[1], v[0] to v[2])
+    const ScreenPlane* plane;  ///< the cutting plane, for the exact decisions
+    const ScreenVertex* v;     ///< the triangle's three vertices (v[0] at x0, y0)
     int64_t value(int64_t x, int64_t y) const { return na * (x - x0) + nb * (y - y0) + h0; }
     int side(int64_t x, int64_t y) const {
-        const int64_t v = value(x, y);
-        const int s = v > 0 ? 1 : (v < 0 ? -1 : 0);
+        const int64_t val = value(x, y);
+        const int s = shift > 0 && abs_value(val) <= abs_value(area) ? exact_sign(x, y) : (val > 0 ? 1 : (val < 0 ? -1 : 0));
         return flip ? -s : s;
+    }
+    /// The sign of the unshifted value at (x, y): the vertices' exact sides (below 2^66) interpolated,
+    /// each term below 2^99. Out of line: rare, and its 128-bit products off the common path's stack.
+    __attribute__((noinline)) int exact_sign(int64_t x, int64_t y) const {
+        const int64_t w[3] = {area, (x - x0) * (v[2].y - y0) - (y - y0) * (v[2].x - x0),  // below 2^32
+                              (v[1].x - x0) * (y - y0) - (v[1].y - y0) * (x - x0)};
+        Int128 sum, h0s;
+        for (int i = 0; i < 3; ++i) {
+            const ScreenPlane& pl = *plane;
+            Int128 h = mul128(pl.a, v[i].x - pl.origin.x) + mul128(pl.b, v[i].y - pl.origin.y) +
+                       mul128(pl.c, int64_t{v[i].z} - pl.origin.z);  // side(pl, v[i])
+            if (i == 0) h0s = h;
+            else h = h - h0s;
+            sum = sum + mul128(h, w[i]);
+        }
+        return sum.sign();
     }
 };
 
@@ -124,6 +146,30 @@ inline bool in_triangle(const ScreenVertex (&v)[3], int64_t x, int64_t y) {
         pos += e > 0;
     }
     return neg == 0 || pos == 0;
+}
+
+/// True when `line` lies within less than a subpixel of crossing k (across the line's major axis) over
+/// box[]: then a centre between them is one of the two next to the line, all misplaces_centre() looks
+/// at. Lines through points near the crossing on both sides of the box always do; a line through two
+/// close points may stray (exact in 128 bits: the distance is linear, so the box's ends decide).
+inline bool stays_near(const CutLine& line, const PlaneCrossing& k, const int64_t (&box)[4]) {
+    const int64_t ldx = line.x1 - line.x0, ldy = line.y1 - line.y0;
+    const bool along_x = abs_value(ldx) >= abs_value(ldy);
+    const int64_t m = along_x ? k.na : k.nb, d = along_x ? k.nb : k.na;  // below 2^45
+    if (d == 0) return false;  // the crossing runs across the line's major axis
+    const int64_t o_major = along_x ? k.x0 : k.y0, o_minor = along_x ? k.y0 : k.x0;
+    const int64_t pa = along_x ? line.x0 : line.y0, pb = along_x ? line.y0 : line.x0;
+    int64_t la = along_x ? ldx : ldy, lb = along_x ? ldy : ldx;  // la != 0, both below 2^15
+    if (la < 0) { la = -la; lb = -lb; }
+    const Int128 limit = mul128(kSubpixel * la, abs_value(d));
+    const int64_t ends[2] = {along_x ? box[0] : box[2], along_x ? box[1] : box[3]};
+    for (const int64_t a : ends) {
+        // la times the crossing's value at the line's point over a: la (m (a - o_major) + h0) + d (la (pb - o_minor) + (a - pa) lb).
+        Int128 v = mul128(m * la, a - o_major) + mul128(k.h0, la) + mul128(d, la * (pb - o_minor) + (a - pa) * lb);
+        if (v.sign() < 0) v = -v;
+        if ((limit - v).sign() <= 0) return false;  // |value| / |d| >= kSubpixel: the line's minor is that far off
+    }
+    return true;
 }
 
 /// True when `line` (kept side: the plane's far side) puts a pixel centre of triangle v within box[]
@@ -203,7 +249,7 @@ inline bool centre_line_pivot(const PlaneCrossing& k, bool along_x, const int64_
     const int64_t c_major = along_x ? c[0] : c[1];
     minor = along_x ? c[1] : c[0];
     if (m == 0) return false;
-    // m (t - o_major) + d (minor - o_minor) + h0 = 0; |d| >= |m|, both below 2^31 in the box.
+    // m (t - o_major) + d (minor - o_minor) + h0 = 0; |m| <= |d| < 2^45, |h0| < 2^61: |num| < 2^61.
     const int64_t num = -(d * (minor - o_minor) + k.h0);
     const int64_t ahead = div_round(num, m);  // the crossing's t - o_major, rounded
     if (abs_value(ahead + o_major - c_major) > kCrossingSearch) return false;
@@ -259,6 +305,7 @@ struct LineFit {
 struct CrossingEnds {
     bool a = false, b = false;
     int64_t ta = 0, ma = 0, tb = 0, mb = 0;
+    int64_t lo = 0, hi = 0;  ///< the triangle's box along the major axis
 };
 
 /// crossing_line()'s last resort: pivots where the crossing meets the line of centres (along the major
@@ -280,7 +327,8 @@ __attribute__((noinline)) inline bool pivot_search(const LineFit& f, const Cross
         int count = 1;
         if (round > 0) {
             const int64_t c0 = f.along_x ? nearest[0] : nearest[1], c1 = f.along_x ? first_miss[0] : first_miss[1];
-            if (c0 != c1 && near_grid(f.k, f.along_x, min(c0, c1), max(c0, c1), pivots[1][0], pivots[1][1])) count = 2;
+            // Strictly between the two centres: the crossing passes a hair from one of them.
+            if (abs_value(c0 - c1) > 1 && near_grid(f.k, f.along_x, min(c0, c1) + 1, max(c0, c1) - 1, pivots[1][0], pivots[1][1])) count = 2;
         }
         int64_t next[2] = {nearest[0], nearest[1]};
         bool moved = false;  // next holds another centre one of these lines misplaced
@@ -292,15 +340,14 @@ __attribute__((noinline)) inline bool pivot_search(const LineFit& f, const Cross
                     if (!(i == 0 ? e.a : e.b)) continue;
                     t1 = i == 0 ? e.ta : e.tb;
                     m1 = i == 0 ? e.ma : e.mb;
-                } else if (i < 4) {
-                    if (rise == 0) continue;
+                } else if (i < 4) {  // rise != 0: m != 0, or there would be no pivot
                     t1 = i == 2 ? tp + run : tp - run;
                     m1 = i == 2 ? mp + rise : mp - rise;
                 } else if (round == 0) {
                     continue;
                 }
                 int64_t at[2] = {nearest[0], nearest[1]};
-                if (f.fits(tp, mp, t1, m1, line, &at)) return true;
+                if (f.fits(tp, mp, t1, m1, line, &at) && stays_near(line, f.k, f.box)) return true;
                 if (!moved && (at[0] != nearest[0] || at[1] != nearest[1])) {
                     next[0] = at[0];
                     next[1] = at[1];
@@ -328,12 +375,12 @@ enum class CrossingResult : uint8_t {
 };
 
 namespace detail {
-/// crossing_line() up to its pivots, out of line so that its frame is gone while they run: the line
-/// through the box borders (`first`), moved ends, then ends near the grid beyond the box (`e`). When none
-/// fits (inexact), `f` and `nearest` (the centre the last line misplaced nearest the crossing) are set.
-__attribute__((noinline)) inline CrossingResult first_lines(const ScreenPlane& pl, const ScreenPoly& p, int32_t width, int32_t height,
-                                                            LineFit& f, CrossingEnds& e, int64_t (&nearest)[2], CutLine& first,
-                                                            CutLine& far_side) {
+/// crossing_line()'s set-up, out of line so that its frame is gone while lines are checked: the crossing
+/// and what a line is checked against (f), the box's extent along the major axis (e.lo, e.hi), and the
+/// ends on the box's border of the crossing's longest stretch in it (x, y, x, y). False when the planes
+/// are parallel or the crossing misses the box.
+__attribute__((noinline)) inline bool crossing_setup(const ScreenPlane& pl, const ScreenPoly& p, int32_t width, int32_t height, LineFit& f,
+                                                     CrossingEnds& e, int32_t (&border)[4]) {
     Int128 h[3];
     int bits = 0;
     for (int i = 0; i < 3; ++i) {
@@ -350,7 +397,7 @@ __attribute__((noinline)) inline CrossingResult first_lines(const ScreenPlane& p
     const int64_t nb = (hs[2] - hs[0]) * dx1 - (hs[1] - hs[0]) * dx2;
     const int64_t area = dx1 * dy2 - dx2 * dy1;
     const int64_t h0 = hs[0] * area;
-    if (na == 0 && nb == 0) return CrossingResult::none;
+    if (na == 0 && nb == 0) return false;
     // Where na (x - x0) + nb (y - y0) + h0 = 0 meets the four sides of the box.
     const int64_t bx0 = min(p.v[0].x, min(p.v[1].x, p.v[2].x)), bx1 = max(p.v[0].x, max(p.v[1].x, p.v[2].x));
     const int64_t by0 = min(p.v[0].y, min(p.v[1].y, p.v[2].y)), by1 = max(p.v[0].y, max(p.v[1].y, p.v[2].y));
@@ -374,60 +421,89 @@ __attribute__((noinline)) inline CrossingResult first_lines(const ScreenPlane& p
             const int64_t d = (px[i] - px[k]) * (px[i] - px[k]) + (py[i] - py[k]) * (py[i] - py[k]);
             if (d > best) { best = d; ia = i; ib = k; }
         }
-    if (ia < 0) return CrossingResult::none;
+    if (ia < 0) return false;
     // Orient by the crossing's gradient: the line keeps the side where the plane is farther.
     int far = 0;
     for (int i = 1; i < 3; ++i)
         if (abs_value(hs[i]) > abs_value(hs[far])) far = i;
-    if (hs[far] == 0) return CrossingResult::none;
+    if (hs[far] == 0) return false;
     // The centres to check: the triangle's box within the frame's.
     const int32_t x_origin = pixel_centre_origin(width), y_origin = pixel_centre_origin(height);
-    f = LineFit{{na, nb, h0, x0, y0, area < 0},
-                &p,
-                {max<int64_t>(bx0, x_origin), min<int64_t>(bx1, x_origin + (width - 1) * kSubpixel),
-                 max<int64_t>(by0, y_origin), min<int64_t>(by1, y_origin + (height - 1) * kSubpixel)},
-                x_origin,
-                y_origin,
-                far,
-                hs[far] > 0,
-                abs_value(na) <= abs_value(nb)};  // the crossing is mostly horizontal: ends by x
-    if (f.fits_xy(px[ia], py[ia], px[ib], py[ib], far_side, &nearest)) return CrossingResult::exact;
+    // Member by member: no temporary LineFit on this frame (a chip's stack).
+    f.k.na = na;
+    f.k.nb = nb;
+    f.k.h0 = h0;
+    f.k.x0 = x0;
+    f.k.y0 = y0;
+    f.k.flip = area < 0;
+    f.k.shift = shift;
+    f.k.area = area;
+    f.k.plane = &pl;
+    f.k.v = p.v;
+    f.p = &p;
+    f.box[0] = max<int64_t>(bx0, x_origin);
+    f.box[1] = min<int64_t>(bx1, x_origin + (width - 1) * kSubpixel);
+    f.box[2] = max<int64_t>(by0, y_origin);
+    f.box[3] = min<int64_t>(by1, y_origin + (height - 1) * kSubpixel);
+    f.x_origin = x_origin;
+    f.y_origin = y_origin;
+    f.far = far;
+    f.far_positive = hs[far] > 0;
+    f.along_x = abs_value(na) <= abs_value(nb);  // the crossing is mostly horizontal: ends by x
+    e.lo = f.along_x ? bx0 : by0;
+    e.hi = f.along_x ? bx1 : by1;
+    border[0] = static_cast<int32_t>(px[ia]);
+    border[1] = static_cast<int32_t>(py[ia]);
+    border[2] = static_cast<int32_t>(px[ib]);
+    border[3] = static_cast<int32_t>(py[ib]);
+    return true;
+}
+
+/// crossing_line() up to its pivots, out of line so that its frame is gone while they run: the line
+/// through the box borders (`first`), moved ends, then ends near the grid beyond the box (`e`). When none
+/// fits (inexact), `f` and `nearest` (the centre the last line misplaced nearest the crossing) are set.
+__attribute__((noinline)) inline CrossingResult first_lines(const ScreenPlane& pl, const ScreenPoly& p, int32_t width, int32_t height,
+                                                            LineFit& f, CrossingEnds& e, int64_t (&nearest)[2], CutLine& first,
+                                                            CutLine& far_side) {
+    int32_t px[4];  // x, y, x, y: the ends on the box border
+    if (!crossing_setup(pl, p, width, height, f, e, px)) return CrossingResult::none;
+    if (f.fits_xy(px[0], px[1], px[2], px[3], far_side, &nearest)) return CrossingResult::exact;
     first = far_side;
     // Move the box border ends across the line, a subpixel or two each.
-    const bool line_along_x = abs_value(px[ib] - px[ia]) >= abs_value(py[ib] - py[ia]);
+    const bool line_along_x = abs_value(px[2] - px[0]) >= abs_value(px[3] - px[1]);
     static constexpr int8_t kMoves[24][2] = {{1, 1}, {-1, -1}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, -1}, {-1, 1},
                                              {2, 2}, {-2, -2}, {2, 1}, {1, 2}, {-2, -1}, {-1, -2}, {2, 0}, {-2, 0},
                                              {0, 2}, {0, -2}, {2, -1}, {-1, 2}, {-2, 1}, {1, -2}, {2, -2}, {-2, 2}};
     for (const auto& mv : kMoves) {
-        const int64_t xa = px[ia] + (line_along_x ? 0 : mv[0]), ya = py[ia] + (line_along_x ? mv[0] : 0);
-        const int64_t xb = px[ib] + (line_along_x ? 0 : mv[1]), yb = py[ib] + (line_along_x ? mv[1] : 0);
+        const int64_t xa = px[0] + (line_along_x ? 0 : mv[0]), ya = px[1] + (line_along_x ? mv[0] : 0);
+        const int64_t xb = px[2] + (line_along_x ? 0 : mv[1]), yb = px[3] + (line_along_x ? mv[1] : 0);
         if (f.fits_xy(xa, ya, xb, yb, far_side, nullptr)) return CrossingResult::exact;
     }
     // Then ends where the crossing nearly meets a grid point, beyond each side of the box: the line
     // through them is far closer to the crossing than one through rounded box borders.
-    const int64_t lo = f.along_x ? bx0 : by0, hi = f.along_x ? bx1 : by1;
-        e.a = near_grid(f.k, f.along_x, lo - kCrossingSearch, lo, e.ta, e.ma);
-    e.b = near_grid(f.k, f.along_x, hi, hi + kCrossingSearch, e.tb, e.mb);
+    e.a = near_grid(f.k, f.along_x, e.lo - kCrossingSearch, e.lo, e.ta, e.ma);
+    e.b = near_grid(f.k, f.along_x, e.hi, e.hi + kCrossingSearch, e.tb, e.mb);
     if (e.a && e.b && f.fits(e.ta, e.ma, e.tb, e.mb, far_side, &nearest)) return CrossingResult::exact;
     return CrossingResult::inexact;
 }
 }  // namespace detail
 
-/// The line where plane pl crosses the plane of polygon p on the screen
 /// The line where plane pl crosses the plane of polygon p on the screen, through two grid points near
 /// the border of p's triangle's bounding box, oriented to keep pl's far side (side() > 0). The line is
 /// the zero set of the plane's side function, which is affine over p's triangle. Its ends are rounded to
 /// the grid, so it can pass a pixel centre of a width x height frame on the wrong side of the crossing:
-/// then ends moved by a subpixel or two, or ends beyond the box where the crossing nearly meets a grid
-/// point, are tried for one that puts every centre of the triangle on its own side (exact), else the
-/// line stays as found (inexact). None when the planes are parallel or the line misses the box.
+/// then ends moved by a subpixel or two, ends beyond the box where the crossing nearly meets a grid
+/// point, and pivots where it meets the row of centres it passes closest (pivot_search()) are tried for
+/// one that puts every centre of the triangle on its own side (exact), else the line stays as found
+/// (inexact). None when the planes are parallel or the line misses the box.
 inline CrossingResult crossing_line(const ScreenPlane& pl, const ScreenPoly& p, int32_t width, int32_t height, CutLine& far_side) {
     detail::LineFit f{};
     detail::CrossingEnds e;
     int64_t nearest[2] = {0, 0};
     CutLine first{};
     const CrossingResult r = detail::first_lines(pl, p, width, height, f, e, nearest, first, far_side);
-    if (r != CrossingResult::inexact || detail::pivot_search(f, e, nearest, far_side)) return r == CrossingResult::inexact ? CrossingResult::exact : r;
+    if (r != CrossingResult::inexact) return r;
+    if (detail::pivot_search(f, e, nearest, far_side)) return CrossingResult::exact;
     far_side = first;  // the nearest line through the box borders, as found
     return CrossingResult::inexact;
 }
