@@ -125,9 +125,10 @@ struct PlaneCrossing {
                               (v[1].x - x0) * (y - y0) - (v[1].y - y0) * (x - x0)};
         Int128 sum, h0s;
         for (int i = 0; i < 3; ++i) {
+            // side(pl, v[i]) written out: a call would add a frame to the deepest Newell path on the M0+.
             const ScreenPlane& pl = *plane;
             Int128 h = mul128(pl.a, v[i].x - pl.origin.x) + mul128(pl.b, v[i].y - pl.origin.y) +
-                       mul128(pl.c, int64_t{v[i].z} - pl.origin.z);  // side(pl, v[i])
+                       mul128(pl.c, int64_t{v[i].z} - pl.origin.z);
             if (i == 0) h0s = h;
             else h = h - h0s;
             sum = sum + mul128(h, w[i]);
