@@ -134,7 +134,7 @@ constexpr uint16_t kBspCellMask = 0xF;
 /// of it (cut points are rounded to the grid).
 constexpr int32_t kBspCellMarginRaw = int32_t{1} << 12;
 
-/// Stack entries a walk needs per level of the tree (walk.hpp): a node and its second child wait.
-constexpr uint32_t kBspStackPerLevel = 2;
+/// Stack entries a walk needs per level of the tree (walk.hpp): a node waits for its second subtree.
+constexpr uint32_t kBspStackPerLevel = 1;
 
 }  // namespace hider

@@ -72,33 +72,31 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
         for (int32_t e : c)
             if (e <= -kBspWorldLimitRaw || e >= kBspWorldLimitRaw) return Status::out_of_range;
     }
-    // Shape and depth: a preorder walk (front child first) keeping (node, depth) pairs of pending back
-    // children in the caller's stack. The nodes must be stored in exactly that order, so the k-th node
-    // met is node k: no node is met twice (two parents, a DAG: rejected at its second visit, however
-    // many paths lead to it) and, with every node met, none is unreachable.
+    // Shape and depth: a preorder walk (front child first) keeping one entry per level above the node in
+    // the caller's stack: the back child still to visit there (kBspNone once taken, or when there is
+    // none), so the node's level is the entries plus one. The nodes must be stored in exactly that order,
+    // so the k-th node met is node k: no node is met twice (two parents, a DAG: rejected at its second
+    // visit, however many paths lead to it) and, with every node met, none is unreachable.
     uint32_t depth = 0;
     if (h.node_count != 0) {
         size_t top = 0;
-        uint32_t node = 0, level = 1, visits = 0;
+        uint32_t node = 0, visits = 0;
         for (;;) {
             if (node != visits++) return Status::bad_data;  // not in preorder: not a tree, or stored otherwise
+            const uint32_t level = static_cast<uint32_t>(top) + 1;
             depth = max(depth, level);
             if (level > h.max_depth) return Status::bad_data;
             if (bsp_stack_entries(level) > stack.size()) return Status::capacity_exceeded;
             const BspNode& n = nodes[node];
-            if (n.child[1] != kBspNone) {
-                if (top + 2 > stack.size()) return Status::capacity_exceeded;
-                stack[top++] = n.child[1];
-                stack[top++] = level + 1;
-            }
-            if (n.child[0] != kBspNone) {
-                node = n.child[0];
-                ++level;
+            if (n.child[0] != kBspNone || n.child[1] != kBspNone) {  // down: the front child if any
+                stack[top++] = n.child[0] != kBspNone ? n.child[1] : kBspNone;
+                node = n.child[0] != kBspNone ? n.child[0] : n.child[1];
                 continue;
             }
+            while (top != 0 && stack[top - 1] == kBspNone) --top;  // up to the nearest back child not taken
             if (top == 0) break;
-            level = stack[--top];
-            node = stack[--top];
+            node = stack[top - 1];
+            stack[top - 1] = kBspNone;  // taken: the entry now stands for the step down to it
         }
         if (visits != h.node_count) return Status::bad_data;  // nodes no parent points to
     }

@@ -87,25 +87,27 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
         return st;
     }
     if (tree.nodes.empty()) return st;
-    // Stack entries as in walk_bsp(): a node to enter, with kInside when an ancestor's box lies wholly
-    // inside the frame; or (kDraw) one whose triangles come next, with kBspListFront.
-    constexpr uint32_t kDraw = kBspListNoBack, kInside = kBspListFront;
+    // Stack entries as in walk_bsp(): a node whose far subtree is being listed waits for its triangles
+    // and near subtree, with kBspListFront (the eye on its front side), kPlane (in its plane) and kInside
+    // (its box, hence every box below it, lies wholly inside the frame).
+    constexpr uint32_t kPlane = kBspListNoFront, kInside = kBspListNoBack;
     const BandBounds bb = band_bounds(detail::WholeFrame{view.width, view.height, 0, view.height});
     const PreparedTransform to_view(view.to_view);
     const BspFaces faces = bsp_walk_faces(view, eye, tree, opt, stack);
     const uint32_t rule = faces == BspFaces::front ? kBspListNoBack : faces == BspFaces::back ? kBspListNoFront : 0;
     size_t top = 0;
-    stack[top++] = 0;
-    while (top != 0) {
-        const uint32_t entry = stack[--top];
-        const BspNode& n = tree.nodes[entry & kBspListIndex];
-        if ((entry & kDraw) == 0) {
+    uint32_t next = 0, next_inside = 0;  // the node to enter (kBspNone: resume the stack's top) and its kInside
+    for (;;) {
+        uint32_t entry;
+        if (next != kBspNone) {
+            const BspNode& n = tree.nodes[next];
             ++st.nodes_visited;
-            uint32_t inside = entry & kInside;
+            uint32_t inside = next_inside;
             if (inside == 0) {
                 const detail::SubtreeBox box = detail::subtree_box<true>(view, n, bb);
                 if (box.outside) {
                     ++st.subtrees_skipped;
+                    next = kBspNone;
                     continue;
                 }
                 // A box wholly inside the frame holds its subtrees' boxes (each node's box bounds its subtree), so
@@ -113,19 +115,30 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
                 if (box.inside) inside = kInside;
             }
             const int side = detail::eye_side(tree, n, eye);
+            entry = next | inside | (side > 0 ? kBspListFront : 0) | (side == 0 ? kPlane : 0);
             const uint32_t near = n.child[side >= 0 ? 0 : 1], far = n.child[side >= 0 ? 1 : 0];
-            if (near != kBspNone) stack[top++] = near | inside;
-            if (side != 0 && n.count != 0)  // not edge-on
-                stack[top++] = (entry & kBspListIndex) | kDraw | (side > 0 ? kBspListFront : 0);
-            if (far != kBspNone) stack[top++] = far | inside;  // drawn first
-            continue;
+            next_inside = inside;
+            if (far != kBspNone) {  // listed first
+                if ((side != 0 && n.count != 0) || near != kBspNone) stack[top++] = entry;  // not edge-on, or more to come
+                next = far;
+                continue;
+            }
+        } else {
+            if (top == 0) break;
+            entry = stack[--top];
         }
-        int32_t y0 = 0, y1 = 0;
-        detail::node_rows(view, to_view, tree, n, (entry & kBspListFront) != 0, verts, faces, bb, y0, y1, st);
-        y0 = max<int32_t>(y0, 0);
-        y1 = min(y1, view.height);
-        if (y0 < y1 && !list.push_back({(entry & ~kDraw) | rule, static_cast<int16_t>(y0), static_cast<int16_t>(y1)}))
-            st.status = Status::capacity_exceeded;
+        const BspNode& n = tree.nodes[entry & kBspListIndex];
+        if ((entry & kPlane) == 0 && n.count != 0) {
+            int32_t y0 = 0, y1 = 0;
+            detail::node_rows(view, to_view, tree, n, (entry & kBspListFront) != 0, verts, faces, bb, y0, y1, st);
+            y0 = max<int32_t>(y0, 0);
+            y1 = min(y1, view.height);
+            if (y0 < y1 &&
+                !list.push_back({(entry & (kBspListIndex | kBspListFront)) | rule, static_cast<int16_t>(y0), static_cast<int16_t>(y1)}))
+                st.status = Status::capacity_exceeded;
+        }
+        next = n.child[(entry & (kBspListFront | kPlane)) != 0 ? 0 : 1];  // the near subtree
+        next_inside = entry & kInside;
     }
     return st;
 }

@@ -6,7 +6,7 @@
 // full. Triangles in a node's plane are skipped when the eye is in that plane (edge-on), and back faces
 // fall out of the same side test. On a closed surface whose cells hider-bsp labelled, only the faces
 // that can be seen from the eye's cell are drawn (bsp_visible_faces()), culling or not. The walk keeps
-// its pending work in a caller stack of bsp_stack_entries(depth) uint32 entries.
+// its pending work in a caller stack of bsp_stack_entries(depth) uint32 entries (one per level).
 #pragma once
 #include <hider/bsp/cells.hpp>
 #include <hider/raster/paint.hpp>
@@ -195,22 +195,23 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
         return st;
     }
     if (tree.nodes.empty()) return st;
-    // Stack entries: a node index to enter, or (kDraw) one whose triangles are drawn next, with kFront
-    // when the eye is on its front side (so the side is computed once; bsp_load() keeps indices below 2^30).
-    constexpr uint32_t kDraw = 0x80000000u, kFront = 0x40000000u, kIndex = kFront - 1;
+    // A node whose first subtree is being drawn waits in the stack (one entry per level at most) for its
+    // triangles and then its other subtree, with kFront when the eye is on its front side and kPlane when
+    // the eye is in its plane (so the side is computed once; bsp_load() keeps indices below 2^30).
+    constexpr uint32_t kFront = 0x80000000u, kPlane = 0x40000000u, kIndex = kPlane - 1;
     const FaceShading shading(view, opt);
     const BandBounds bb = band_bounds(frame);
     const PreparedTransform to_view(view.to_view);
     const BspFaces faces = bsp_walk_faces(view, eye, tree, opt, stack);
     size_t top = 0;
-    stack[top++] = 0;
-    while (top != 0) {
+    uint32_t next = 0;  // the node to enter, or kBspNone: resume the top of the stack
+    for (;;) {
         if constexpr (kFrontToBack) {
             if (cov->full()) break;
         }
-        const uint32_t entry = stack[--top];
-        const BspNode& n = tree.nodes[entry & kIndex];
-        if ((entry & kDraw) == 0) {  // enter the node: queue its subtrees around its own triangles
+        uint32_t entry;
+        if (next != kBspNone) {  // enter the node: its first subtree now, its triangles and other subtree later
+            const BspNode& n = tree.nodes[next];
             ++st.nodes_visited;
             const SubtreeBox box = subtree_box(view, n, bb);
             bool skip = box.outside;
@@ -222,34 +223,45 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
             }
             if (skip) {
                 ++st.subtrees_skipped;
+                next = kBspNone;
                 continue;
             }
             const int side = eye_side(tree, n, eye);
+            entry = next | (side > 0 ? kFront : 0) | (side == 0 ? kPlane : 0);
             const uint32_t near = n.child[side >= 0 ? 0 : 1], far = n.child[side >= 0 ? 1 : 0];
-            const uint32_t first = kFrontToBack ? far : near, then = kFrontToBack ? near : far;  // then is drawn first
-            if (first != kBspNone) stack[top++] = first;
-            // The eye in the plane sees every triangle of it edge-on: nothing to draw.
-            if (side != 0 && n.count != 0) stack[top++] = entry | kDraw | (side > 0 ? kFront : 0);
-            if (then != kBspNone) stack[top++] = then;
-            continue;
-        }
-        const bool eye_front = (entry & kFront) != 0;
-        for (uint32_t t = n.first; t < n.first + n.count; ++t) {
-            const BspTriangle& tri = tree.triangles[t];
-            const bool back = (tri.face & kBspFaceBack) != 0;
-            const bool front = eye_front != back;  // the eye is on the triangle's own front side
-            if (!bsp_draws(faces, front)) {  // culled, or hidden by the closed surface
-                ++st.triangles_culled;
+            const uint32_t first = kFrontToBack ? near : far, last = kFrontToBack ? far : near;
+            if (first != kBspNone) {
+                // The eye in the plane sees every triangle of it edge-on: nothing to draw.
+                if ((side != 0 && n.count != 0) || last != kBspNone) stack[top++] = entry;
+                next = first;
                 continue;
             }
-            const uint32_t face = tri.face & kBspFaceMask;
-            for (uint32_t v : tri.v)
-                if (unprojected(verts[v])) project_vertex(view, to_view, tree.vertices[v], verts[v]);
-            for_each_clipped(view, tree.vertices, Span<const ScreenVertex>{verts.data(), verts.size()}, tri.v[0], tri.v[1], tri.v[2], st,
-                             [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-                                 draw_node_triangle<kFrontToBack>(a, b, c, n, back, front, face, frame, bb, opt, shading, cov, st);
-                             });
+        } else {
+            if (top == 0) break;
+            entry = stack[--top];
         }
+        const BspNode& n = tree.nodes[entry & kIndex];
+        const bool eye_front = (entry & kFront) != 0;
+        if ((entry & kPlane) == 0) {
+            for (uint32_t t = n.first; t < n.first + n.count; ++t) {
+                const BspTriangle& tri = tree.triangles[t];
+                const bool back = (tri.face & kBspFaceBack) != 0;
+                const bool front = eye_front != back;  // the eye is on the triangle's own front side
+                if (!bsp_draws(faces, front)) {  // culled, or hidden by the closed surface
+                    ++st.triangles_culled;
+                    continue;
+                }
+                const uint32_t face = tri.face & kBspFaceMask;
+                for (uint32_t v : tri.v)
+                    if (unprojected(verts[v])) project_vertex(view, to_view, tree.vertices[v], verts[v]);
+                for_each_clipped(view, tree.vertices, Span<const ScreenVertex>{verts.data(), verts.size()}, tri.v[0], tri.v[1], tri.v[2], st,
+                                 [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+                                     draw_node_triangle<kFrontToBack>(a, b, c, n, back, front, face, frame, bb, opt, shading, cov, st);
+                                 });
+            }
+        }
+        const bool side_front = (entry & (kFront | kPlane)) != 0;  // side >= 0
+        next = n.child[side_front == kFrontToBack ? 1 : 0];  // the far subtree front to back, else the near one
     }
     return st;
 }
