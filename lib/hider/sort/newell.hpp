@@ -5,18 +5,18 @@
 // disjoint. When all fail and Q must come first, Q becomes the candidate and P waits again; a Q moved
 // twice in one chain of moves means a cycle, cut by the plane between them. Polygons that pierce each
 // other are cut along their intersection when first compared, both of them. A cut makes two pieces that
-// keep their parent's exact edges (plane.hpp, raster/piece.hpp: no cracks), and each piece remembers the
+// keep their parent's exact edges (cut.hpp, raster/piece.hpp: no cracks), and each piece remembers the
 // plane that cut it and its side of it, so no pair is cut twice. A cycle no cut breaks is ordered by
 // the pixel centres its pairs share (pixel_order.hpp): its closing pair stays as found when they agree,
 // else the cycle is broken at a pair of it they allow. Work is bounded: the caller's pools bound the
 // pieces, a budget the pair tests. Plane tests are exact 128-bit sums with a slack for the
 // rounding of cut points; polygons of one face (NewellOptions) are never ordered against each other.
 #pragma once
+#include <hider/sort/cut.hpp>
 #include <hider/sort/grid.hpp>
 #include <hider/sort/painter.hpp>
 #include <hider/sort/piece_box.hpp>
 #include <hider/sort/pixel_order.hpp>
-#include <hider/sort/plane.hpp>
 
 namespace hider {
 
