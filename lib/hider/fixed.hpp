@@ -179,8 +179,8 @@ struct ReciprocalTable {
 inline constexpr ReciprocalTable kReciprocalTable{};
 }  // namespace detail
 
-/// reciprocal_word()'s table, for assembly that starts the same way (raster/vertices_asm.hpp,
-/// raster/kernel_setup_asm.hpp).
+/// reciprocal_word()'s table, for assembly that starts the same way (raster/vertices_v6m.hpp,
+/// raster/kernel_setup_v6m.hpp).
 inline constexpr const uint16_t* kReciprocalTableData = detail::kReciprocalTable.v;
 
 /// floor((2^64 - 1) / d) - 2^32 for d with its top bit set (the reciprocal of Moller and Granlund)

@@ -2,7 +2,8 @@
 // ScreenVertex (or the planes it lies outside of), into a caller array indexed like the positions.
 #pragma once
 #include <hider/raster/clip.hpp>
-#include <hider/raster/vertices_asm.hpp>
+#include <hider/raster/vertices_v6m.hpp>
+#include <hider/raster/vertices_v7m.hpp>
 
 namespace hider {
 

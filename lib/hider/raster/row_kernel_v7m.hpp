@@ -1,0 +1,163 @@
+// run_kernel_triangle_portable() (row_kernel.hpp) in Thumb-2 for ARMv7-M, and its row loop as a macro
+// (HIDER_V7M_ROWS) that the band loop's resumes share (band_loop_asm.hpp). Part of row_kernel_asm.hpp:
+// include that header (or row_kernel.hpp), not this one.
+#pragma once
+#include <hider/raster/row_kernel.hpp>
+
+namespace hider {
+
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+/// HIDER_V7M_ROWS: the row loop of run_kernel_triangle_v7m(), shared with draw_band_v7m()'s resumes
+/// (band_loop_asm.hpp). Entry: r0 the record + ra, r1..r5 lp lg lz rp rg, r6 rows before a switch, r7
+/// the colour offset less 2, r8 dzdx, r10 the colour; at sp the middle row's depth pointer, the rows after the
+/// switch (-1: none) and the depth row after the last. Exit: the record (r0) holds the next row's edges
+/// and depth, r12 that row's depth pointer (every other register clobbered). r6 must be at least 1 (the
+/// row loop tests after its first row). Uses local labels 69..79 and the operands ra, n_left, n_x, n_g,
+/// n_a, n_z, n_dz.
+#define HIDER_V7M_ROWS \
+    "72:\n\t"                                /* row */ \
+    "subs   r11, r4, r1\n\t"                 /* rp - lp: twice the pixels */ \
+    "ble    74f\n\t"                         /* empty span */ \
+    "mov    r9, r1\n\t"                      /* p = lp */ \
+    "mov    lr, r3\n\t"                      /* z = lz */ \
+    "lsls   r11, r11, #31\n\t"               /* C: an odd number of pixels */ \
+    "bcs    70f\n"                           /* the first one alone */ \
+    "73:\n\t"                                /* two pixels */ \
+    "ldrh   r12, [r9], #2\n\t" \
+    "cmp    r12, lr, lsr #16\n\t" \
+    "bls    75f\n\t"                         /* stored depth <= ours: keep it */ \
+    "lsr    r12, lr, #16\n\t" \
+    "strh   r12, [r9, #-2]\n\t" \
+    "strh   r10, [r9, r7]\n" \
+    "75:\n\t" \
+    "add    lr, lr, r8\n" \
+    "70:\n\t" \
+    "ldrh   r12, [r9], #2\n\t" \
+    "cmp    r12, lr, lsr #16\n\t" \
+    "bls    69f\n\t" \
+    "lsr    r12, lr, #16\n\t" \
+    "strh   r12, [r9, #-2]\n\t" \
+    "strh   r10, [r9, r7]\n" \
+    "69:\n\t" \
+    "add    lr, lr, r8\n\t" \
+    "cmp    r9, r4\n\t" \
+    "bne    73b\n" \
+    "74:\n\t"                                /* left edge: g += m, p += step, z += dz_row, then correct */ \
+    "ldmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
+    "adds   r2, r2, r11\n\t" \
+    "add    r1, r1, r12\n\t" \
+    "add    r3, r3, lr\n\t" \
+    "bmi    71f\n\t"                         /* g < 0: no correction */ \
+    "sub    r2, r2, r9\n\t" \
+    "sub    r1, r1, #2\n\t" \
+    "sub    r3, r3, r8\n"                    /* z -= dzdx */ \
+    "71:\n\t"                                /* right edge */ \
+    "ldm    r0, {r9, r11, r12}\n\t"          /* ra rm rstep */ \
+    "adds   r5, r5, r11\n\t" \
+    "add    r4, r4, r12\n\t" \
+    "bmi    76f\n\t" \
+    "sub    r5, r5, r9\n\t" \
+    "sub    r4, r4, #2\n" \
+    "76:\n\t" \
+    "subs   r6, r6, #1\n\t" \
+    "bne    72b\n\t" \
+    "ldr    r6, [sp, #4]\n\t"                /* rows after the switch */ \
+    "cmp    r6, #0\n\t" \
+    "blt    78f\n\t"                         /* no switch in this call */ \
+    "ldr    r12, [sp]\n\t"                   /* the middle row */ \
+    "ldrb   r9, [r0, %[n_left]]\n\t" \
+    "cmp    r9, #0\n\t" \
+    "beq    77f\n\t" \
+    "ldr    r9, [r0, %[n_x]]\n\t"            /* the lower edge on the left */ \
+    "add    r1, r12, r9\n\t" \
+    "ldr    r2, [r0, %[n_g]]\n\t" \
+    "ldr    r3, [r0, %[n_z]]\n\t" \
+    "add    r9, r0, %[n_a]\n\t" \
+    "ldm    r9, {r9, r11, r12}\n\t"          /* a m step */ \
+    "ldr    lr, [r0, %[n_dz]]\n\t" \
+    "stmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
+    "b      79f\n" \
+    "77:\n\t" \
+    "ldr    r9, [r0, %[n_x]]\n\t"            /* the lower edge on the right */ \
+    "add    r4, r12, r9\n\t" \
+    "ldr    r5, [r0, %[n_g]]\n\t" \
+    "add    r9, r0, %[n_a]\n\t" \
+    "ldm    r9, {r9, r11, r12}\n\t" \
+    "stm    r0, {r9, r11, r12}\n"            /* ra rm rstep */ \
+    "79:\n\t" \
+    "mov    r9, #-1\n\t" \
+    "str    r9, [sp, #4]\n\t"                /* switched */ \
+    "cmp    r6, #0\n\t" \
+    "bne    72b\n" \
+    "78:\n\t" \
+    "ldr    r12, [sp, #8]\n\t"               /* the depth row after the last */ \
+    "sub    r1, r1, r12\n\t"                 /* back to offsets in that row */ \
+    "sub    r4, r4, r12\n\t" \
+    "sub    r0, r0, %[ra]\n\t" \
+    "stm    r0, {r1-r5}\n\t"
+
+/// Thumb-2. In the row loop: r0 the right edge's constants (offset 36) with the left edge's just below
+/// (load-multiple decrement-before) and `next` above, r1..r5 lp lg lz rp rg, r6 rows left in this
+/// phase, r7 colour offset less 2, r8 dz, r10 colour; on the stack the middle row's depth pointer, the
+/// rows after the switch (-1: none) and the depth row after the last. Pixel loop, two pixels a turn
+/// (an odd span enters at the second): r9 the depth pointer, post-incremented, ending at rp (r4), the
+/// colour at r9 + r7, lr z, r12 scratch (7 instructions a written pixel, 4 a rejected one, 2 a pair).
+/// Per row outside the pixels: 17, plus 3 and 2 for edge corrections.
+__attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_v7m(KernelTriangle*, uint16_t*, int32_t,
+                                                                          const KernelTarget*) {
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "push   {r4-r11, lr}\n\t"
+        "ldrsh  r4, [r0, %[row]]\n\t"
+        "ldrsh  r6, [r0, %[end]]\n\t"
+        "ldrsh  r5, [r0, %[mid]]\n\t"
+        "cmp    r6, r2\n\t"
+        "it     gt\n\t"
+        "movgt  r6, r2\n\t"                 // stop = min(end, row_stop)
+        "subs   r2, r6, r4\n\t"             // n rows
+        "ble    95f\n\t"
+        "strh   r6, [r0, %[row]]\n\t"       // the row after this call
+        "ldrd   r9, r12, [r3]\n\t"          // colour offset, stride
+        "mov    r6, r2\n\t"                 // rows before a switch: all
+        "mov    r8, #-1\n\t"                // rows after it: none
+        "subs   r7, r5, r4\n\t"             // m = mid - row
+        "ble    1f\n\t"                     // on or below the middle row
+        "ldrsh  r11, [r0, %[end]]\n\t"
+        "cmp    r5, r11\n\t"
+        "bge    1f\n\t"                     // no lower short edge
+        "cmp    r7, r2\n\t"
+        "bgt    1f\n\t"                     // the middle row lies past this call
+        "mov    r6, r7\n\t"
+        "sub    r8, r2, r7\n\t"
+        "mla    r7, r7, r12, r1\n"           // the middle row's depth row
+        "1:\n\t"
+        "mla    r11, r2, r12, r1\n\t"       // the depth row after the last
+        "push   {r7, r8, r11}\n\t"
+        "sub    r7, r9, #2\n\t"             // colour offset, less the post-increment
+        "mov    r9, r1\n\t"
+        "ldrd   r8, r10, [r0, %[dzdx]]\n\t" // dzdx, colour
+        "ldm    r0, {r1-r5}\n\t"            // lx lg lz rx rg
+        "add    r1, r1, r9\n\t"             // lp
+        "add    r4, r4, r9\n\t"             // rp
+        "add    r0, r0, %[ra]\n"            // r0: the right edge's constants
+        HIDER_V7M_ROWS
+        "add    sp, sp, #12\n\t"
+        "mov    r0, r12\n\t"
+        "pop    {r4-r11, pc}\n"
+        "95:\n\t"
+        "mov    r0, r1\n\t"                 // nothing to draw
+        "pop    {r4-r11, pc}\n"
+        :
+        : [row] "i"(offsetof(KernelTriangle, row)), [mid] "i"(offsetof(KernelTriangle, mid)),
+          [end] "i"(offsetof(KernelTriangle, end)), [dzdx] "i"(offsetof(RowKernel, dzdx)),
+          [ra] "i"(offsetof(RowKernel, ra)),
+          [n_left] "i"(offsetof(KernelTriangle, next_left) - offsetof(RowKernel, ra)),
+          [n_x] "i"(offsetof(KernelTriangle, next_x) - offsetof(RowKernel, ra)),
+          [n_g] "i"(offsetof(KernelTriangle, next_g) - offsetof(RowKernel, ra)),
+          [n_a] "i"(offsetof(KernelTriangle, next_a) - offsetof(RowKernel, ra)),
+          [n_z] "i"(offsetof(KernelTriangle, next_z) - offsetof(RowKernel, ra)),
+          [n_dz] "i"(offsetof(KernelTriangle, next_dz) - offsetof(RowKernel, ra)));
+}
+#endif
+
+}  // namespace hider
