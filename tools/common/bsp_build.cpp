@@ -150,9 +150,12 @@ private:
     /// Side of a vertex: 0 on the plane or within half a grid step of it (a rounded cut point).
     int side_of(const Plane& pl, uint32_t v) const {
         const I128 s = side(pl, verts_[v]);
-        const I128 slack = (I128(pl.n[0] < 0 ? -pl.n[0] : pl.n[0]) + (pl.n[1] < 0 ? -pl.n[1] : pl.n[1]) +
-                            (pl.n[2] < 0 ? -pl.n[2] : pl.n[2])) / 2;
+        const I128 slack = half_l1(pl);
         return s > slack ? 1 : (s < -slack ? -1 : 0);
+    }
+    /// Half a grid step's reach of side(): |n|_1 / 2.
+    static I128 half_l1(const Plane& pl) {
+        return (I128(pl.n[0] < 0 ? -pl.n[0] : pl.n[0]) + (pl.n[1] < 0 ? -pl.n[1] : pl.n[1]) + (pl.n[2] < 0 ? -pl.n[2] : pl.n[2])) / 2;
     }
 
     /// -1 back, +1 front, 0 coplanar, 2 straddles. Pieces of triangles of the plane's group are coplanar.
@@ -169,10 +172,32 @@ private:
     }
 
     /// The splitter among evenly spaced candidates of `list` (the cost is measured on at most 4096 of its
-    /// polygons, evenly spaced, so large nodes stay fast).
-    uint32_t choose(const std::vector<uint32_t>& list) const {
+    /// polygons, evenly spaced, so large nodes stay fast). The sampled polygons' distinct corners are
+    /// gathered first, so each candidate computes the side of a corner once however many polygons share
+    /// it, in a contiguous array (the same decisions as classify()).
+    uint32_t choose(const std::vector<uint32_t>& list) {
         const size_t n = list.size(), tries = std::min<size_t>(n, static_cast<size_t>(std::max(1, opt_.candidates)));
         const size_t sample = std::min<size_t>(n, 4096);
+        if (corner_stamp_.size() < verts_.size()) corner_stamp_.resize(verts_.size(), {0, 0});
+        ++stamp_;
+        sample_group_.clear();
+        sample_end_.clear();
+        sample_corner_.clear();
+        sample_point_.clear();
+        for (size_t j = 0; j < sample; ++j) {
+            const Poly& q = polys_[list[j * n / sample]];
+            sample_group_.push_back(groups_[q.tri]);
+            for (uint32_t v : q.v) {
+                std::array<uint32_t, 2>& st = corner_stamp_[v];
+                if (st[0] != stamp_) {
+                    st = {stamp_, static_cast<uint32_t>(sample_point_.size())};
+                    sample_point_.push_back(verts_[v]);
+                }
+                sample_corner_.push_back(st[1]);
+            }
+            sample_end_.push_back(static_cast<uint32_t>(sample_corner_.size()));
+        }
+        point_side_.resize(sample_point_.size());
         uint32_t best = polys_[list[0]].tri;
         int64_t best_cost = INT64_MAX;
         std::vector<uint32_t> tried;
@@ -180,12 +205,25 @@ private:
             const uint32_t plane = polys_[list[k * n / tries]].tri;
             if (std::find(tried.begin(), tried.end(), plane) != tried.end()) continue;
             tried.push_back(plane);
+            const Plane& pl = planes_[plane];
+            const uint32_t group = groups_[plane];
+            const I128 slack = half_l1(pl);
+            for (size_t i = 0; i < sample_point_.size(); ++i) {  // bit 0: beyond the slack in front, bit 1: behind
+                const I128 sd = side(pl, sample_point_[i]);
+                point_side_[i] = static_cast<uint8_t>((sd > slack ? 1 : 0) | (sd < -slack ? 2 : 0));
+            }
             int64_t front = 0, back = 0, cut = 0;
+            uint32_t begin = 0;
             for (size_t j = 0; j < sample; ++j) {
-                const int c = classify(plane, polys_[list[j * n / sample]]);
-                front += c == 1;
-                back += c == -1;
-                cut += c == 2;
+                const uint32_t end = sample_end_[j];
+                if (sample_group_[j] != group) {  // else coplanar
+                    unsigned sides = 0;
+                    for (uint32_t c = begin; c < end; ++c) sides |= point_side_[sample_corner_[c]];
+                    front += sides == 1;
+                    back += sides == 2;
+                    cut += sides == 3;
+                }
+                begin = end;
             }
             const int64_t cost = opt_.split_weight * cut + opt_.balance_weight * std::llabs(front - back);
             if (cost < best_cost) {
@@ -482,6 +520,14 @@ private:
     std::vector<uint32_t> node_plane_, node_depth_;
     std::vector<std::vector<uint32_t>> node_polys_;
     std::vector<std::array<uint32_t, 2>> node_child_;
+    // choose()'s scratch: the sampled polygons' groups, the end of each one's corners in sample_corner_
+    // (indices into sample_point_, its distinct corners), their sides; corner_stamp_ (stamp, index) per
+    // vertex marks those already gathered for the current call.
+    std::vector<uint32_t> sample_group_, sample_end_, sample_corner_;
+    std::vector<P> sample_point_;
+    std::vector<uint8_t> point_side_;
+    std::vector<std::array<uint32_t, 2>> corner_stamp_;
+    uint32_t stamp_ = 0;
 };
 
 BspScaled to_scaled(double v) {
