@@ -81,7 +81,7 @@ int bsp_command(const Args& args) {
     fs::path root = source_root() / "build";
     for (size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "--models") models = option_value(args, i);
-        else if (args[i] == "--build-root") root = option_value(args, i);
+        else if (args[i] == "--build-root") root = fs::absolute(option_value(args, i));  // QEMU runs in a scratch directory
         else fail("bsp: unknown argument '" + args[i] + "'");
     }
     std::vector<std::string> paths;

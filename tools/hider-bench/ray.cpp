@@ -103,7 +103,7 @@ int raytrace_command(const Args& args) {
     fs::path root = source_root() / "build";
     for (size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "--valgrind") valgrind = option_value(args, i);
-        else if (args[i] == "--build-root") root = option_value(args, i);
+        else if (args[i] == "--build-root") root = fs::absolute(option_value(args, i));  // QEMU runs in a scratch directory
         else if (args[i] == "--scene") scene_path = option_value(args, i);
         else fail("raytrace: unknown argument '" + args[i] + "'");
     }

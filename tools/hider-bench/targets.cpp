@@ -174,7 +174,7 @@ int targets_command(const Args& args) {
     fs::path root = source_root() / "build";
     std::string models = default_models_dir();
     for (size_t i = 0; i < args.size(); ++i) {
-        if (args[i] == "--build-root") root = option_value(args, i);
+        if (args[i] == "--build-root") root = fs::absolute(option_value(args, i));  // QEMU runs in a scratch directory
         else if (args[i] == "--models") models = option_value(args, i);
         else fail("targets: unknown argument '" + args[i] + "'");
     }
