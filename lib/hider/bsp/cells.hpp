@@ -66,7 +66,7 @@ inline bool surface_near(const BspTree& tree, const Vec3q16& eye, int64_t reach,
     }
     size_t top = 0;
     stack[top++] = 0;
-    while (top != 0) {  // a node's box holds its subtree: at most depth + 1 entries wait
+    while (top != 0) {  // one waiting sibling per level above, plus the two children just pushed: at most depth
         const BspNode& n = tree.nodes[stack[--top]];
         bool meets = true;
         for (int k = 0; k < 3; ++k) meets = meets && n.box_min[k] <= bhi[k] && n.box_max[k] >= blo[k];

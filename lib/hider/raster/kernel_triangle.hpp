@@ -24,7 +24,7 @@ struct KernelBand {
 
 /// The constants of rows [row_begin, row_end) of a width x height frame with the given depth stride.
 inline KernelBand kernel_band(int32_t width, int32_t height, int32_t row_begin, int32_t row_end, int32_t stride_bytes) {
-    const int32_t ox = kSubpixel / 2 - width * (kSubpixel / 2), oy = kSubpixel / 2 - height * (kSubpixel / 2);
+    const int32_t ox = pixel_centre_origin(width), oy = pixel_centre_origin(height);
     return {ox, oy, (width - 1) * kSubpixel + ox, row_begin * kSubpixel + oy, (row_end - 1) * kSubpixel + oy,
             row_begin, row_end, stride_bytes};
 }

@@ -63,8 +63,8 @@ public:
         const int32_t area = TriangleRaster::signed_area(a, b, c);
         const bool ok = band != nullptr ? tr_.setup(a, b, c, area, width, height, *band) : tr_.setup(a, b, c, area, width, height);
         if (!ok || cuts.size() > static_cast<size_t>(kMaxPieceCuts)) return false;
-        x_origin_ = kSubpixel / 2 - width * (kSubpixel / 2);
-        y_origin_ = kSubpixel / 2 - height * (kSubpixel / 2);
+        x_origin_ = pixel_centre_origin(width);
+        y_origin_ = pixel_centre_origin(height);
         first_ = tr_.first_row();
         end_ = tr_.end_row();
         count_ = 0;

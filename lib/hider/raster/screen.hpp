@@ -14,7 +14,7 @@ struct BandBounds {
 /// The bounds of a frame view's band (any type with width, height, y0, y1).
 template <class Frame>
 BandBounds band_bounds(const Frame& f) {
-    const int32_t ox = kSubpixel / 2 - f.width * (kSubpixel / 2), oy = kSubpixel / 2 - f.height * (kSubpixel / 2);
+    const int32_t ox = pixel_centre_origin(f.width), oy = pixel_centre_origin(f.height);
     return {f.y0 * kSubpixel + oy, (f.y1 - 1) * kSubpixel + oy, ox, (f.width - 1) * kSubpixel + ox, oy};
 }
 

@@ -105,8 +105,8 @@ private:
         const ScreenVertex& v2 = area < 0 ? b : c;
         if (area < 0) area = -area;
         width_ = width;
-        x_origin_ = kSubpixel / 2 - width * (kSubpixel / 2);
-        y_origin_ = kSubpixel / 2 - height * (kSubpixel / 2);
+        x_origin_ = pixel_centre_origin(width);
+        y_origin_ = pixel_centre_origin(height);
         // Rows: the vertices sorted by y (top, mid, bottom), counting swaps. The long edge (top to
         // bottom) is the left one when the clockwise order runs bottom -> top, i.e. when (top, mid,
         // bottom) is an even permutation of (a, v1, v2).

@@ -127,7 +127,7 @@ private:
     };
 
     PixelBox pixel_box(const ScreenPoly& p) const {
-        const int32_t ox = kSubpixel / 2 - width_ * (kSubpixel / 2), oy = kSubpixel / 2 - height_ * (kSubpixel / 2);
+        const int32_t ox = pixel_centre_origin(width_), oy = pixel_centre_origin(height_);
         auto px = [](int32_t sub, int32_t origin, int32_t n) { return clamp<int32_t>((sub - origin) >> kSubpixelBits, 0, n - 1); };
         return {px(p.xmin, ox, width_), px(p.xmax, ox, width_), px(p.ymin, oy, height_), px(p.ymax, oy, height_)};
     }
