@@ -21,6 +21,7 @@
 #include <vector>
 
 #include <hider/bsp/format.hpp>
+#include <hider/screen.hpp>
 
 #include "common/gen_scenes.hpp"
 
@@ -858,6 +859,18 @@ TEST_CASE("hider-bsp --stats reports polygons, split ratio, nodes, depth, leaf s
     for (const std::string part : {"input triangles ", "polygons ", "split-ratio ", "nodes ", "depth ", "largest-node ", "bytes ",
                                    "build "})
         CHECK(contains(r.out, part));
+    // The RAM a walk needs: one ScreenVertex per vertex and depth + 1 stack entries, from the printed counts.
+    unsigned long vertices = 0, nodes = 0, depth = 0, ram = 0, per_vertex = 0, entries = 0, list_nodes = 0;
+    const size_t at = r.out.find("vertices "), walk = r.out.find("walk RAM ");
+    REQUIRE(at != std::string::npos);
+    REQUIRE(walk != std::string::npos);
+    REQUIRE(std::sscanf(r.out.c_str() + at, "vertices %lu nodes %lu depth %lu", &vertices, &nodes, &depth) == 3);
+    REQUIRE(std::sscanf(r.out.c_str() + walk, "walk RAM %lu bytes (vertices %*u x %lu B, stack %lu x 4 B); order_bsp's list: up to %lu",
+                        &ram, &per_vertex, &entries, &list_nodes) == 4);
+    CHECK(per_vertex == sizeof(hider::ScreenVertex));
+    CHECK(entries == depth + 1);
+    CHECK(ram == vertices * sizeof(hider::ScreenVertex) + 4 * entries);
+    CHECK(list_nodes == nodes);
     // The torus is a closed surface: its cells are labelled. Suzanne is open: they are not, and it says why.
     CHECK(contains(r.out, "cells labelled "));
     CHECK(contains(r.out, "winding numbers 0..1"));

@@ -11,6 +11,8 @@
 #include <iostream>
 #include <string>
 
+#include <hider/bsp/order.hpp>
+
 #include "common/bsp_build.hpp"
 #include "common/cli.hpp"
 #include "common/render_bsp.hpp"
@@ -110,6 +112,11 @@ int main(int argc, char** argv) {
                     st.tjunction_points, st.vertices, st.nodes, st.max_depth, st.largest_node);
         std::printf("bytes %zu (nodes %zu, triangles %zu, vertices %zu) build %.2f s\n", st.bytes, st.nodes * sizeof(BspNode),
                     st.triangles * sizeof(BspTriangle), st.vertices * sizeof(BspVertex), seconds);
+        // What a chip walking the tree needs in RAM besides the frame: one ScreenVertex per vertex and the walk stack.
+        const size_t stack_entries = bsp_stack_entries(static_cast<uint32_t>(st.max_depth));
+        std::printf("walk RAM %zu bytes (vertices %zu x %zu B, stack %zu x 4 B); order_bsp's list: up to %zu x %zu B more\n",
+                    st.vertices * sizeof(ScreenVertex) + stack_entries * sizeof(uint32_t), st.vertices, sizeof(ScreenVertex),
+                    stack_entries, st.nodes, sizeof(BspDrawEntry));
         if (st.cells_note.empty())
             std::printf("cells labelled %zu (winding numbers %d..%d, triangles stray up to %.1f raw units): only the faces\n"
                         "seen from the eye's cell are drawn\n",
