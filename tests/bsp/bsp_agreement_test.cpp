@@ -94,6 +94,35 @@ TEST_CASE("bsp and bsp-front match the z-buffer from inside the city, with the e
     }
 }
 
+TEST_CASE("axis splits keep a convex sphere's tree shallow, its cells labelled and its walks equal to the z-buffer") {
+    // 2,208 triangles: every plane has all the others behind it, so without axis splits the tree is one chain.
+    tool::Scene ball = test::uv_sphere(48, 24, 96, 72);
+    auto stats_of = [&](int max_chain) {
+        tool::BspOptions opt;
+        opt.max_chain = max_chain;
+        tool::BspBuilt built;
+        tool::BspStats st;
+        std::string why;
+        REQUIRE_MESSAGE(tool::build_bsp(ball.positions, ball.tris, ball.ids, opt, built, st, why), why);
+        CHECK(built.max_depth == st.max_depth);
+        return st;
+    };
+    const tool::BspStats chain = stats_of(0), split = stats_of(tool::BspOptions{}.max_chain), fine = stats_of(16);
+    MESSAGE("sphere 48x24: depth " << chain.max_depth << " as one chain, " << split.max_depth << " with the default "
+                                   << tool::BspOptions{}.max_chain << " (" << split.splitters << " axis splits, " << split.triangles
+                                   << " triangles against " << chain.triangles << "), " << fine.max_depth << " with 16 ("
+                                   << fine.splitters << " axis splits, " << fine.triangles << " triangles)");
+    CHECK(chain.splitters == 0);
+    CHECK(chain.max_depth > 1000);
+    CHECK(split.splitters > 0);
+    CHECK(split.max_depth < 300);
+    CHECK(fine.max_depth < split.max_depth);
+    for (const tool::BspStats* st : {&chain, &split, &fine}) CHECK(st->cells == tool::BspCells::labelled);
+    check("sphere 48x24", ball, true);  // the default options: axis splits
+    ball.camera.eye = {Q16::from_ratio(1, 8), Q16::from_ratio(-1, 16), Q16::from_ratio(1, 32)};  // inside the ball
+    check("sphere 48x24 from inside", ball, true);
+}
+
 TEST_CASE("bsp and bsp-front match the z-buffer on every test model" * doctest::test_suite("slow")) {
     for (const char* name : {"torus.obj", "teapot.obj", "suzanne.obj", "spot.obj", "cow.obj", "fandisk.obj", "beetle.obj",
                              "woody.obj", "stanford-bunny.obj"}) {

@@ -1,11 +1,10 @@
 // The walks' stack: bsp_stack_entries(depth) = depth + 1 entries, one per level. Every walk (back to
 // front, front to back, the one-walk list, the eye's cell) and bsp_load() run with exactly that many
 // entries inside a guarded buffer: nothing past it is written, and the walks proper (culled, so without
-// the cell search) use at most depth - 1. Scenes: a UV sphere, whose convex surface makes the tree a
-// chain as deep as most of its polygons, the torus and teapot, and random soups; cameras outside, inside
-// and on a tree vertex.
+// the cell search) use at most depth - 1. Scenes: a UV sphere built without axis splits, whose convex
+// surface makes the tree a chain as deep as most of its polygons, and with them; the torus and teapot, and
+// random soups; cameras outside, inside and on a tree vertex.
 #include <algorithm>
-#include <cmath>
 #include <string>
 #include <vector>
 
@@ -16,8 +15,6 @@
 
 #include "common/bsp_build.hpp"
 #include "common/render_bsp.hpp"
-#include "common/obj.hpp"
-#include "common/scene.hpp"
 #include "support/scene_util.hpp"
 
 using namespace hider;
@@ -26,41 +23,6 @@ namespace {
 
 constexpr uint32_t kSentinel = 0xA5A5A5A5u;  // no walk writes it: its index bits exceed every tree here
 constexpr size_t kGuard = 16;
-
-/// A UV sphere of `slices` x `stacks` (poles as fans), framed by build_scene().
-tool::Scene sphere(int slices, int stacks) {
-    tool::ObjModel m;
-    const double pi = 3.14159265358979323846;
-    m.vertices.push_back({0, 1, 0});
-    for (int i = 1; i < stacks; ++i)
-        for (int j = 0; j < slices; ++j) {
-            const double th = pi * i / stacks, ph = 2 * pi * j / slices;
-            m.vertices.push_back({std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph)});
-        }
-    m.vertices.push_back({0, -1, 0});
-    const int south = static_cast<int>(m.vertices.size()) - 1;
-    auto at = [&](int i, int j) { return 1 + (i - 1) * slices + (j % slices); };
-    auto face = [&](int a, int b, int c) {
-        tool::ObjFace f;
-        f.v = {a, b, c};
-        f.id = static_cast<uint32_t>(m.faces.size() + 1);
-        m.faces.push_back(f);
-    };
-    for (int j = 0; j < slices; ++j) face(0, at(1, j + 1), at(1, j));
-    for (int i = 1; i + 1 < stacks; ++i)
-        for (int j = 0; j < slices; ++j) {
-            face(at(i, j), at(i, j + 1), at(i + 1, j + 1));
-            face(at(i, j), at(i + 1, j + 1), at(i + 1, j));
-        }
-    for (int j = 0; j < slices; ++j) face(south, at(stacks - 1, j), at(stacks - 1, j + 1));
-    tool::Scene s;
-    std::string why;
-    tool::CameraArgs cam;
-    cam.width = 64;
-    cam.height = 48;
-    REQUIRE_MESSAGE(tool::build_scene(m, cam, s, why), why);
-    return s;
-}
 
 /// The entries written below the end of `buf`'s first `used` (sentinel-filled) entries: one past the
 /// highest index written; and whether the guard beyond them is intact.
@@ -119,14 +81,14 @@ void walk_all(const tool::Scene& s, const BspTree& tree, const Camera& cam, Walk
         }
 }
 
-/// Builds and loads `s`'s tree (the load with exactly depth + 1 entries, guarded), then walks it from
+/// Builds and loads `s`'s tree with `opt` (the load with exactly depth + 1 entries, guarded), then walks it from
 /// its camera, from inside (the centroid of its first triangle) and from its first vertex.
-Walks check_scene(const std::string& name, const tool::Scene& s) {
+Walks check_scene(const std::string& name, const tool::Scene& s, const tool::BspOptions& opt = {}) {
     INFO(name);
     tool::BspBuilt built;
     tool::BspStats bs;
     std::string why;
-    REQUIRE_MESSAGE(tool::build_bsp(s.positions, s.tris, s.ids, tool::BspOptions{}, built, bs, why), why);
+    REQUIRE_MESSAGE(tool::build_bsp(s.positions, s.tris, s.ids, opt, built, bs, why), why);
     const tool::AlignedBlob blob(tool::bsp_blob(built, tool::BspFit{s.centre, s.scale}));
     const uint32_t depth = built.max_depth;
     REQUIRE(bsp_stack_entries(depth) == size_t{depth} + 1);
@@ -157,11 +119,14 @@ Walks check_scene(const std::string& name, const tool::Scene& s) {
 }  // namespace
 
 TEST_CASE("BSP walks and load fit in depth + 1 stack entries (one per level)") {
-    // The convex sphere: a chain of nodes; seen from outside, about half of them wait for their back
-    // subtree, so the bound is really reached for, not met by a shallow tree.
-    const tool::Scene ball = sphere(24, 12);
-    const Walks w = check_scene("sphere 24x12", ball);
+    // The convex sphere without axis splits: a chain of nodes; seen from outside, about half of them
+    // wait for their back subtree, so the bound is really reached for, not met by a shallow tree.
+    const tool::Scene ball = test::uv_sphere(24, 12, 64, 48);
+    tool::BspOptions chain;
+    chain.max_chain = 0;
+    const Walks w = check_scene("sphere 24x12, one chain", ball, chain);
     CHECK(w.walk_high * 4 > ball.tris.size());
+    check_scene("sphere 24x12, default options", ball);
     for (const char* name : {"boxes-6-10", "soup-3-60", "stacked-2-8"}) check_scene(name, test::generated_scene(name));
 }
 

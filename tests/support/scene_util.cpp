@@ -1,6 +1,8 @@
 // Test glue between fixed-point scenes and the double reference.
 #include "support/scene_util.hpp"
 
+#include <cmath>
+
 #include <doctest/doctest.h>
 
 #include <hider/raster/zbuffer.hpp>
@@ -131,6 +133,41 @@ tool::Scene generated_scene(const std::string& name) {
     REQUIRE_MESSAGE(known, why);
     tool::Scene s;
     const bool built = tool::build_scene(tool::gen::obj_model(g), tool::gen::camera_args(g), s, why);
+    REQUIRE_MESSAGE(built, why);
+    return s;
+}
+
+tool::Scene uv_sphere(int slices, int stacks, int width, int height) {
+    tool::ObjModel m;
+    const double pi = 3.14159265358979323846;
+    m.vertices.push_back({0, 1, 0});
+    for (int i = 1; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            const double th = pi * i / stacks, ph = 2 * pi * j / slices;
+            m.vertices.push_back({std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph)});
+        }
+    m.vertices.push_back({0, -1, 0});
+    const int south = static_cast<int>(m.vertices.size()) - 1;
+    auto at = [&](int i, int j) { return 1 + (i - 1) * slices + (j % slices); };
+    auto face = [&](int a, int b, int c) {
+        tool::ObjFace f;
+        f.v = {a, b, c};
+        f.id = static_cast<uint32_t>(m.faces.size() + 1);
+        m.faces.push_back(f);
+    };
+    for (int j = 0; j < slices; ++j) face(0, at(1, j + 1), at(1, j));
+    for (int i = 1; i + 1 < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            face(at(i, j), at(i, j + 1), at(i + 1, j + 1));
+            face(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+        }
+    for (int j = 0; j < slices; ++j) face(south, at(stacks - 1, j), at(stacks - 1, j + 1));
+    tool::CameraArgs cam;
+    cam.width = width;
+    cam.height = height;
+    tool::Scene s;
+    std::string why;
+    const bool built = tool::build_scene(m, cam, s, why);
     REQUIRE_MESSAGE(built, why);
     return s;
 }

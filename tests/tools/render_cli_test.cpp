@@ -896,6 +896,31 @@ TEST_CASE("hider-bsp reports OBJ errors with the file and the line, like hider-r
     const Run bad_name = bsp_tool(kTorus, scratch_path("t.hpp"), {"--name", "1tree"});
     CHECK(bad_name.code == 2);
     CHECK(contains(bad_name.err, "--name"));
+    for (const char* chain : {"-1", "x", "100000001"}) {
+        const Run bad_chain = bsp_tool(kTorus, out, {"--max-chain", chain});
+        CHECK(bad_chain.code == 2);
+        CHECK(contains(bad_chain.err, "--max-chain needs a whole number 0..100000000"));
+    }
+}
+
+TEST_CASE("hider-bsp --max-chain: 0 leaves the chains, the default splits them across an axis, and says how often") {
+    auto depth_and_splits = [](const Args& extra) {
+        const Run r = bsp_tool(kTorus, scratch_path("chain.hbsp"), extra);
+        INFO("stdout: ", r.out, "stderr: ", r.err);
+        REQUIRE(r.code == 0);
+        unsigned long depth = 0, splits = 0;
+        const size_t at = r.out.find("depth ");
+        REQUIRE(at != std::string::npos);
+        REQUIRE(std::sscanf(r.out.c_str() + at, "depth %lu largest-node %*u axis-splits %lu", &depth, &splits) == 2);
+        return std::make_pair(depth, splits);
+    };
+    const auto off = depth_and_splits({"--stats", "--max-chain", "0"}), on = depth_and_splits({"--stats"}),
+               fine = depth_and_splits({"--stats", "--max-chain", "16"});
+    CHECK(off.second == 0);
+    CHECK(on.second > 0);
+    CHECK(fine.second > on.second);
+    CHECK(on.first < off.first);
+    CHECK(fine.first < on.first);
 }
 
 TEST_CASE("A corrupt, truncated or empty .hbsp is rejected with exit 2 and no image") {

@@ -295,7 +295,42 @@ private:
         make(bo, back);
     }
 
+    /// A plane across the polygons of `list` that is no polygon's: perpendicular to the longest axis of
+    /// their corners' box, through the median corner on it (a grid point, a vertex of the tree: a node's
+    /// origin is a vertex). Appended to planes_ (with its group, and no face); returns its index.
+    uint32_t splitter(const std::vector<uint32_t>& list) {
+        std::vector<int32_t> coord[3];
+        for (uint32_t q : list)
+            for (uint32_t v : polys_[q].v)
+                for (int k = 0; k < 3; ++k) coord[k].push_back(verts_[v][k]);
+        int axis = 0;
+        int64_t widest = -1;
+        for (int k = 0; k < 3; ++k) {
+            const auto [lo, hi] = std::minmax_element(coord[k].begin(), coord[k].end());
+            if (int64_t{*hi} - *lo > widest) {
+                widest = int64_t{*hi} - *lo;
+                axis = k;
+            }
+        }
+        std::vector<int32_t>& c = coord[axis];
+        std::nth_element(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(c.size() / 2), c.end());
+        P o{0, 0, 0};
+        o[static_cast<size_t>(axis)] = c[c.size() / 2];
+        Plane pl;
+        pl.n[0] = pl.n[1] = pl.n[2] = 0;
+        pl.n[axis] = 1;
+        pl.o = o;
+        pl.origin = vertex(o);
+        planes_.push_back(pl);
+        groups_.push_back(group_of(pl));
+        faces_.push_back(0);
+        return static_cast<uint32_t>(planes_.size() - 1);
+    }
+
     /// Splits the polygons of each node by its plane, depth first, in preorder (children after parents).
+    /// With opt_.max_chain, a node of more polygons than that whose chosen plane leaves one side empty
+    /// (a link of a chain, as every plane of a convex surface does) takes a splitter() plane instead
+    /// when that one has polygons on both sides.
     void build_tree(std::vector<uint32_t> all) {
         struct Item {
             std::vector<uint32_t> list;
@@ -304,12 +339,24 @@ private:
             uint32_t depth;
         };
         std::vector<Item> stack;
+        std::vector<int> cls;
         if (!all.empty()) stack.push_back({std::move(all), kBspNone, 0, 1});
         while (!stack.empty()) {
             Item item = std::move(stack.back());
             stack.pop_back();
             const uint32_t id = static_cast<uint32_t>(node_plane_.size());
-            const uint32_t plane = choose(item.list);
+            uint32_t plane = choose(item.list);
+            classify_all(plane, item.list, cls);
+            if (opt_.max_chain > 0 && item.list.size() > static_cast<size_t>(opt_.max_chain) && one_sided(cls)) {
+                const uint32_t across = splitter(item.list);
+                std::vector<int> across_cls;
+                classify_all(across, item.list, across_cls);
+                if (reaches_both(across_cls)) {
+                    plane = across;
+                    cls = std::move(across_cls);
+                    ++stats_.splitters;
+                }
+            }
             node_plane_.push_back(plane);
             node_polys_.emplace_back();
             node_child_.push_back({kBspNone, kBspNone});
@@ -317,9 +364,10 @@ private:
             stats_.max_depth = std::max<size_t>(stats_.max_depth, item.depth);
             if (item.parent != kBspNone) node_child_[item.parent][item.child] = id;
             std::vector<uint32_t> front, back;
-            const Plane& pl = planes_[plane];
-            for (uint32_t q : item.list) {
-                const int c = classify(plane, polys_[q]);
+            const Plane pl = planes_[plane];
+            for (size_t i = 0; i < item.list.size(); ++i) {
+                const uint32_t q = item.list[i];
+                const int c = cls[i];
                 if (c == 0) node_polys_[id].push_back(q);
                 else if (c == 1) front.push_back(q);
                 else if (c == -1) back.push_back(q);
@@ -337,6 +385,20 @@ private:
             if (!front.empty()) stack.push_back({std::move(front), id, 0, item.depth + 1});
         }
     }
+
+    void classify_all(uint32_t plane, const std::vector<uint32_t>& list, std::vector<int>& cls) const {
+        cls.resize(list.size());
+        for (size_t i = 0; i < list.size(); ++i) cls[i] = classify(plane, polys_[list[i]]);
+    }
+    /// Which sides of the plane hold polygons: bit 0 front, bit 1 back (a cut one counts for both).
+    static int sides(const std::vector<int>& cls) {
+        int s = 0;
+        for (int c : cls) s |= (c == 1 || c == 2 ? 1 : 0) | (c == -1 || c == 2 ? 2 : 0);
+        return s;
+    }
+    /// Polygons on one side only: a chain link (none on either: all in the plane, a leaf).
+    static bool one_sided(const std::vector<int>& cls) { return sides(cls) == 1 || sides(cls) == 2; }
+    static bool reaches_both(const std::vector<int>& cls) { return sides(cls) == 3; }
 
     /// Every point made on an edge's line between its ends joins the edge, in order along it.
     std::vector<uint32_t> closed_loop(const Poly& p) {

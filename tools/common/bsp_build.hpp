@@ -22,6 +22,10 @@ struct BspOptions {
     int split_weight = 8;
     int balance_weight = 1;
     int candidates = 32;
+    /// 0: off. Else a node of more polygons whose chosen plane leaves one side empty (a chain link: a
+    /// convex surface makes the tree one chain, as deep as its polygons) is split instead by an
+    /// axis-aligned plane through the median corner: a shallower tree (walk stack) for more cuts.
+    int max_chain = 256;
 };
 
 /// What label_cells() made of a tree's cells.
@@ -51,6 +55,7 @@ struct BspStats {
     size_t nodes = 0;
     size_t max_depth = 0;
     size_t largest_node = 0;      ///< most triangles in one node's plane
+    size_t splitters = 0;         ///< nodes split by an axis plane (BspOptions::max_chain)
     size_t vertices = 0;
     size_t bytes = 0;             ///< blob size
     BspCells cells = BspCells::empty;  ///< whether the cells are labelled, or why not

@@ -26,7 +26,7 @@ using namespace hider::tool;
 
 const char* kUsage =
     "usage: hider-bsp MODEL.obj -o OUT.hbsp|OUT.hpp [--split-weight K] [--balance-weight K] [--candidates N]\n"
-    "                 [--name NAME] [--stats] [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
+    "                 [--max-chain N] [--name NAME] [--stats] [--size WxH] [--eye x,y,z] [--target x,y,z] [--up x,y,z]\n"
     "                 [--fov DEG] [--near N] [--far F]   (camera options: .hpp only)\n";
 
 [[noreturn]] void fail(const std::string& msg) {
@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
         else if (a == "--split-weight") opt.split_weight = int_option(a, value(), 0, 1000000);
         else if (a == "--balance-weight") opt.balance_weight = int_option(a, value(), 0, 1000000);
         else if (a == "--candidates") opt.candidates = int_option(a, value(), 1, 100000);
+        else if (a == "--max-chain") opt.max_chain = int_option(a, value(), 0, 100000000);
         else if (a == "--name") name = value();
         else if (a == "--stats") stats = true;
         else if (a == "-h" || a == "--help") { std::cout << kUsage; return 0; }
@@ -108,8 +109,8 @@ int main(int argc, char** argv) {
         std::printf("input triangles %zu (degenerate %zu) polygons %zu cuts %zu split-ratio %.3f\n", st.input_triangles,
                     st.degenerate, st.polygons, st.cuts,
                     st.input_triangles == st.degenerate ? 0.0 : static_cast<double>(st.polygons) / (st.input_triangles - st.degenerate));
-        std::printf("triangles %zu t-junction-points %zu vertices %zu nodes %zu depth %zu largest-node %zu\n", st.triangles,
-                    st.tjunction_points, st.vertices, st.nodes, st.max_depth, st.largest_node);
+        std::printf("triangles %zu t-junction-points %zu vertices %zu nodes %zu depth %zu largest-node %zu axis-splits %zu\n",
+                    st.triangles, st.tjunction_points, st.vertices, st.nodes, st.max_depth, st.largest_node, st.splitters);
         std::printf("bytes %zu (nodes %zu, triangles %zu, vertices %zu) build %.2f s\n", st.bytes, st.nodes * sizeof(BspNode),
                     st.triangles * sizeof(BspTriangle), st.vertices * sizeof(BspVertex), seconds);
         // What a chip walking the tree needs in RAM besides the frame: one ScreenVertex per vertex and the walk stack.
