@@ -4,6 +4,7 @@
 // pixels; no hole and no crack where faces share their edges (closed meshes: the compiler fixed the
 // T-junctions of its cuts); bsp-front writes every pixel once. On open edges (soups) a cut point's
 // rounding can move a face's boundary by a fraction of a subpixel, which shows at single edge pixels.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -21,7 +22,9 @@ using namespace hider;
 
 namespace {
 
-tool::RenderResult ids_of(const tool::Scene& s, tool::Algo algo, bool cull, int band = 0) {
+/// The scene's face-id image by `algo`; a BSP algorithm walks `blob` when given, else the tree
+/// hider-render builds (default options).
+tool::RenderResult ids_of(const tool::Scene& s, tool::Algo algo, bool cull, int band = 0, const std::vector<uint8_t>* blob = nullptr) {
     tool::RenderOptions opt;
     opt.algo = algo;
     opt.cull = cull;
@@ -31,17 +34,18 @@ tool::RenderResult ids_of(const tool::Scene& s, tool::Algo algo, bool cull, int 
     opt.band_rows = band;
     tool::RenderResult r;
     std::string why;
-    const bool ok = tool::render(s, opt, r, why);
+    const bool ok = blob != nullptr ? tool::render_bsp(s, *blob, opt, r, why) : tool::render(s, opt, r, why);
     REQUIRE_MESSAGE(ok, why);
     return r;
 }
 
-/// bsp and bsp-front against the z-buffer on one scene; `closed`: its faces share their edges.
-void check(const std::string& name, const tool::Scene& s, bool closed) {
+/// bsp and bsp-front (of `blob` when given) against the z-buffer on one scene; `closed`: its faces share
+/// their edges.
+void check(const std::string& name, const tool::Scene& s, bool closed, const std::vector<uint8_t>* blob = nullptr) {
     for (bool cull : {true, false}) {
         const std::vector<uint32_t> z = tool::decode_ids(ids_of(s, tool::Algo::zbuffer, cull));
         for (tool::Algo algo : {tool::Algo::bsp, tool::Algo::bsp_front}) {
-            const tool::RenderResult r = ids_of(s, algo, cull);
+            const tool::RenderResult r = ids_of(s, algo, cull, 0, blob);
             const std::vector<uint32_t> ids = tool::decode_ids(r);
             const ref::Agreement a = ref::compare_ids(ids, z, s.width, s.height);
             const test::Defects d = test::count_defects(ids, z, s.width, s.height);
@@ -97,30 +101,52 @@ TEST_CASE("bsp and bsp-front match the z-buffer from inside the city, with the e
 TEST_CASE("axis splits keep a convex sphere's tree shallow, its cells labelled and its walks equal to the z-buffer") {
     // 2,208 triangles: every plane has all the others behind it, so without axis splits the tree is one chain.
     tool::Scene ball = test::uv_sphere(48, 24, 96, 72);
-    auto stats_of = [&](int max_chain) {
+    auto build = [](const tool::Scene& s, int max_chain, tool::BspBuilt& built) {
         tool::BspOptions opt;
         opt.max_chain = max_chain;
-        tool::BspBuilt built;
         tool::BspStats st;
         std::string why;
-        REQUIRE_MESSAGE(tool::build_bsp(ball.positions, ball.tris, ball.ids, opt, built, st, why), why);
+        REQUIRE_MESSAGE(tool::build_bsp(s.positions, s.tris, s.ids, opt, built, st, why), why);
         CHECK(built.max_depth == st.max_depth);
         return st;
     };
-    const tool::BspStats chain = stats_of(0), split = stats_of(tool::BspOptions{}.max_chain), fine = stats_of(16);
-    MESSAGE("sphere 48x24: depth " << chain.max_depth << " as one chain, " << split.max_depth << " with the default "
-                                   << tool::BspOptions{}.max_chain << " (" << split.splitters << " axis splits, " << split.triangles
-                                   << " triangles against " << chain.triangles << "), " << fine.max_depth << " with 16 ("
-                                   << fine.splitters << " axis splits, " << fine.triangles << " triangles)");
+    tool::BspBuilt chain_tree, split_tree, fine_tree;
+    const tool::BspStats chain = build(ball, 0, chain_tree), split = build(ball, 256, split_tree), fine = build(ball, 16, fine_tree);
+    CHECK(tool::BspOptions{}.max_chain == 0);  // off unless asked for
+    MESSAGE("sphere 48x24: depth " << chain.max_depth << " as one chain, " << split.max_depth << " with --max-chain 256 ("
+                                   << split.splitters << " axis splits, " << split.triangles << " triangles against "
+                                   << chain.triangles << "), " << fine.max_depth << " with 16 (" << fine.splitters
+                                   << " axis splits, " << fine.triangles << " triangles)");
     CHECK(chain.splitters == 0);
     CHECK(chain.max_depth > 1000);
     CHECK(split.splitters > 0);
     CHECK(split.max_depth < 300);
     CHECK(fine.max_depth < split.max_depth);
     for (const tool::BspStats* st : {&chain, &split, &fine}) CHECK(st->cells == tool::BspCells::labelled);
-    check("sphere 48x24", ball, true);  // the default options: axis splits
-    ball.camera.eye = {Q16::from_ratio(1, 8), Q16::from_ratio(-1, 16), Q16::from_ratio(1, 32)};  // inside the ball
-    check("sphere 48x24 from inside", ball, true);
+    // An axis plane's origin is one of its polygons' corners: every vertex of the tree is a triangle's (a
+    // stray one would widen Shade::depth's range, which project_vertices() takes over all of them), and a
+    // node without triangles has both children. Also on the models whose trees take axis splits.
+    auto check_tree = [&](const std::string& name, const tool::Scene& s) {
+        INFO(name);
+        tool::BspBuilt built;
+        CHECK(build(s, 256, built).splitters > 0);
+        std::vector<bool> used(built.vertices.size(), false);
+        for (const BspTriangle& t : built.triangles)
+            for (uint32_t v : t.v) used[v] = true;
+        CHECK(std::count(used.begin(), used.end(), false) == 0);
+        for (const BspNode& n : built.nodes)
+            if (n.count == 0) CHECK((n.child[0] != kBspNone && n.child[1] != kBspNone));
+    };
+    check_tree("sphere 48x24", ball);
+    for (const char* model : {"torus.obj", "teapot.obj", "fandisk.obj"}) check_tree(model, test::load_model(model));
+    for (const tool::BspBuilt* t : {&split_tree, &fine_tree}) {
+        const std::vector<uint8_t> blob = tool::bsp_blob(*t, tool::BspFit{ball.centre, ball.scale});
+        const std::string name = t == &split_tree ? "sphere 48x24 --max-chain 256" : "sphere 48x24 --max-chain 16";
+        tool::Scene s = ball;
+        check(name, s, true, &blob);
+        s.camera.eye = {Q16::from_ratio(1, 8), Q16::from_ratio(-1, 16), Q16::from_ratio(1, 32)};  // inside the ball
+        check(name + " from inside", s, true, &blob);
+    }
 }
 
 TEST_CASE("bsp and bsp-front match the z-buffer on every test model" * doctest::test_suite("slow")) {

@@ -119,14 +119,15 @@ Walks check_scene(const std::string& name, const tool::Scene& s, const tool::Bsp
 }  // namespace
 
 TEST_CASE("BSP walks and load fit in depth + 1 stack entries (one per level)") {
-    // The convex sphere without axis splits: a chain of nodes; seen from outside, about half of them
+    // The convex sphere (without axis splits, the default): a chain of nodes; seen from outside, about half of them
     // wait for their back subtree, so the bound is really reached for, not met by a shallow tree.
     const tool::Scene ball = test::uv_sphere(24, 12, 64, 48);
-    tool::BspOptions chain;
-    chain.max_chain = 0;
+    const tool::BspOptions chain;
     const Walks w = check_scene("sphere 24x12, one chain", ball, chain);
     CHECK(w.walk_high * 4 > ball.tris.size());
-    check_scene("sphere 24x12, default options", ball);
+    tool::BspOptions split;
+    split.max_chain = 64;
+    check_scene("sphere 24x12, axis splits", ball, split);
     for (const char* name : {"boxes-6-10", "soup-3-60", "stacked-2-8"}) check_scene(name, test::generated_scene(name));
 }
 

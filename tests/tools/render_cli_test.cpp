@@ -903,7 +903,7 @@ TEST_CASE("hider-bsp reports OBJ errors with the file and the line, like hider-r
     }
 }
 
-TEST_CASE("hider-bsp --max-chain: 0 leaves the chains, the default splits them across an axis, and says how often") {
+TEST_CASE("hider-bsp --max-chain: off by default, N splits the chains across an axis, and --stats says how often") {
     auto depth_and_splits = [](const Args& extra) {
         const Run r = bsp_tool(kTorus, scratch_path("chain.hbsp"), extra);
         INFO("stdout: ", r.out, "stderr: ", r.err);
@@ -914,8 +914,9 @@ TEST_CASE("hider-bsp --max-chain: 0 leaves the chains, the default splits them a
         REQUIRE(std::sscanf(r.out.c_str() + at, "depth %lu largest-node %*u axis-splits %lu", &depth, &splits) == 2);
         return std::make_pair(depth, splits);
     };
-    const auto off = depth_and_splits({"--stats", "--max-chain", "0"}), on = depth_and_splits({"--stats"}),
-               fine = depth_and_splits({"--stats", "--max-chain", "16"});
+    const auto plain = depth_and_splits({"--stats"}), off = depth_and_splits({"--stats", "--max-chain", "0"}),
+               on = depth_and_splits({"--stats", "--max-chain", "256"}), fine = depth_and_splits({"--stats", "--max-chain", "16"});
+    CHECK(plain == off);
     CHECK(off.second == 0);
     CHECK(on.second > 0);
     CHECK(fine.second > on.second);

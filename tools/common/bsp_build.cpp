@@ -295,42 +295,49 @@ private:
         make(bo, back);
     }
 
-    /// A plane across the polygons of `list` that is no polygon's: perpendicular to the longest axis of
-    /// their corners' box, through the median corner on it (a grid point, a vertex of the tree: a node's
-    /// origin is a vertex). Appended to planes_ (with its group, and no face); returns its index.
-    uint32_t splitter(const std::vector<uint32_t>& list) {
-        std::vector<int32_t> coord[3];
+    /// An axis plane across the polygons of `list`: perpendicular to an axis of their corners' box (the
+    /// longest first), through the median corner on it (the plane's origin: that corner's vertex), the
+    /// first that has polygons on both sides. Appended to planes_ (with its group and no face), with its
+    /// classification of `list` in cls; kBspNone (planes_ as it was) when no axis does. Polygons lying in
+    /// the plane, if any, stay in its node as usual.
+    uint32_t splitter(const std::vector<uint32_t>& list, std::vector<int>& cls) {
+        std::vector<std::pair<int32_t, uint32_t>> corner[3];  // (coordinate, vertex) per axis
         for (uint32_t q : list)
             for (uint32_t v : polys_[q].v)
-                for (int k = 0; k < 3; ++k) coord[k].push_back(verts_[v][k]);
-        int axis = 0;
-        int64_t widest = -1;
+                for (int k = 0; k < 3; ++k) corner[k].push_back({verts_[v][static_cast<size_t>(k)], v});
+        int64_t extent[3];
         for (int k = 0; k < 3; ++k) {
-            const auto [lo, hi] = std::minmax_element(coord[k].begin(), coord[k].end());
-            if (int64_t{*hi} - *lo > widest) {
-                widest = int64_t{*hi} - *lo;
-                axis = k;
-            }
+            const auto [lo, hi] = std::minmax_element(corner[k].begin(), corner[k].end());
+            extent[k] = int64_t{hi->first} - lo->first;
         }
-        std::vector<int32_t>& c = coord[axis];
-        std::nth_element(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(c.size() / 2), c.end());
-        P o{0, 0, 0};
-        o[static_cast<size_t>(axis)] = c[c.size() / 2];
-        Plane pl;
-        pl.n[0] = pl.n[1] = pl.n[2] = 0;
-        pl.n[axis] = 1;
-        pl.o = o;
-        pl.origin = vertex(o);
-        planes_.push_back(pl);
-        groups_.push_back(group_of(pl));
-        faces_.push_back(0);
-        return static_cast<uint32_t>(planes_.size() - 1);
+        int order[3] = {0, 1, 2};
+        std::stable_sort(order, order + 3, [&](int a, int b) { return extent[a] > extent[b]; });
+        for (int axis : order) {
+            std::vector<std::pair<int32_t, uint32_t>>& c = corner[axis];
+            std::nth_element(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(c.size() / 2), c.end());
+            const uint32_t origin = c[c.size() / 2].second;
+            Plane pl;
+            pl.n[0] = pl.n[1] = pl.n[2] = 0;
+            pl.n[axis] = 1;
+            pl.o = verts_[origin];
+            pl.origin = origin;
+            planes_.push_back(pl);
+            groups_.push_back(group_of(pl));
+            faces_.push_back(0);
+            const uint32_t index = static_cast<uint32_t>(planes_.size() - 1);
+            classify_all(index, list, cls);
+            if (reaches_both(cls)) return index;
+            planes_.pop_back();
+            groups_.pop_back();
+            faces_.pop_back();
+        }
+        return kBspNone;
     }
 
     /// Splits the polygons of each node by its plane, depth first, in preorder (children after parents).
     /// With opt_.max_chain, a node of more polygons than that whose chosen plane leaves one side empty
     /// (a link of a chain, as every plane of a convex surface does) takes a splitter() plane instead
-    /// when that one has polygons on both sides.
+    /// when one has polygons on both sides.
     void build_tree(std::vector<uint32_t> all) {
         struct Item {
             std::vector<uint32_t> list;
@@ -348,10 +355,9 @@ private:
             uint32_t plane = choose(item.list);
             classify_all(plane, item.list, cls);
             if (opt_.max_chain > 0 && item.list.size() > static_cast<size_t>(opt_.max_chain) && one_sided(cls)) {
-                const uint32_t across = splitter(item.list);
                 std::vector<int> across_cls;
-                classify_all(across, item.list, across_cls);
-                if (reaches_both(across_cls)) {
+                const uint32_t across = splitter(item.list, across_cls);
+                if (across != kBspNone) {
                     plane = across;
                     cls = std::move(across_cls);
                     ++stats_.splitters;

@@ -22,10 +22,10 @@ struct BspOptions {
     int split_weight = 8;
     int balance_weight = 1;
     int candidates = 32;
-    /// 0: off. Else a node of more polygons whose chosen plane leaves one side empty (a chain link: a
-    /// convex surface makes the tree one chain, as deep as its polygons) is split instead by an
-    /// axis-aligned plane through the median corner: a shallower tree (walk stack) for more cuts.
-    int max_chain = 256;
+    /// 0 (default): off. Else a node of more polygons whose chosen plane leaves one side empty (a chain
+    /// link: a convex surface makes the tree one chain, as deep as its polygons) is split instead by an
+    /// axis-aligned plane through a median corner: a shallower tree (walk stack) for more cuts (README).
+    int max_chain = 0;
 };
 
 /// What label_cells() made of a tree's cells.

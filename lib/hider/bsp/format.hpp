@@ -1,8 +1,8 @@
 // The flat BSP format shared by the offline compiler (tools/hider-bsp) and the device: a header, then
 // nodes, triangles and vertices in little-endian arrays, const data in flash or a checked blob. Every
-// node's plane is the exact integer plane of a triangle on the world grid (its normal is the exact cross
-// product of two edges, its origin a vertex), so the device's eye-side test is exact and agrees with
-// every side the compiler decided. Triangles carry their face id; the compiler fixed the T-junctions its
+// node's plane is exact on the world grid: a triangle's (its normal the exact cross product of two edges)
+// or an axis plane (a unit normal), through a vertex, so the device's eye-side test is exact and agrees
+// with every side the compiler decided. Triangles carry their face id; the compiler fixed the T-junctions its
 // cuts made, so the triangles of a face meet without cracks. Nodes and children are indices, children
 // only forward (the tree has no cycle).
 //
