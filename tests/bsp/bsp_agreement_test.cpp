@@ -5,6 +5,7 @@
 // T-junctions of its cuts); bsp-front writes every pixel once. On open edges (soups) a cut point's
 // rounding can move a face's boundary by a fraction of a subpixel, which shows at single edge pixels.
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -153,6 +154,56 @@ TEST_CASE("axis splits keep a convex sphere's tree shallow, its cells labelled a
         s.camera.eye = {Q16::from_ratio(1, 8), Q16::from_ratio(-1, 16), Q16::from_ratio(1, 32)};  // inside the ball
         check(name + " from inside", s, true, &blob);
     }
+}
+
+TEST_CASE("axis splits try the other axes when the longest one's median plane holds a cap") {
+    // A closed cone: apex at x = 5, a ring of 600 at x = -5 and its cap, a fan in the plane x = -5. Most
+    // corners lie in that plane, so the median on x (the longest axis) is the cap's plane, which leaves the
+    // lateral faces on one side: y or z must split the chain instead. (Fans of long thin triangles are
+    // where axis splits cost most: their cuts and T-junction points multiply the triangles, README.)
+    tool::ObjModel m;
+    const int ring = 600;
+    const double pi = 3.14159265358979323846;
+    m.vertices.push_back({5, 0, 0});
+    m.vertices.push_back({-5, 0, 0});
+    for (int i = 0; i < ring; ++i) m.vertices.push_back({-5, 3 * std::cos(2 * pi * i / ring), 3 * std::sin(2 * pi * i / ring)});
+    auto face = [&](int a, int b, int c) {
+        tool::ObjFace f;
+        f.v = {a, b, c};
+        f.id = static_cast<uint32_t>(m.faces.size() + 1);
+        m.faces.push_back(f);
+    };
+    for (int i = 0; i < ring; ++i) {
+        const int p = 2 + i, q = 2 + (i + 1) % ring;
+        face(0, q, p);  // lateral, outward
+        face(1, p, q);  // cap, facing -x
+    }
+    tool::CameraArgs cam;
+    cam.width = 64;
+    cam.height = 48;
+    tool::Scene cone;
+    std::string why;
+    REQUIRE_MESSAGE(tool::build_scene(m, cam, cone, why), why);
+    auto build = [&](int max_chain, tool::BspBuilt& built) {
+        tool::BspOptions opt;
+        opt.max_chain = max_chain;
+        tool::BspStats st;
+        REQUIRE_MESSAGE(tool::build_bsp(cone.positions, cone.tris, cone.ids, opt, built, st, why), why);
+        return st;
+    };
+    tool::BspBuilt plain, split;
+    const tool::BspStats off = build(0, plain), on = build(256, split);
+    MESSAGE("cone: depth " << off.max_depth << " without axis splits, " << on.max_depth << " with 256 (" << on.splitters
+                           << " axis splits, " << on.triangles << " triangles against " << off.triangles << ")");
+    CHECK(on.splitters > 0);
+    CHECK(on.max_depth * 2 < off.max_depth);
+    CHECK(on.cells == tool::BspCells::labelled);
+    std::vector<bool> used(split.vertices.size(), false);
+    for (const BspTriangle& t : split.triangles)
+        for (uint32_t v : t.v) used[v] = true;
+    CHECK(std::count(used.begin(), used.end(), false) == 0);
+    const std::vector<uint8_t> blob = tool::bsp_blob(split, tool::BspFit{cone.centre, cone.scale});
+    check("cone --max-chain 256", cone, true, &blob);
 }
 
 TEST_CASE("bsp and bsp-front match the z-buffer on every test model" * doctest::test_suite("slow")) {
