@@ -8,7 +8,7 @@ endforeach()
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/corpus ${WORK}/artifacts)
 execute_process(
-  # -timeout: a hang, not a slow input (tests/fuzz/slow/ holds one that took over 20 s beside other tests).
+  # -timeout: a hang, not a slow input (tests/data/obj/newell_cycles_fuzz.obj once took over 20 s beside other tests).
   COMMAND ${FUZZER} -max_total_time=${SECONDS} -timeout=60 -rss_limit_mb=2048 -print_final_stats=1
           -artifact_prefix=${WORK}/artifacts/ ${WORK}/corpus ${SEEDS}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

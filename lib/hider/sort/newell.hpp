@@ -149,6 +149,7 @@ private:
                     // (cycles are found from the chain's end), so it makes room.
                     for (size_t i = 1; i < chain_len_; ++i) s_.chain[i - 1] = s_.chain[i];
                     --chain_len_;
+                    tried_chain_ = chain_ - 1;  // break_cycle()'s record of pairs tried names positions
                 }
                 s_.chain[chain_len_++] = act.q;
                 ++ns_.moves;
@@ -275,14 +276,20 @@ private:
     /// cuts the first pair of the cycle (a polygon and the one moved before it, or Q and the candidate)
     /// where one straddles the other's plane, first beyond the rounding slack, then exactly (the slack may
     /// hide a small crossing, which keeps the cycle closed); failing that, any two polygons of the cycle,
-    /// within the pair-test budget. False when none does.
+    /// within the pair-test budget. False when none does. Pairs that an earlier search of the same chain
+    /// tried in vain are skipped (no polygon of a chain changes until it ends), so a long chain that
+    /// closes cycle after cycle does not pay for its square each time.
     bool break_cycle(uint32_t q, Action& act) {
         cycle_too_deep_ = false;
         size_t j = chain_len_;
         while (j-- > 0 && s_.chain[j] != q) {}
+        // Pairs within tried_lo_..tried_hi_ of this chain failed before, and would again.
+        const bool memo = tried_chain_ == chain_;
+        const auto tried = [&](size_t a, size_t b) { return memo && a >= tried_lo_ && b < tried_hi_; };  // a < b
         for (int exact = 0; exact < 2; ++exact)
             for (size_t i = j; i < chain_len_; ++i) {
                 const uint32_t x = s_.chain[i], y = i + 1 < chain_len_ ? s_.chain[i + 1] : q;  // the last pair closes the cycle
+                if (i + 1 < chain_len_ ? tried(i, i + 1) : tried(j, i)) continue;
                 if (cut_straddling(x, y, exact != 0, act) || cut_straddling(y, x, exact != 0, act)) return true;
             }
         // Then any two polygons of the cycle (each try counts as a pair test: a long cycle costs its square).
@@ -290,6 +297,7 @@ private:
             for (size_t i = j; i < chain_len_; ++i)
                 for (size_t k = i + 2; k < chain_len_; ++k) {
                     if (i == j && k + 1 == chain_len_) continue;  // the pair that closes the cycle, tried above
+                    if (tried(i, k)) continue;
                     if (ns_.pair_tests + 2 > budget_) {
                         ns_.budget_exhausted = true;
                         status_ = Status::capacity_exceeded;
@@ -299,6 +307,11 @@ private:
                     const uint32_t x = s_.chain[i], y = s_.chain[k];
                     if (cut_straddling(x, y, exact != 0, act) || cut_straddling(y, x, exact != 0, act)) return true;
                 }
+        if (!cycle_too_deep_ && (!memo || chain_len_ - j > tried_hi_ - tried_lo_)) {
+            tried_chain_ = chain_;
+            tried_lo_ = j;
+            tried_hi_ = chain_len_;
+        }
         return false;
     }
 
@@ -523,6 +536,9 @@ private:
     uint32_t chain_ = 0;
     size_t chain_len_ = 0;  ///< the chain's polygons are scratch.chain[0..chain_len_), the candidate last
     bool cycle_too_deep_ = false;  ///< break_cycle() met a straddling polygon too deep to cut
+    /// break_cycle() found no cut between any two of scratch.chain[tried_lo_..tried_hi_) in chain tried_chain_.
+    uint32_t tried_chain_ = kNone;
+    size_t tried_lo_ = 0, tried_hi_ = 0;
     size_t reorder_count_ = 0;  ///< entries of scratch.reorders in use (pairs a, b: a may go before b)
     Status status_ = Status::ok;
 };
