@@ -66,6 +66,14 @@ void check(const std::string& name, const tool::Scene& s, bool closed, const std
     }
 }
 
+/// Vertices of a tree that no triangle uses.
+size_t unused_vertices(const tool::BspBuilt& built) {
+    std::vector<bool> used(built.vertices.size(), false);
+    for (const BspTriangle& t : built.triangles)
+        for (uint32_t v : t.v) used[v] = true;
+    return static_cast<size_t>(std::count(used.begin(), used.end(), false));
+}
+
 }  // namespace
 
 TEST_CASE("bsp and bsp-front match the z-buffer on closed scenes: boxes, bars, a ground grid and a city inside and out") {
@@ -132,10 +140,7 @@ TEST_CASE("axis splits keep a convex sphere's tree shallow, its cells labelled a
         INFO(name);
         tool::BspBuilt built;
         CHECK(build(s, 256, built).splitters > 0);
-        std::vector<bool> used(built.vertices.size(), false);
-        for (const BspTriangle& t : built.triangles)
-            for (uint32_t v : t.v) used[v] = true;
-        CHECK(std::count(used.begin(), used.end(), false) == 0);
+        CHECK(unused_vertices(built) == 0);
         for (const BspNode& n : built.nodes)
             if (n.count == 0) CHECK((n.child[0] != kBspNone && n.child[1] != kBspNone));
     };
@@ -167,16 +172,10 @@ TEST_CASE("axis splits try the other axes when the longest one's median plane ho
     m.vertices.push_back({5, 0, 0});
     m.vertices.push_back({-5, 0, 0});
     for (int i = 0; i < ring; ++i) m.vertices.push_back({-5, 3 * std::cos(2 * pi * i / ring), 3 * std::sin(2 * pi * i / ring)});
-    auto face = [&](int a, int b, int c) {
-        tool::ObjFace f;
-        f.v = {a, b, c};
-        f.id = static_cast<uint32_t>(m.faces.size() + 1);
-        m.faces.push_back(f);
-    };
     for (int i = 0; i < ring; ++i) {
         const int p = 2 + i, q = 2 + (i + 1) % ring;
-        face(0, q, p);  // lateral, outward
-        face(1, p, q);  // cap, facing -x
+        test::add_face(m, 0, q, p);  // lateral, outward
+        test::add_face(m, 1, p, q);  // cap, facing -x
     }
     tool::CameraArgs cam;
     cam.width = 64;
@@ -198,10 +197,7 @@ TEST_CASE("axis splits try the other axes when the longest one's median plane ho
     CHECK(on.splitters > 0);
     CHECK(on.max_depth * 2 < off.max_depth);
     CHECK(on.cells == tool::BspCells::labelled);
-    std::vector<bool> used(split.vertices.size(), false);
-    for (const BspTriangle& t : split.triangles)
-        for (uint32_t v : t.v) used[v] = true;
-    CHECK(std::count(used.begin(), used.end(), false) == 0);
+    CHECK(unused_vertices(split) == 0);
     const std::vector<uint8_t> blob = tool::bsp_blob(split, tool::BspFit{cone.centre, cone.scale});
     check("cone --max-chain 256", cone, true, &blob);
 }

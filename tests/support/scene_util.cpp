@@ -137,6 +137,13 @@ tool::Scene generated_scene(const std::string& name) {
     return s;
 }
 
+void add_face(tool::ObjModel& m, int a, int b, int c) {
+    tool::ObjFace f;
+    f.v = {a, b, c};
+    f.id = static_cast<uint32_t>(m.faces.size() + 1);
+    m.faces.push_back(f);
+}
+
 tool::Scene uv_sphere(int slices, int stacks, int width, int height) {
     tool::ObjModel m;
     const double pi = 3.14159265358979323846;
@@ -149,12 +156,7 @@ tool::Scene uv_sphere(int slices, int stacks, int width, int height) {
     m.vertices.push_back({0, -1, 0});
     const int south = static_cast<int>(m.vertices.size()) - 1;
     auto at = [&](int i, int j) { return 1 + (i - 1) * slices + (j % slices); };
-    auto face = [&](int a, int b, int c) {
-        tool::ObjFace f;
-        f.v = {a, b, c};
-        f.id = static_cast<uint32_t>(m.faces.size() + 1);
-        m.faces.push_back(f);
-    };
+    auto face = [&](int a, int b, int c) { add_face(m, a, b, c); };
     for (int j = 0; j < slices; ++j) face(0, at(1, j + 1), at(1, j));
     for (int i = 1; i + 1 < stacks; ++i)
         for (int j = 0; j < slices; ++j) {

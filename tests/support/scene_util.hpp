@@ -38,6 +38,10 @@ Defects count_defects(const std::vector<uint32_t>& ids, const std::vector<uint32
 /// A generated scene (tools/common/gen_scenes.hpp) as hider sees it, faces kept whole.
 tool::Scene generated_scene(const std::string& name);
 
+/// Appends triangle a, b, c (0-based vertex indices, counter-clockwise seen from its front) to m, with
+/// the next face id.
+void add_face(tool::ObjModel& m, int a, int b, int c);
+
 /// A closed UV sphere of `slices` x `stacks` (poles as fans, outward faces), framed by build_scene() at
 /// width x height from the default camera: a convex surface, whose every plane has all others behind it.
 tool::Scene uv_sphere(int slices, int stacks, int width, int height);
