@@ -1,93 +1,39 @@
 // Newell, Newell & Sancha (1972). Polygons leave farthest first (largest zmax): from the depth-sorted input,
-// or from a heap for the polygons that wait again (moved back, or pieces of a cut). The candidate P is
-// compared with every waiting Q whose screen box can overlap its own (a grid, grid.hpp) and whose depth
-// range overlaps, cheapest test first: boxes, P behind Q's plane, Q in front of P's plane, projections
-// disjoint. When all fail and Q must come first, Q becomes the candidate and P waits again; a Q moved
-// twice in one chain of moves means a cycle, cut by the plane between them. Polygons that pierce each
-// other are cut along their intersection when first compared, both of them. A cut makes two pieces that
-// keep their parent's exact edges (cut.hpp, raster/piece.hpp: no cracks), and each piece remembers the
-// plane that cut it and its side of it, so no pair is cut twice. A cycle no cut breaks is ordered by
-// the pixel centres its pairs share (pixel_order.hpp): its closing pair stays as found when they agree,
-// else the cycle is broken at a pair of it they allow. Work is bounded: the caller's pools bound the
-// pieces, a budget the pair tests. Plane tests are exact 128-bit sums with a slack for the
-// rounding of cut points; polygons of one face (NewellOptions) are never ordered against each other.
+// or from a heap for the polygons that wait again (moved back, or pieces of a cut): newell_queue.hpp. The
+// candidate P is compared with every waiting Q whose screen box can overlap its own (a grid, grid.hpp) and
+// whose depth range overlaps, cheapest test first: boxes, P behind Q's plane, Q in front of P's plane,
+// projections disjoint. When all fail and Q must come first, Q becomes the candidate and P waits again; a Q
+// moved twice in one chain of moves means a cycle, cut by the plane between them. Polygons that pierce each
+// other are cut along their intersection when first compared, both of them. A cut makes two pieces that keep
+// their parent's exact edges (cut.hpp, raster/piece.hpp: no cracks), and each piece remembers the plane that
+// cut it and its side of it, so no pair is cut twice. A cycle no cut breaks is ordered by the pixel centres
+// its pairs share (pixel_order.hpp): its closing pair stays as found when they agree, else the cycle is
+// broken at a pair of it they allow. Work is bounded: the caller's pools bound the pieces, a budget the pair
+// tests. Plane tests are exact 128-bit sums with a slack for the rounding of cut points; polygons of one face
+// (NewellOptions) are never ordered against each other.
 #pragma once
 #include <hider/sort/cut.hpp>
 #include <hider/sort/grid.hpp>
-#include <hider/sort/painter.hpp>
+#include <hider/sort/newell_queue.hpp>
+#include <hider/sort/newell_types.hpp>
 #include <hider/sort/piece_box.hpp>
 #include <hider/sort/pixel_order.hpp>
 
 namespace hider {
 
-struct NewellStats {
-    uint64_t pair_tests = 0;        ///< pairs whose boxes may overlap and whose depth ranges overlap, and
-                                    ///< two per pair of a cycle tried for a cut beyond its consecutive pairs
-    uint32_t moves = 0;             ///< Q moved before P
-    uint32_t splits = 0;            ///< polygons cut in two by another's plane
-    uint32_t cycles = 0;            ///< cycles of overlap found (each broken by a cut when possible)
-    uint32_t unresolved = 0;        ///< pairs left in the order found: no cut, and their shared pixels
-                                    ///< disagree (a cycle with NewellScratch::reorders full, or a piercing pair
-                                    ///< no line cuts), or the limits below (all capacity_exceeded)
-    uint32_t pixel_ordered = 0;     ///< pairs no cut could order, ordered by the pixel centres they share
-    uint32_t reorders_peak = 0;     ///< most words of NewellScratch::reorders in use at once: when no pair
-                                    ///< is unresolved, an array of this size repeats the run (sizing it)
-    uint32_t dropped = 0;           ///< cuts not made because the polygon or cut pool was full
-    uint32_t too_deep = 0;          ///< cuts not made because a piece already had kMaxPieceCuts cuts
-    uint32_t inexact_cuts = 0;      ///< cuts made along a line that puts a pixel centre on the wrong side
-                                    ///< of the plane (CutResult::cut_inexact; capacity_exceeded)
-    bool budget_exhausted = false;  ///< the pair-test budget ran out; the rest went in depth order
-};
-
-/// Default pair-test budget per polygon of the pool (see NewellOptions).
-constexpr uint64_t kNewellTestsPerPolygon = 1024;
-
-struct NewellOptions {
-    /// The face of each mesh triangle (Mesh::ids), or empty. Polygons of one face are taken as coplanar
-    /// and never ordered against each other (nor cut): a fan of a large flat face costs no cuts.
-    Span<const uint32_t> face_ids;
-    /// Most pair tests one call may run; 0 = kNewellTestsPerPolygon x polys.capacity() + 65536.
-    /// Past it the remaining polygons go out in depth order, and the result is capacity_exceeded.
-    uint64_t max_pair_tests = 0;
-};
-
-/// Caller memory of newell_order() besides the pools, for a polygon pool of capacity N holding n polygons.
-struct NewellScratch {
-    Span<SortKey> keys;       ///< >= n (the polygons sorted by depth once, radix_sort)
-    Span<SortKey> sort_scratch;  ///< >= n
-    Span<uint32_t> heap;      ///< >= N
-    Span<uint32_t> heap_pos;  ///< >= N
-    Span<uint32_t> links;     ///< >= 2 N (the grid)
-    Span<uint32_t> cells;     ///< >= grid_cells(width, height)
-    Span<uint32_t> chain;     ///< >= N (the polygons of the current chain of moves)
-    /// Two entries per pair at which a cycle was broken by its pixels while both wait (any size, 0 too;
-    /// kNewellReorders is plenty: a cycle that finds it full stays unresolved, capacity_exceeded).
-    Span<uint32_t> reorders;
-};
-
-/// NewellScratch::reorders entries for 8 pairs at once (the sweeps of README.md never held more than 4).
-constexpr size_t kNewellReorders = 16;
-
 namespace detail {
 
-/// One run of newell_order over caller storage.
-class Newell {
+/// One run of newell_order over caller storage; candidates come from the queue it extends.
+class Newell : NewellQueue {
 public:
-    static constexpr uint32_t kNone = 0xFFFFFFFFu;
-
     Newell(BoundedList<ScreenPoly>& polys, BoundedList<PieceCut>& cuts, const NewellScratch& s, BoundedList<uint32_t>& order,
            NewellStats& ns, uint64_t budget, Span<const uint32_t> faces, int32_t width, int32_t height)
-        : polys_(polys), cuts_(cuts), s_(s), order_(order), ns_(ns), budget_(budget), faces_(faces), width_(width), height_(height) {}
+        : NewellQueue(polys, s), cuts_(cuts), order_(order), ns_(ns), budget_(budget), faces_(faces), width_(width), height_(height) {}
 
     Status run(const ScreenGrid& grid_setup) {
         grid_ = grid_setup;
-        n_ = polys_.size();
-        for (uint32_t i = 0; i < n_; ++i) {
-            s_.keys[i] = {~polys_[i].zmax, i};  // ascending ~zmax: farthest first, ties by index
-            s_.heap_pos[i] = kPending;
-        }
-        radix_sort({s_.keys.data(), n_}, {s_.sort_scratch.data(), n_});
-        for (size_t i = n_; i-- > 0;) grid_.insert(s_.keys[i].index, polys_[s_.keys[i].index], polys_.data());  // nearest first: each goes to its cell's head
+        const Span<const SortKey> sorted = start();
+        for (size_t i = sorted.size(); i-- > 0;) grid_.insert(sorted[i].index, polys_[sorted[i].index], polys_.data());  // nearest first: each goes to its cell's head
         uint32_t cur = kNone;
         for (;;) {
             if (cur == kNone && (cur = next()) == kNone) break;
@@ -140,7 +86,7 @@ private:
                 finish(cur);
                 return kNone;
             case Action::move:  // Q becomes the candidate; P waits again at its depth
-                heap_remove(act.q);
+                dequeue(act.q);
                 push(cur);
                 polys_[act.q].moved_at = chain_;
                 if (chain_len_ == s_.chain.size()) {
@@ -149,16 +95,15 @@ private:
                     // (cycles are found from the chain's end), so it makes room.
                     for (size_t i = 1; i < chain_len_; ++i) s_.chain[i - 1] = s_.chain[i];
                     --chain_len_;
-                    tried_chain_ = chain_ - 1;  // break_cycle()'s record of pairs tried names positions
+                    tried_lo_ = tried_hi_ = 0;  // break_cycle()'s record names positions, now shifted
                 }
                 s_.chain[chain_len_++] = act.q;
                 ++ns_.moves;
                 return act.q;
             case Action::restart:  // a cycle broken at a pair its pixels order: q starts a fresh chain
-                heap_remove(act.q);
+                dequeue(act.q);
                 push(cur);
-                ++chain_;
-                chain_len_ = 0;
+                new_chain();
                 s_.chain[chain_len_++] = act.q;
                 return act.q;
             case Action::cut: {
@@ -284,8 +229,7 @@ private:
         size_t j = chain_len_;
         while (j-- > 0 && s_.chain[j] != q) {}
         // Pairs within tried_lo_..tried_hi_ of this chain failed before, and would again.
-        const bool memo = tried_chain_ == chain_;
-        const auto tried = [&](size_t a, size_t b) { return memo && a >= tried_lo_ && b < tried_hi_; };  // a < b
+        const auto tried = [this](size_t a, size_t b) { return a >= tried_lo_ && b < tried_hi_; };  // a < b
         for (int exact = 0; exact < 2; ++exact)
             for (size_t i = j; i < chain_len_; ++i) {
                 const uint32_t x = s_.chain[i], y = i + 1 < chain_len_ ? s_.chain[i + 1] : q;  // the last pair closes the cycle
@@ -307,8 +251,7 @@ private:
                     const uint32_t x = s_.chain[i], y = s_.chain[k];
                     if (cut_straddling(x, y, exact != 0, act) || cut_straddling(y, x, exact != 0, act)) return true;
                 }
-        if (!cycle_too_deep_ && (!memo || chain_len_ - j > tried_hi_ - tried_lo_)) {
-            tried_chain_ = chain_;
+        if (!cycle_too_deep_ && chain_len_ - j > tried_hi_ - tried_lo_) {
             tried_lo_ = j;
             tried_hi_ = chain_len_;
         }
@@ -409,7 +352,7 @@ private:
     void replace(uint32_t id, const ScreenPoly& far, const ScreenPoly& near, const PieceCut& far_cut, const PieceCut& near_cut,
                  bool in_heap) {
         grid_.remove(id, polys_[id]);
-        if (in_heap) heap_remove(id);
+        if (in_heap) dequeue(id);
         ScreenPoly f = far, n = near;  // boxes that hold every pixel the pieces draw
         piece_box(polys_[id], cuts(), far_cut.line, f);
         piece_box(polys_[id], cuts(), near_cut.line, n);
@@ -423,8 +366,7 @@ private:
         (void)added;
         const uint32_t other = static_cast<uint32_t>(polys_.size() - 1);
         ++ns_.splits;
-        ++chain_;  // the pieces start a fresh chain of moves
-        chain_len_ = 0;
+        new_chain();  // the pieces start a fresh chain of moves
         grid_.insert(id, polys_[id], polys_.data());
         grid_.insert(other, polys_[other], polys_.data());
         push(id);
@@ -444,100 +386,32 @@ private:
                 i += 2;
             }
         grid_.remove(id, polys_[id]);
+        new_chain();
+    }
+
+    /// Ends the chain of moves (a polygon drawn, a cut, a restart): the next candidate starts another.
+    void new_chain() {
         ++chain_;
         chain_len_ = 0;
+        tried_lo_ = tried_hi_ = 0;  // nothing tried in it yet
     }
 
     // always_inline: at -Os it would otherwise become a call, paid at every use in the pair tests.
     __attribute__((always_inline)) Span<const PieceCut> cuts() const { return {cuts_.data(), cuts_.size()}; }
 
-    /// The next candidate: the farther of the sorted input's next waiting polygon and the heap's top
-    /// (kNone when both are empty). Input entries of polygons moved or cut since are skipped.
-    uint32_t next() {
-        while (pend_ < n_ && s_.heap_pos[s_.keys[pend_].index] != kPending) ++pend_;
-        if (pend_ < n_ && (heap_size_ == 0 || before(s_.keys[pend_].index, s_.heap[0]))) {
-            const uint32_t id = s_.keys[pend_++].index;
-            s_.heap_pos[id] = kNone;
-            return id;
-        }
-        return heap_size_ != 0 ? pop() : kNone;
-    }
-
-    // Indexed binary max-heap of polygon indices by (zmax, then lower index first). heap_pos[id] is the
-    // position, kPending for a polygon still waiting in the sorted input, kNone for the candidate or
-    // one already out.
-    bool before(uint32_t a, uint32_t b) const {
-        const uint32_t za = polys_[a].zmax, zb = polys_[b].zmax;
-        return za > zb || (za == zb && a < b);
-    }
-    void place(size_t pos, uint32_t id) {
-        s_.heap[pos] = id;
-        s_.heap_pos[id] = static_cast<uint32_t>(pos);
-    }
-    void sift_up(size_t pos) {
-        const uint32_t id = s_.heap[pos];
-        while (pos > 0 && before(id, s_.heap[(pos - 1) / 2])) {
-            place(pos, s_.heap[(pos - 1) / 2]);
-            pos = (pos - 1) / 2;
-        }
-        place(pos, id);
-    }
-    void sift_down(size_t pos) {
-        const uint32_t id = s_.heap[pos];
-        for (;;) {
-            size_t child = 2 * pos + 1;
-            if (child >= heap_size_) break;
-            if (child + 1 < heap_size_ && before(s_.heap[child + 1], s_.heap[child])) ++child;
-            if (!before(s_.heap[child], id)) break;
-            place(pos, s_.heap[child]);
-            pos = child;
-        }
-        place(pos, id);
-    }
-    void push(uint32_t id) {
-        place(heap_size_++, id);
-        sift_up(heap_size_ - 1);
-    }
-    uint32_t pop() {
-        const uint32_t top = s_.heap[0];
-        s_.heap_pos[top] = kNone;
-        if (--heap_size_ != 0) {
-            place(0, s_.heap[heap_size_]);
-            sift_down(0);
-        }
-        return top;
-    }
-    void heap_remove(uint32_t id) {
-        const size_t pos = s_.heap_pos[id];
-        s_.heap_pos[id] = kNone;
-        if (pos == kPending) return;  // its sorted-input entry is now stale
-        if (pos == --heap_size_) return;
-        const uint32_t last = s_.heap[heap_size_];
-        place(pos, last);
-        sift_up(pos);
-        sift_down(s_.heap_pos[last]);
-    }
-
-    BoundedList<ScreenPoly>& polys_;
     BoundedList<PieceCut>& cuts_;
-    const NewellScratch& s_;
     BoundedList<uint32_t>& order_;
     NewellStats& ns_;
     uint64_t budget_;
     Span<const uint32_t> faces_;
     int32_t width_, height_;
     ScreenGrid grid_;
-    static constexpr uint32_t kPending = 0xFFFFFFFEu;
-    size_t n_ = 0;          ///< polygons in the sorted input (the built ones)
-    size_t pend_ = 0;       ///< next entry of the sorted input
-    size_t heap_size_ = 0;
     /// Moves since the last output or cut form a chain (Q before P, R before Q, ...): a polygon moved
     /// twice in one chain closes a cycle. A polygon's moved_at holds the chain it was last moved in.
     uint32_t chain_ = 0;
     size_t chain_len_ = 0;  ///< the chain's polygons are scratch.chain[0..chain_len_), the candidate last
     bool cycle_too_deep_ = false;  ///< break_cycle() met a straddling polygon too deep to cut
-    /// break_cycle() found no cut between any two of scratch.chain[tried_lo_..tried_hi_) in chain tried_chain_.
-    uint32_t tried_chain_ = kNone;
+    /// break_cycle() found no cut between any two of scratch.chain[tried_lo_..tried_hi_) in this chain.
     size_t tried_lo_ = 0, tried_hi_ = 0;
     size_t reorder_count_ = 0;  ///< entries of scratch.reorders in use (pairs a, b: a may go before b)
     Status status_ = Status::ok;
