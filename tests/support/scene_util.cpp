@@ -156,14 +156,13 @@ tool::Scene uv_sphere(int slices, int stacks, int width, int height) {
     m.vertices.push_back({0, -1, 0});
     const int south = static_cast<int>(m.vertices.size()) - 1;
     auto at = [&](int i, int j) { return 1 + (i - 1) * slices + (j % slices); };
-    auto face = [&](int a, int b, int c) { add_face(m, a, b, c); };
-    for (int j = 0; j < slices; ++j) face(0, at(1, j + 1), at(1, j));
+    for (int j = 0; j < slices; ++j) add_face(m, 0, at(1, j + 1), at(1, j));
     for (int i = 1; i + 1 < stacks; ++i)
         for (int j = 0; j < slices; ++j) {
-            face(at(i, j), at(i, j + 1), at(i + 1, j + 1));
-            face(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+            add_face(m, at(i, j), at(i, j + 1), at(i + 1, j + 1));
+            add_face(m, at(i, j), at(i + 1, j + 1), at(i + 1, j));
         }
-    for (int j = 0; j < slices; ++j) face(south, at(stacks - 1, j), at(stacks - 1, j + 1));
+    for (int j = 0; j < slices; ++j) add_face(m, south, at(stacks - 1, j), at(stacks - 1, j + 1));
     tool::CameraArgs cam;
     cam.width = width;
     cam.height = height;

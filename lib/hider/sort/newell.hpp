@@ -24,16 +24,18 @@ namespace hider {
 namespace detail {
 
 /// One run of newell_order over caller storage; candidates come from the queue it extends.
-class Newell : NewellQueue {
+class Newell : private NewellQueue {
 public:
     Newell(BoundedList<ScreenPoly>& polys, BoundedList<PieceCut>& cuts, const NewellScratch& s, BoundedList<uint32_t>& order,
            NewellStats& ns, uint64_t budget, Span<const uint32_t> faces, int32_t width, int32_t height)
-        : NewellQueue(polys, s), cuts_(cuts), order_(order), ns_(ns), budget_(budget), faces_(faces), width_(width), height_(height) {}
+        : NewellQueue(polys, s), cuts_(cuts), order_(order), ns_(ns), budget_(budget), faces_(faces), width_(width),
+          height_(height) {}
 
     Status run(const ScreenGrid& grid_setup) {
         grid_ = grid_setup;
         const Span<const SortKey> sorted = start();
-        for (size_t i = sorted.size(); i-- > 0;) grid_.insert(sorted[i].index, polys_[sorted[i].index], polys_.data());  // nearest first: each goes to its cell's head
+        for (size_t i = sorted.size(); i-- > 0;)  // nearest first: each goes to its cell's head
+            grid_.insert(sorted[i].index, polys_[sorted[i].index], polys_.data());
         uint32_t cur = kNone;
         for (;;) {
             if (cur == kNone && (cur = next()) == kNone) break;
@@ -221,13 +223,14 @@ private:
     /// cuts the first pair of the cycle (a polygon and the one moved before it, or Q and the candidate)
     /// where one straddles the other's plane, first beyond the rounding slack, then exactly (the slack may
     /// hide a small crossing, which keeps the cycle closed); failing that, any two polygons of the cycle,
-    /// within the pair-test budget. False when none does. Pairs that an earlier search of the same chain
-    /// tried in vain are skipped (no polygon of a chain changes until it ends), so a long chain that
-    /// closes cycle after cycle does not pay for its square each time.
+    /// within the pair-test budget. False when none does. The pairs of the longest earlier search of the
+    /// same chain that found no cut are skipped (no polygon of a chain changes until it ends), so a long
+    /// chain that closes cycle after cycle does not pay for its square each time.
     bool break_cycle(uint32_t q, Action& act) {
         cycle_too_deep_ = false;
         size_t j = chain_len_;
         while (j-- > 0 && s_.chain[j] != q) {}
+        if (j >= chain_len_) return false;  // q is always in the chain (moved in it); kept safe all the same
         // Pairs within tried_lo_..tried_hi_ of this chain failed before, and would again.
         const auto tried = [this](size_t a, size_t b) { return a >= tried_lo_ && b < tried_hi_; };  // a < b
         for (int exact = 0; exact < 2; ++exact)
@@ -411,7 +414,7 @@ private:
     uint32_t chain_ = 0;
     size_t chain_len_ = 0;  ///< the chain's polygons are scratch.chain[0..chain_len_), the candidate last
     bool cycle_too_deep_ = false;  ///< break_cycle() met a straddling polygon too deep to cut
-    /// break_cycle() found no cut between any two of scratch.chain[tried_lo_..tried_hi_) in this chain.
+    /// The longest search of this chain by break_cycle() that found no cut: scratch.chain[tried_lo_..tried_hi_).
     size_t tried_lo_ = 0, tried_hi_ = 0;
     size_t reorder_count_ = 0;  ///< entries of scratch.reorders in use (pairs a, b: a may go before b)
     Status status_ = Status::ok;

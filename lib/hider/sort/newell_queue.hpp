@@ -1,9 +1,10 @@
 // Newell's candidate queue (newell.hpp): polygons leave farthest first (largest zmax, then lower index),
 // from the input sorted once by depth (radix sort) merged with an indexed binary max-heap of the
-// polygons that wait again (moved back behind another, or pieces of a cut). No storage of its own
-// beyond three counts: the arrays are the caller's NewellScratch (keys, sort_scratch, heap, heap_pos).
+// polygons that wait again (moved back behind another, or pieces of a cut). Three counts of its own; the
+// arrays are the caller's NewellScratch (keys, sort_scratch, heap, heap_pos).
 #pragma once
 #include <hider/sort/newell_types.hpp>
+#include <hider/sort/painter.hpp>
 
 namespace hider::detail {
 

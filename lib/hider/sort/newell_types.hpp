@@ -1,7 +1,7 @@
 // Newell's caller-facing types (newell.hpp): the statistics a run reports, its options (face ids, the
 // pair-test budget) and the scratch arrays the caller owns, with the sizes newell_order() checks.
 #pragma once
-#include <hider/sort/painter.hpp>  // SortKey, radix_sort
+#include <hider/sort/painter.hpp>  // SortKey
 
 namespace hider {
 
@@ -50,7 +50,7 @@ struct NewellScratch {
     Span<uint32_t> reorders;
 };
 
-/// NewellScratch::reorders entries for 8 pairs at once (the sweeps of README.md never held more than 4).
+/// NewellScratch::reorders entries for 8 pairs at once (README.md says what the sweeps needed).
 constexpr size_t kNewellReorders = 16;
 
 }  // namespace hider
