@@ -60,15 +60,8 @@ void check_against_zbuffer(const tool::Scene& s, const std::string& name, bool c
 }
 
 std::vector<std::pair<std::string, tool::Scene>> hard_scenes() {
-    std::vector<std::pair<std::string, tool::Scene>> out;
-    for (const ref::RefScene& rs : {ref::cyclic_bars(), ref::piercing(), ref::boxes(6, 10), ref::soup(1, 300),
-                                    ref::soup(8, 1000), ref::slivers(3, 200), ref::huge_triangles(4), ref::huge_triangles(7)}) {
-        tool::Scene s;
-        std::string why;
-        REQUIRE_MESSAGE(test::scene_from_ref(rs, s, why), why);
-        out.push_back({rs.name, s});
-    }
-    return out;
+    return test::scenes_from_ref({ref::cyclic_bars(), ref::piercing(), ref::boxes(6, 10), ref::soup(1, 300),
+                                  ref::soup(8, 1000), ref::slivers(3, 200), ref::huge_triangles(4), ref::huge_triangles(7)});
 }
 
 }  // namespace

@@ -17,24 +17,9 @@
 #include "support/scene_util.hpp"
 
 using namespace hider;
+using hider::test::render_ids;
 
 namespace {
-
-tool::RenderResult render_ids(const tool::Scene& s, tool::Algo algo, bool cull, int depth_bits = 32, int band = 0) {
-    tool::RenderOptions opt;
-    opt.algo = algo;
-    opt.cull = cull;
-    opt.shade = Shade::id;
-    opt.format = tool::PixelFormat::rgb888;
-    opt.depth_bits = depth_bits;
-    opt.band_rows = band;
-    tool::RenderResult r;
-    std::string why;
-    const bool ok = tool::render(s, opt, r, why);
-    REQUIRE_MESSAGE(ok, why);
-    return r;
-}
-
 
 /// Newell and the reverse painter against the z-buffer on one scene; returns Newell's statistics.
 NewellStats check_ids(const tool::Scene& s, const std::string& name, bool cull) {

@@ -69,17 +69,34 @@ ref::RefCamera ref_camera(const tool::Scene& s) {
             tool::to_double(c.far), s.width, s.height};
 }
 
-std::vector<uint32_t> hider_ids(const tool::Scene& s, bool cull, int depth_bits) {
+std::vector<std::pair<std::string, tool::Scene>> scenes_from_ref(const std::vector<ref::RefScene>& scenes) {
+    std::vector<std::pair<std::string, tool::Scene>> out;
+    for (const ref::RefScene& rs : scenes) {
+        tool::Scene s;
+        std::string why;
+        REQUIRE_MESSAGE(scene_from_ref(rs, s, why), why);
+        out.push_back({rs.name, s});
+    }
+    return out;
+}
+
+tool::RenderResult render_ids(const tool::Scene& s, tool::Algo algo, bool cull, int depth_bits, int band) {
     tool::RenderOptions opt;
+    opt.algo = algo;
+    opt.cull = cull;
     opt.shade = Shade::id;
     opt.format = tool::PixelFormat::rgb888;
-    opt.cull = cull;
     opt.depth_bits = depth_bits;
+    opt.band_rows = band;
     tool::RenderResult r;
     std::string why;
     const bool ok = tool::render(s, opt, r, why);
     REQUIRE_MESSAGE(ok, why);
-    return tool::decode_ids(r);
+    return r;
+}
+
+std::vector<uint32_t> hider_ids(const tool::Scene& s, bool cull, int depth_bits) {
+    return tool::decode_ids(render_ids(s, tool::Algo::zbuffer, cull, depth_bits));
 }
 
 std::vector<int> coverage_counts(const tool::Scene& s, bool cull) {

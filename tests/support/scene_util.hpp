@@ -2,6 +2,7 @@
 // exact values hider works with (fixed positions and camera), so agreement tests measure the renderer.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/render.hpp"
@@ -20,6 +21,12 @@ tool::Scene load_model(const std::string& name, const tool::CameraArgs& cam = {}
 /// The triangles and camera exactly as hider sees them, in double.
 std::vector<ref::RefTriangle> ref_triangles(const tool::Scene& s);
 ref::RefCamera ref_camera(const tool::Scene& s);
+
+/// Generated reference scenes as hider sees them (scene_from_ref, REQUIREd), with their names.
+std::vector<std::pair<std::string, tool::Scene>> scenes_from_ref(const std::vector<ref::RefScene>& scenes);
+
+/// The face-id frame (RGB888, Shade::id; decode with tool::decode_ids) of one algorithm, REQUIREd to render.
+tool::RenderResult render_ids(const tool::Scene& s, tool::Algo algo, bool cull, int depth_bits = 32, int band = 0);
 
 /// Face-id image rendered by hider (z-buffer) for the scene.
 std::vector<uint32_t> hider_ids(const tool::Scene& s, bool cull, int depth_bits = 16);
