@@ -21,6 +21,21 @@ using hider::test::render_ids;
 
 namespace {
 
+/// Generated scene g framed from inside: the eye within half a unit of its target on each axis, looking
+/// within 2 units of it (offsets from rng, the same on every library), in a frame of width x height.
+bool scene_from_inside(const tool::gen::GenScene& g, std::mt19937& rng, int width, int height, tool::Scene& s) {
+    auto u = [&rng] { return (static_cast<int>(rng() % 1001) - 500) / 1000.0; };
+    tool::CameraArgs args = tool::gen::camera_args(g);
+    args.width = width;
+    args.height = height;
+    const tool::gen::P3 c = g.target;
+    const double ex = u(), ey = u(), ez = u(), tx = u(), ty = u(), tz = u();
+    args.eye = tool::Vec3d{c.x + ex, c.y + ey, c.z + ez};
+    args.target = tool::Vec3d{c.x + 4 * tx, c.y + 4 * ty, c.z + 4 * tz};
+    std::string why;
+    return tool::build_scene(tool::gen::obj_model(g), args, s, why);
+}
+
 /// Newell and the reverse painter against the z-buffer on one scene; returns Newell's statistics.
 NewellStats check_ids(const tool::Scene& s, const std::string& name, bool cull) {
     NewellStats newell;
@@ -138,17 +153,8 @@ TEST_CASE("Newell and the reverse painter render band by band exactly on soups a
     for (uint32_t seed = first; seed <= last; ++seed) {
         tool::gen::GenScene g = seed % 2 == 0 ? tool::gen::soup(seed, 40) : tool::gen::mikado(seed, 30);
         std::mt19937 rng(seed);
-        auto u = [](std::mt19937& r) { return (static_cast<int>(r() % 1001) - 500) / 1000.0; };  // same on every library
-        tool::CameraArgs args = tool::gen::camera_args(g);
-        args.width = 40;
-        args.height = 30;
-        const tool::gen::P3 c = g.target;
-        const double ex = u(rng), ey = u(rng), ez = u(rng), tx = u(rng), ty = u(rng), tz = u(rng);
-        args.eye = tool::Vec3d{c.x + ex, c.y + ey, c.z + ez};
-        args.target = tool::Vec3d{c.x + 4 * tx, c.y + 4 * ty, c.z + 4 * tz};
         tool::Scene s;
-        std::string why;
-        if (!tool::build_scene(tool::gen::obj_model(g), args, s, why)) continue;
+        if (!scene_from_inside(g, rng, 40, 30, s)) continue;
         for (bool cull : {true, false})
             for (tool::Algo algo : {tool::Algo::newell, tool::Algo::reverse}) {
                 const tool::RenderResult whole = render_ids(s, algo, cull);
@@ -244,18 +250,9 @@ TEST_CASE("Newell and the reverse painter match the exact reference in tiny fram
                                       : seed % 3 == 1 ? tool::gen::mikado(seed, 30)
                                                       : tool::gen::dense_soup(seed, 40);
         std::mt19937 rng(seed * 7 + 1);
-        auto u = [](std::mt19937& r) { return (static_cast<int>(r() % 1001) - 500) / 1000.0; };  // same on every library
-        tool::CameraArgs args = tool::gen::camera_args(g);
         const int sizes[3][2] = {{24, 17}, {16, 12}, {32, 24}};
-        args.width = sizes[seed % 3][0];
-        args.height = sizes[seed % 3][1];
-        const tool::gen::P3 c = g.target;
-        const double ex = u(rng), ey = u(rng), ez = u(rng), tx = u(rng), ty = u(rng), tz = u(rng);
-        args.eye = tool::Vec3d{c.x + ex, c.y + ey, c.z + ez};
-        args.target = tool::Vec3d{c.x + 4 * tx, c.y + 4 * ty, c.z + 4 * tz};
         tool::Scene s;
-        std::string why;
-        if (!tool::build_scene(tool::gen::obj_model(g), args, s, why)) continue;
+        if (!scene_from_inside(g, rng, sizes[seed % 3][0], sizes[seed % 3][1], s)) continue;
         for (bool cull : {true, false}) {
             const std::vector<uint32_t> exact = ref::render_ids(test::ref_triangles(s), test::ref_camera(s), cull);
             const std::vector<uint32_t> zi = tool::decode_ids(render_ids(s, tool::Algo::zbuffer, cull));

@@ -403,7 +403,10 @@ private:
         return s;
     }
     /// Polygons on one side only: a chain link (none on either: all in the plane, a leaf).
-    static bool one_sided(const std::vector<int>& cls) { return sides(cls) == 1 || sides(cls) == 2; }
+    static bool one_sided(const std::vector<int>& cls) {
+        const int s = sides(cls);
+        return s == 1 || s == 2;
+    }
     static bool reaches_both(const std::vector<int>& cls) { return sides(cls) == 3; }
 
     /// Every point made on an edge's line between its ends joins the edge, in order along it.
