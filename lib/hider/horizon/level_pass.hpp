@@ -51,12 +51,7 @@ inline void level_pass_portable(const LevelPass& p) {
 __attribute__((naked, noinline)) inline void level_pass_v6m(const LevelPass*) {
     __asm__ volatile(
         ".syntax unified\n\t"
-        "push   {r4-r7, lr}\n\t"
-        "mov    r4, r8\n\t"
-        "mov    r5, r9\n\t"
-        "mov    r6, r10\n\t"
-        "mov    r7, r11\n\t"
-        "push   {r4-r7}\n\t"
+        HIDER_V6M_SAVE_ALL
         "ldr    r1, [r0, #20]\n\t"        // du
         "mov    r8, r1\n\t"
         "ldr    r1, [r0, #24]\n\t"        // hu
@@ -94,12 +89,7 @@ __attribute__((naked, noinline)) inline void level_pass_v6m(const LevelPass*) {
         "stm    r1!, {r6, r7}\n\t"
         "cmp    r1, r10\n\t"
         "bne    1b\n\t"
-        "pop    {r4-r7}\n\t"
-        "mov    r8, r4\n\t"
-        "mov    r9, r5\n\t"
-        "mov    r10, r6\n\t"
-        "mov    r11, r7\n\t"
-        "pop    {r4-r7, pc}\n");
+        HIDER_V6M_RESTORE_ALL);
 }
 #endif
 

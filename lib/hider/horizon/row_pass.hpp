@@ -89,12 +89,7 @@ inline void coordinate_pass_portable(const RowPass& p) {
 __attribute__((naked, noinline)) inline void reciprocal_pass_v6m(const RowPass*) {
     __asm__ volatile(
         ".syntax unified\n\t"
-        "push   {r4-r7, lr}\n\t"
-        "mov    r4, r8\n\t"
-        "mov    r5, r9\n\t"
-        "mov    r6, r10\n\t"
-        "mov    r7, r11\n\t"
-        "push   {r4-r7}\n\t"
+        HIDER_V6M_SAVE_ALL
         "ldr    r1, [r0, #16]\n\t"        // dw'
         "mov    r8, r1\n\t"
         "ldr    r1, [r0, #20]\n\t"        // hw'
@@ -137,12 +132,7 @@ __attribute__((naked, noinline)) inline void reciprocal_pass_v6m(const RowPass*)
         "stm    r1!, {r4, r5}\n\t"        // x = s, y = r
         "cmp    r1, r11\n\t"
         "bne    1b\n\t"
-        "pop    {r4-r7}\n\t"
-        "mov    r8, r4\n\t"
-        "mov    r9, r5\n\t"
-        "mov    r10, r6\n\t"
-        "mov    r11, r7\n\t"
-        "pop    {r4-r7, pc}\n");
+        HIDER_V6M_RESTORE_ALL);
 }
 
 /// coordinate_pass_portable() in Thumb-1. r0 values, r1 out, r2 u, r3 out_end, r4..r7 scratch; r8 du,
@@ -150,12 +140,7 @@ __attribute__((naked, noinline)) inline void reciprocal_pass_v6m(const RowPass*)
 __attribute__((naked, noinline)) inline void coordinate_pass_v6m(const RowPass*) {
     __asm__ volatile(
         ".syntax unified\n\t"
-        "push   {r4-r7, lr}\n\t"
-        "mov    r4, r8\n\t"
-        "mov    r5, r9\n\t"
-        "mov    r6, r10\n\t"
-        "mov    r7, r11\n\t"
-        "push   {r4-r7}\n\t"
+        HIDER_V6M_SAVE_ALL
         "ldr    r1, [r0, #40]\n\t"        // du
         "mov    r8, r1\n\t"
         "ldr    r1, [r0, #44]\n\t"        // hu
@@ -197,12 +182,7 @@ __attribute__((naked, noinline)) inline void coordinate_pass_v6m(const RowPass*)
         "adds   r1, r1, #8\n\t"
         "cmp    r1, r3\n\t"
         "bne    1b\n\t"
-        "pop    {r4-r7}\n\t"
-        "mov    r8, r4\n\t"
-        "mov    r9, r5\n\t"
-        "mov    r10, r6\n\t"
-        "mov    r11, r7\n\t"
-        "pop    {r4-r7, pc}\n");
+        HIDER_V6M_RESTORE_ALL);
 }
 #endif
 

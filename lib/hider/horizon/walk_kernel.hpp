@@ -75,12 +75,7 @@ inline int walk_kernel_portable(WalkKernel& k) {
 __attribute__((naked, noinline)) inline int walk_kernel_v6m(WalkKernel*) {
     __asm__ volatile(
         ".syntax unified\n\t"
-        "push   {r4-r7, lr}\n\t"
-        "mov    r4, r8\n\t"
-        "mov    r5, r9\n\t"
-        "mov    r6, r10\n\t"
-        "mov    r7, r11\n\t"
-        "push   {r4-r7}\n\t"
+        HIDER_V6M_SAVE_ALL
         "push   {r0}\n\t"
         "ldr    r1, [r0, #4]\n\t"         // end
         "mov    r8, r1\n\t"
@@ -208,12 +203,7 @@ __attribute__((naked, noinline)) inline int walk_kernel_v6m(WalkKernel*) {
         "str    r5, [r1, #12]\n\t"
         "str    r6, [r1, #16]\n\t"
         "movs   r0, r3\n\t"
-        "pop    {r4-r7}\n\t"
-        "mov    r8, r4\n\t"
-        "mov    r9, r5\n\t"
-        "mov    r10, r6\n\t"
-        "mov    r11, r7\n\t"
-        "pop    {r4-r7, pc}\n");
+        HIDER_V6M_RESTORE_ALL);
 }
 #endif
 

@@ -17,12 +17,7 @@ __attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_v6m(Kernel
                                                                           const KernelTarget*) {
     __asm__ volatile(
         ".syntax unified\n\t"
-        "push   {r4-r7, lr}\n\t"
-        "mov    r4, r8\n\t"
-        "mov    r5, r9\n\t"
-        "mov    r6, r10\n\t"
-        "mov    r7, r11\n\t"
-        "push   {r4-r7}\n\t"
+        HIDER_V6M_SAVE_ALL
         "sub    sp, sp, #16\n\t"            // middle row, rows after the switch, last row, target
         "str    r3, [sp, #12]\n\t"
         "ldrh   r4, [r0, %[row]]\n\t"
@@ -168,12 +163,7 @@ __attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_v6m(Kernel
         "mov    r0, r1\n"                   // nothing to draw
         "96:\n\t"
         "add    sp, sp, #16\n\t"
-        "pop    {r4-r7}\n\t"
-        "mov    r8, r4\n\t"
-        "mov    r9, r5\n\t"
-        "mov    r10, r6\n\t"
-        "mov    r11, r7\n\t"
-        "pop    {r4-r7, pc}\n"
+        HIDER_V6M_RESTORE_ALL
         :
         : [row] "i"(offsetof(KernelTriangle, row)), [mid] "i"(offsetof(KernelTriangle, mid)),
           [end] "i"(offsetof(KernelTriangle, end)), [dzdx] "i"(offsetof(RowKernel, dzdx)),
