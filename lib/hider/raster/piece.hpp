@@ -108,7 +108,7 @@ public:
     /// Convenience form of scan(): fn(y, x0, x1, z) for each row with a non-empty span.
     template <class Fn>
     uint32_t spans(int32_t y_begin, int32_t y_end, Fn&& fn) const {
-        SpanRows<Fn> rows{&fn, 0};
+        detail::SpanAdapter<Fn> rows{&fn, 0};
         return scan(y_begin, y_end, rows);
     }
 
@@ -116,19 +116,6 @@ private:
     struct Cut {
         int32_t xu, yu, xl, yl;  ///< the line from its upper to its lower point
         bool plus_x;             ///< kept side towards +x: pixels from the boundary on
-    };
-
-    template <class Fn>
-    struct SpanRows {
-        static constexpr bool kCountFragments = true;
-        static constexpr bool kRowKernel = false;
-        Fn* f;
-        int32_t y;
-        void begin(int32_t first) { y = first; }
-        void operator()(int32_t x0, int32_t x1, uint32_t z) {
-            if (x0 < x1) (*f)(y, x0, x1, z);
-            ++y;
-        }
     };
 
     /// Row functor between TriangleRaster and the caller's: narrows each span to the cut lines.

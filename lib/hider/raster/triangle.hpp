@@ -10,6 +10,23 @@
 
 namespace hider {
 
+namespace detail {
+/// Row functor of TriangleRaster::spans() and PieceRaster::spans() (piece.hpp): hands non-empty spans
+/// to fn(y, x0, x1, z); counts fragments.
+template <class Fn>
+struct SpanAdapter {
+    static constexpr bool kCountFragments = true;
+    static constexpr bool kRowKernel = false;
+    Fn* f;
+    int32_t y;
+    void begin(int32_t first) { y = first; }
+    void operator()(int32_t x0, int32_t x1, uint32_t z) {
+        if (x0 < x1) (*f)(y, x0, x1, z);
+        ++y;
+    }
+};
+}  // namespace detail
+
 /// One triangle set up for traversal. setup() once; then spans(y_begin, y_end, fn) any number of
 /// times for any row ranges (bands) with identical results per row.
 class TriangleRaster {
@@ -70,25 +87,11 @@ public:
     /// Convenience form of scan(): fn(y, x0, x1, z) for each row with a non-empty span.
     template <class Fn>
     uint32_t spans(int32_t y_begin, int32_t y_end, Fn&& fn) const {
-        SpanAdapter<Fn> adapter{&fn, 0};
+        detail::SpanAdapter<Fn> adapter{&fn, 0};
         return scan(y_begin, y_end, adapter);
     }
 
 private:
-    /// Row functor that hands non-empty spans to fn(y, x0, x1, z); counts fragments.
-    template <class Fn>
-    struct SpanAdapter {
-        static constexpr bool kCountFragments = true;
-        static constexpr bool kRowKernel = false;
-        Fn* f;
-        int32_t y;
-        void begin(int32_t first) { y = first; }
-        void operator()(int32_t x0, int32_t x1, uint32_t z) {
-            if (x0 < x1) (*f)(y, x0, x1, z);
-            ++y;
-        }
-    };
-
     template <bool kBandTest, bool kDepth>
     __attribute__((always_inline)) bool setup_impl(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                                                    int32_t area, int32_t width, int32_t height,
