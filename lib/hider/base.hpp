@@ -61,7 +61,10 @@ public:
     constexpr T* data() const { return data_; }
     constexpr size_t size() const { return size_; }
     constexpr bool empty() const { return size_ == 0; }
-    constexpr T& operator[](size_t i) const { return data_[i]; }
+    constexpr T& operator[](size_t i) const {
+        HIDER_ASSERT(i < size_);
+        return data_[i];
+    }
     constexpr T* begin() const { return data_; }
     constexpr T* end() const { return data_ + size_; }
 
@@ -104,7 +107,10 @@ public:
     size_t capacity() const { return capacity_; }
     size_t dropped() const { return dropped_; }
     size_t high_water() const { return high_water_; }
-    T& operator[](size_t i) const { return data_[i]; }
+    T& operator[](size_t i) const {
+        HIDER_ASSERT(i < size_);
+        return data_[i];
+    }
     T* data() const { return data_; }
 
 private:
