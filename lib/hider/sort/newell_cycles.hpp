@@ -14,7 +14,8 @@ inline bool Newell::break_cycle(uint32_t q, Action& act) {
     cycle_too_deep_ = false;
     size_t j = chain_len_;
     while (j-- > 0 && s_.chain[j] != q) {}
-    if (j >= chain_len_) return false;  // q is always in the chain (moved in it); kept safe all the same
+    HIDER_ASSERT(j < chain_len_);  // q is always in the chain (moved in it)
+    if (j >= chain_len_) return false;  // kept safe all the same
     // Pairs within tried_lo_..tried_hi_ of this chain failed before, and would again.
     const auto tried = [this](size_t a, size_t b) { return a >= tried_lo_ && b < tried_hi_; };  // a < b
     for (int exact = 0; exact < 2; ++exact)
@@ -65,7 +66,8 @@ inline bool Newell::break_by_pixels(uint32_t q, Action& act) {
     if (reorder_count_ + 2 > s_.reorders.size()) return false;
     size_t j = chain_len_;
     while (j > 0 && s_.chain[j - 1] != q) --j;
-    if (j-- == 0) return false;  // q is always in the chain (moved in it); kept safe all the same
+    HIDER_ASSERT(j > 0);  // q is always in the chain (moved in it)
+    if (j-- == 0) return false;  // kept safe all the same
     for (size_t i = j; i + 1 < chain_len_; ++i) {
         const uint32_t x = s_.chain[i], y = s_.chain[i + 1];  // y was moved before x
         if (!pixel_test()) return false;
