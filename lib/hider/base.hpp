@@ -8,33 +8,14 @@
 static_assert((-3 >> 1) == -2, "lib/ relies on arithmetic right shift of negative values");
 static_assert(sizeof(int32_t) == 4 && sizeof(int64_t) == 8, "lib/ needs exact-width integers");
 
-/// Hook called when HIDER_ASSERT fails on a device build; firmware may override the weak default.
+/// Called when HIDER_ASSERT fails (only with HIDER_ENABLE_ASSERTS defined): define it, or link the weak
+/// default of hider::port_host (host) or of hider's firmware (firmware/common/assert_hook.cpp).
 extern "C" void hider_assert_fail(const char* file, int line);
 
 #if defined(HIDER_ENABLE_ASSERTS)
 #define HIDER_ASSERT(cond) ((cond) ? (void)0 : hider_assert_fail(__FILE__, __LINE__))
 #else
 #define HIDER_ASSERT(cond) ((void)0)
-#endif
-
-#if defined(__ARM_ARCH_6M__)
-/// Thumb-1 text for the naked assembly routines that use every register: HIDER_V6M_SAVE_ALL pushes
-/// r4-r11 and lr (ARMv6-M's push takes low registers only, so r8-r11 pass through r4-r7), and
-/// HIDER_V6M_RESTORE_ALL pops them and returns. The stack holds 36 bytes in between.
-#define HIDER_V6M_SAVE_ALL \
-    "push   {r4-r7, lr}\n\t" \
-    "mov    r4, r8\n\t" \
-    "mov    r5, r9\n\t" \
-    "mov    r6, r10\n\t" \
-    "mov    r7, r11\n\t" \
-    "push   {r4-r7}\n\t"
-#define HIDER_V6M_RESTORE_ALL \
-    "pop    {r4-r7}\n\t" \
-    "mov    r8, r4\n\t" \
-    "mov    r9, r5\n\t" \
-    "mov    r10, r6\n\t" \
-    "mov    r11, r7\n\t" \
-    "pop    {r4-r7, pc}\n"
 #endif
 
 namespace hider {

@@ -1,12 +1,27 @@
 // Host default for the HIDER_ASSERT hook declared in lib/hider/base.hpp (asserts are checked when
-// HIDER_ENABLE_ASSERTS is defined: hider's own host-asan build and fuzzers): prints file:line on stderr
-// and aborts, so a sanitizer or fuzzer reports the stack. Weak: a program defines its own to override it.
+// HIDER_ENABLE_ASSERTS is defined: hider's own host-asan build and fuzzers): prints file:line on stderr,
+// and the stack under AddressSanitizer (which does not report an abort by default), then aborts. Weak: a
+// program's own definition overrides it.
 #include <hider/base.hpp>
 
 #include <cstdio>
 #include <cstdlib>
 
+#if defined(__SANITIZE_ADDRESS__)
+#define HIDER_HOST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define HIDER_HOST_ASAN 1
+#endif
+#endif
+#if defined(HIDER_HOST_ASAN)
+#include <sanitizer/common_interface_defs.h>
+#endif
+
 extern "C" __attribute__((weak)) void hider_assert_fail(const char* file, int line) {
     std::fprintf(stderr, "hider: assertion failed at %s:%d\n", file, line);
+#if defined(HIDER_HOST_ASAN)
+    __sanitizer_print_stack_trace();
+#endif
     std::abort();
 }

@@ -134,10 +134,11 @@ TEST_CASE("PieceRaster's rows are the triangle's spans narrowed cut by cut with 
         }
         ++pieces;
         std::vector<int32_t> got_lo(static_cast<size_t>(h), 0), got_hi(static_cast<size_t>(h), 0);
-        pr.spans(0, h, [&](int32_t y, int32_t x0, int32_t x1, uint32_t) {
+        const auto record = [&](int32_t y, int32_t x0, int32_t x1, uint32_t) {
             got_lo[static_cast<size_t>(y)] = x0;
             got_hi[static_cast<size_t>(y)] = x1;
-        });
+        };
+        pr.spans(0, h, record);  // an lvalue functor (spans() takes Fn&&)
         for (size_t y = 0; y < static_cast<size_t>(h); ++y) {
             const bool ref_empty = ref_lo[y] >= ref_hi[y], got_empty = got_lo[y] >= got_hi[y];
             ++rows;

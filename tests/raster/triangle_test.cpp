@@ -227,9 +227,10 @@ TEST_CASE("setup_flat covers the same rows and spans as setup in every band, wit
             CHECK(flat.dzdx() == 0);
             std::vector<int32_t> spans_full, spans_flat;
             const int32_t r0 = std::max(band.y0, full.first_row()), r1 = std::min(band.y1, full.end_row());
-            const uint32_t n_full = full.spans(r0, r1, [&](int32_t yy, int32_t x0, int32_t x1, uint32_t) {
+            const auto record_full = [&](int32_t yy, int32_t x0, int32_t x1, uint32_t) {
                 spans_full.insert(spans_full.end(), {yy, x0, x1});
-            });
+            };
+            const uint32_t n_full = full.spans(r0, r1, record_full);  // an lvalue functor, the other an rvalue
             const uint32_t n_flat = flat.spans(r0, r1, [&](int32_t yy, int32_t x0, int32_t x1, uint32_t z) {
                 spans_flat.insert(spans_flat.end(), {yy, x0, x1});
                 CHECK(z == 0);

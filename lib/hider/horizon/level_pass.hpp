@@ -6,6 +6,7 @@
 // below 2^-15, the reciprocal table's own), leaving per point one product for X: no table, no
 // normalisation. Portable C++, and a Thumb-1 loop on ARMv6-M with identical results (firmware/horizoncheck).
 #pragma once
+#include <hider/asm_v6m.hpp>
 #include <hider/horizon/row_pass.hpp>
 
 namespace hider::horizon {

@@ -6,6 +6,7 @@
 // they are Thumb-1 loops that keep it in registers. The results are identical (firmware/horizoncheck
 // compares them on random rows); project.hpp decides when the passes apply.
 #pragma once
+#include <hider/asm_v6m.hpp>
 #include <hider/horizon/point.hpp>
 
 namespace hider::horizon {

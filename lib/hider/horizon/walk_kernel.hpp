@@ -7,6 +7,7 @@
 // re-reads them. Portable C++, except on ARMv6-M, where GCC at -Os spills the walk's state: there a
 // Thumb-1 loop keeps it in registers. Both give the same results (firmware/horizoncheck compares them on random curves).
 #pragma once
+#include <hider/asm_v6m.hpp>
 #include <hider/horizon/point.hpp>
 
 namespace hider::horizon {

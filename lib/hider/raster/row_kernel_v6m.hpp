@@ -1,6 +1,7 @@
 // run_kernel_triangle_portable() (row_kernel.hpp) in Thumb-1 for ARMv6-M (Cortex-M0/M0+).
 // Part of row_kernel_asm.hpp: include that header (or row_kernel.hpp), not this one.
 #pragma once
+#include <hider/asm_v6m.hpp>
 #include <hider/raster/row_kernel.hpp>
 
 namespace hider {

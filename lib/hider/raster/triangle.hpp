@@ -13,11 +13,13 @@ namespace hider {
 namespace detail {
 /// Row functor of TriangleRaster::spans() and PieceRaster::spans() (piece.hpp): hands non-empty spans
 /// to fn(y, x0, x1, z); counts fragments.
+template <class T> struct NoRef { using type = T; };
+template <class T> struct NoRef<T&> { using type = T; };
 template <class Fn>
 struct SpanAdapter {
     static constexpr bool kCountFragments = true;
     static constexpr bool kRowKernel = false;
-    Fn* f;
+    typename NoRef<Fn>::type* f;  // spans() takes Fn&&: Fn is a reference type for an lvalue functor
     int32_t y;
     void begin(int32_t first) { y = first; }
     void operator()(int32_t x0, int32_t x1, uint32_t z) {

@@ -348,12 +348,6 @@ private:
 
 }  // namespace detail
 
-}  // namespace hider
-
-#include <hider/sort/newell_cycles.hpp>  // the cycle-breaking members' bodies
-
-namespace hider {
-
 /// Orders polys[0..n) back to front into `order` (cleared first) so that no polygon is drawn after one
 /// it lies in front of, cutting polygons into the free capacity of `polys` (and two `cuts` records per
 /// cut) as needed. Paint the result with paint_in_order() or paint_front_to_back(), passing `cuts`.
@@ -382,3 +376,5 @@ inline Status newell_order(const View& view, BoundedList<ScreenPoly>& polys, Bou
 }
 
 }  // namespace hider
+
+#include <hider/sort/newell_cycles.hpp>  // the bodies of the cycle-breaking members

@@ -8,8 +8,6 @@
 
 namespace hider::detail {
 
-// Pairs of the cycle first (the closing pair last), then any two of its polygons; pairs the chain tried
-// in vain before are skipped.
 inline bool Newell::break_cycle(uint32_t q, Action& act) {
     cycle_too_deep_ = false;
     size_t j = chain_len_;
