@@ -192,7 +192,7 @@ private:
         } else if (!too_deep) {
             // Nothing cuts the pair: keep the order found if its shared pixels agree, or break the cycle
             // at another pair of it whose pixels do.
-            if (pixel_test() && drawn_under(p, q, cuts(), width_, height_)) {
+            if (spend_tests(1) && drawn_under(p, q, cuts(), width_, height_)) {
                 ++ns_.pixel_ordered;
                 return false;
             }
@@ -228,8 +228,9 @@ private:
     /// chain that closes cycle after cycle does not pay for its square each time.
     bool break_cycle(uint32_t q, Action& act);
 
-    /// Counts one pixel test as a pair test; false when the budget is spent (status set).
-    bool pixel_test();
+    /// Counts n pair tests (a pixel test is one); false, counting none, when they would pass the budget
+    /// (status set).
+    bool spend_tests(uint32_t n);
 
     bool reordered(uint32_t a, uint32_t b) const;
 

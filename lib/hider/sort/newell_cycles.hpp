@@ -28,12 +28,7 @@ inline bool Newell::break_cycle(uint32_t q, Action& act) {
             for (size_t k = i + 2; k < chain_len_; ++k) {
                 if (i == j && k + 1 == chain_len_) continue;  // the pair that closes the cycle, tried above
                 if (tried(i, k)) continue;
-                if (ns_.pair_tests + 2 > budget_) {
-                    ns_.budget_exhausted = true;
-                    status_ = Status::capacity_exceeded;
-                    return false;
-                }
-                ns_.pair_tests += 2;
+                if (!spend_tests(2)) return false;
                 const uint32_t x = s_.chain[i], y = s_.chain[k];
                 if (cut_straddling(x, y, exact != 0, act) || cut_straddling(y, x, exact != 0, act)) return true;
             }
@@ -44,13 +39,13 @@ inline bool Newell::break_cycle(uint32_t q, Action& act) {
     return false;
 }
 
-inline bool Newell::pixel_test() {
-    if (ns_.pair_tests + 1 > budget_) {
+inline bool Newell::spend_tests(uint32_t n) {
+    if (ns_.pair_tests + n > budget_) {
         ns_.budget_exhausted = true;
         status_ = Status::capacity_exceeded;
         return false;
     }
-    ++ns_.pair_tests;
+    ns_.pair_tests += n;
     return true;
 }
 
@@ -68,7 +63,7 @@ inline bool Newell::break_by_pixels(uint32_t q, Action& act) {
     if (j-- == 0) return false;  // kept safe all the same
     for (size_t i = j; i + 1 < chain_len_; ++i) {
         const uint32_t x = s_.chain[i], y = s_.chain[i + 1];  // y was moved before x
-        if (!pixel_test()) return false;
+        if (!spend_tests(1)) return false;
         if (!drawn_under(polys_[x], polys_[y], cuts(), width_, height_)) continue;
         s_.reorders[reorder_count_++] = x;
         s_.reorders[reorder_count_++] = y;
