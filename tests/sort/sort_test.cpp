@@ -61,7 +61,7 @@ TEST_CASE("radix_sort sorts 32-bit keys ascending and stably in O(n)") {
 
 TEST_CASE("a plane classifies its own vertices as on it and cuts a straddling triangle into two exact pieces") {
     auto sv = [](int x, int y, uint32_t z) { ScreenVertex v; v.x = static_cast<int16_t>(x); v.y = static_cast<int16_t>(y); v.z = z; return v; };
-    ScreenPoly wall{{sv(-800, -800, 1u << 30), sv(800, -800, 1u << 30), sv(0, 800, 1u << 30)}, 0, 0, 0, 0, 0, 0, 3, kNotMoved, kNoCut, 0};
+    ScreenPoly wall{{sv(-800, -800, 1u << 30), sv(800, -800, 1u << 30), sv(0, 800, 1u << 30)}, 0, 0, 0, 0, 0, 0, 3, kNotMoved, kNoCut, 0, 0};
     update_extents(wall);
     const ScreenPlane pl = plane_of(wall);
     for (const ScreenVertex& v : wall.v) CHECK(side(pl, v).sign() == 0);
@@ -76,14 +76,14 @@ TEST_CASE("a plane classifies its own vertices as on it and cuts a straddling tr
     // triangle, a surface within half a subpixel's depth slope of a parallel one counted as coplanar, and
     // Newell drew the later one on top.
     ScreenPoly under{{sv(-100, -100, (1u << 30) - 1), sv(100, -100, (1u << 30) - 1), sv(0, 100, (1u << 30) - 1)}, 0, 0, 0, 0, 0, 0, 5,
-                     kNotMoved, kNoCut, 0};
+                     kNotMoved, kNoCut, 0, 0};
     Outline near_outline;
     outline_of(under, {}, near_outline);
     CHECK(!near_outline.rounded);
     CHECK(side_of(pl, near_outline) == -1);
     near_outline.rounded = true;  // the same points in a piece's outline: within the slack, on the plane (+1)
     CHECK(side_of(pl, near_outline) == 1);
-    ScreenPoly stick{{sv(-400, 0, 1u << 29), sv(400, 0, 3u << 29), sv(0, 300, 3u << 29)}, 0, 0, 0, 0, 0, 0, 7, kNotMoved, kNoCut, kPolyFront};
+    ScreenPoly stick{{sv(-400, 0, 1u << 29), sv(400, 0, 3u << 29), sv(0, 300, 3u << 29)}, 0, 0, 0, 0, 0, 0, 7, kNotMoved, kNoCut, kPolyFront, 0};
     update_extents(stick);
     Outline whole;
     outline_of(stick, {}, whole);
@@ -210,7 +210,7 @@ struct RandomScreen {
     }
     /// A random triangle (mesh triangle `id`) reaching a little past the frame; false when it has no area.
     bool triangle(int w, int h, uint32_t id, ScreenPoly& tri) {
-        tri = ScreenPoly{{}, 0, 0, 0, 0, 0, 0, id, kNotMoved, kNoCut, 0};
+        tri = ScreenPoly{{}, 0, 0, 0, 0, 0, 0, id, kNotMoved, kNoCut, 0, 0};
         for (ScreenVertex& v : tri.v) v = vertex(w * 10, h * 10);
         if (TriangleRaster::signed_area(tri.v[0], tri.v[1], tri.v[2]) == 0) return false;
         update_extents(tri);
@@ -224,13 +224,13 @@ struct RandomScreen {
 /// that the cut lines of a chain meet at shallow angles.
 void cut_randomly(RandomScreen& rs, int w, int h, bool shallow, int rounds, const ScreenPoly* first_wall, std::vector<PieceCut>& cuts,
                   std::vector<ScreenPoly>& live) {
-    ScreenPoly base{{}, 0, 0, 0, 0, 0, 0, 99, kNotMoved, kNoCut, 0};
+    ScreenPoly base{{}, 0, 0, 0, 0, 0, 0, 99, kNotMoved, kNoCut, 0, 0};
     for (ScreenVertex& v : base.v) v = rs.vertex(w * 12, h * 12);
     for (int round = 0; round < rounds; ++round) {
         std::vector<ScreenPoly> next;
         for (size_t i = 0; i < live.size(); ++i) {
             const ScreenPoly& p = live[i];
-            ScreenPoly wall{{}, 0, 0, 0, 0, 0, 0, 100u + static_cast<uint32_t>(round), kNotMoved, kNoCut, 0};
+            ScreenPoly wall{{}, 0, 0, 0, 0, 0, 0, 100u + static_cast<uint32_t>(round), kNotMoved, kNoCut, 0, 0};
             for (ScreenVertex& v : wall.v) v = rs.vertex(w * 12, h * 12);
             if (shallow)
                 for (int k = 0; k < 3; ++k) {
@@ -414,7 +414,7 @@ TEST_CASE("a cut line through a pivot stays near the crossing over the whole tri
     // Found by review: a crossing that passes two centres within a hair, where crossing_line() paired a
     // pivot with a grid point one subpixel away, and took that line for exact after checking only the
     // centres next to it: 4,697 of the triangle's 6,262 centres went to the wrong piece (640x480).
-    ScreenPoly tri{{}, 0, 0, 0, 0, 0, 0, 0, kNotMoved, kNoCut, 0}, wall = tri;
+    ScreenPoly tri{{}, 0, 0, 0, 0, 0, 0, 0, kNotMoved, kNoCut, 0, 0}, wall = tri;
     wall.tri = 1;
     const int32_t tv[3][3] = {{-2916, -3108, 673101319}, {2857, -53, 700511433}, {4540, 1393, 794502009}};
     const int32_t wv[3][3] = {{-3999, -1330, 670872209}, {-1290, -2009, 649112307}, {211, 1118, 769785124}};

@@ -5,6 +5,10 @@
 #include "common/render_bsp.hpp"
 #include "host/ppm.hpp"
 
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+
 namespace hider::tool {
 namespace {
 
@@ -31,11 +35,55 @@ uint32_t count_covered(Span<const ScreenPoly> polys, Span<const PieceCut> cuts, 
     return n;
 }
 
+/// Newell's face of each triangle (NewellOptions::face_ids): its Mesh::ids face when every vertex of
+/// that face's triangles lies exactly on one plane of the fixed-point grid, else a face of its own. An
+/// OBJ polygon that is not flat must have its triangles ordered among themselves like any others.
+std::vector<uint32_t> flat_faces(const Mesh& mesh) {
+    if (mesh.ids.empty()) return {};
+    struct Face {
+        __int128 n[3] = {0, 0, 0}, d = 0;  // n . p = d for each of its vertices p
+        bool has_plane = false, flat = true;
+    };
+    std::unordered_map<uint32_t, Face> faces;
+    auto pos = [&](uint16_t v) {
+        const Vec3q16& p = mesh.positions[v];
+        return std::array<__int128, 3>{p.x.raw(), p.y.raw(), p.z.raw()};
+    };
+    for (int pass = 0; pass < 2; ++pass)
+        for (size_t t = 0; t < mesh.tris.size(); ++t) {
+            Face& f = faces[mesh.ids[t]];
+            const auto a = pos(mesh.tris[t].v[0]), b = pos(mesh.tris[t].v[1]), c = pos(mesh.tris[t].v[2]);
+            if (pass == 0 && !f.has_plane) {  // the first triangle of the face with a plane (|coordinates| < 2^29)
+                const __int128 u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+                f.n[0] = u[1] * w[2] - u[2] * w[1];
+                f.n[1] = u[2] * w[0] - u[0] * w[2];
+                f.n[2] = u[0] * w[1] - u[1] * w[0];
+                f.d = f.n[0] * a[0] + f.n[1] * a[1] + f.n[2] * a[2];
+                f.has_plane = f.n[0] != 0 || f.n[1] != 0 || f.n[2] != 0;
+            }
+            if (pass == 1 && f.has_plane)
+                for (const auto& p : {a, b, c}) f.flat = f.flat && f.n[0] * p[0] + f.n[1] * p[1] + f.n[2] * p[2] == f.d;
+        }
+    std::vector<uint32_t> out(mesh.tris.size());
+    std::unordered_map<uint32_t, uint32_t> number;  // only equality matters: faces renumbered from 0
+    uint32_t next = 0;
+    for (size_t t = 0; t < mesh.tris.size(); ++t) {
+        if (!faces[mesh.ids[t]].flat) {
+            out[t] = next++;
+            continue;
+        }
+        const auto it = number.emplace(mesh.ids[t], next).first;
+        next += it->second == next;
+        out[t] = it->second;
+    }
+    return out;
+}
+
 /// Storage of one sorted render, what an application would declare statically on a device.
 struct SortedStore {
     std::vector<ScreenPoly> polys;
     std::vector<PieceCut> cuts;
-    std::vector<uint32_t> order, heap, heap_pos, links, cells, chain, reorders;
+    std::vector<uint32_t> order, heap, heap_pos, links, cells, chain, reorders, faces;
     std::vector<SortKey> keys, scratch;
 };
 
@@ -81,7 +129,8 @@ Status order_polygons(const RenderOptions& opt, const View& view, const Mesh& me
                                 {store.links.data(), 2 * cap},   {store.cells.data(), store.cells.size()},
                                 {store.chain.data(), cap},       {store.reorders.data(), opt.reorders}};
     NewellOptions nopt;
-    nopt.face_ids = mesh.ids;  // a fanned OBJ face is flat: its triangles need no order among themselves
+    store.faces = flat_faces(mesh);  // the triangles of a flat face need no order among themselves
+    nopt.face_ids = {store.faces.data(), store.faces.size()};
     const Status s = newell_order(view, polys, cuts, scratch, order, ns, nopt);
     return s != Status::ok ? s : st.status;
 }

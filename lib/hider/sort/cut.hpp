@@ -268,7 +268,7 @@ namespace detail {
 /// cut_polygon() once the line is found: the pieces of p on each side of `line` (keeping the far side).
 /// Out of line, so that its outlines are off the stack while crossing_line() runs.
 __attribute__((noinline)) inline CutResult split_along(const ScreenPoly& p, Span<const PieceCut> cuts, const CutLine& line,
-                                                       uint32_t plane_tri, ScreenPoly& far, ScreenPoly& near, PieceCut& far_cut,
+                                                       uint32_t plane, ScreenPoly& far, ScreenPoly& near, PieceCut& far_cut,
                                                        PieceCut& near_cut) {
     // One outline at a time (a chip's stack): the far side's, then the near side's from p's again.
     Outline o;
@@ -277,8 +277,8 @@ __attribute__((noinline)) inline CutResult split_along(const ScreenPoly& p, Span
     const int sides = clip_outline(o, line, p.v);
     const bool far_ok = (sides & kKeptSide) != 0, near_ok = (sides & kCutSide) != 0;
     if (!far_ok || !near_ok) return far_ok ? CutResult::far_only : (near_ok ? CutResult::near_only : CutResult::no_line);
-    far_cut = {line, p.cut, plane_tri | kCutFar};
-    near_cut = {reversed(line), p.cut, plane_tri};
+    far_cut = {line, p.cut, plane | kCutFar};
+    near_cut = {reversed(line), p.cut, plane};
     auto make = [&p](const Outline& piece, ScreenPoly& out) {
         out = p;  // p's box holds the piece; piece_box() narrows it for a piece that is kept
         out.cut = kNoCut;
@@ -298,12 +298,12 @@ __attribute__((noinline)) inline CutResult split_along(const ScreenPoly& p, Span
 }
 }  // namespace detail
 
-/// Cuts polygon p by plane pl (the plane of mesh triangle plane_tri) into far and near pieces, each
+/// Cuts polygon p by plane pl (named `plane`, plane_name()) into far and near pieces, each
 /// keeping p's triangle, tri and flags, with one more cut record in far_cut / near_cut. The caller
 /// stores the records in the pool `cuts` holds p's chain in and sets far.cut / near.cut to their indices.
 /// The pieces keep p's box, which holds them; piece_box() (sort/piece_box.hpp) gives a piece that is
 /// kept the box of its exact region (a trial cut needs no box).
-inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, const ScreenPlane& pl, uint32_t plane_tri,
+inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, const ScreenPlane& pl, uint32_t plane,
                              int32_t width, int32_t height, ScreenPoly& far, ScreenPoly& near, PieceCut& far_cut, PieceCut& near_cut) {
     int depth = 0;
     for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev) ++depth;
@@ -311,7 +311,7 @@ inline CutResult cut_polygon(const ScreenPoly& p, Span<const PieceCut> cuts, con
     CutLine line{};
     const CrossingResult crossing = crossing_line(pl, p, width, height, line);
     if (crossing == CrossingResult::none) return CutResult::no_line;
-    const CutResult r = detail::split_along(p, cuts, line, plane_tri, far, near, far_cut, near_cut);
+    const CutResult r = detail::split_along(p, cuts, line, plane, far, near, far_cut, near_cut);
     if (crossing == CrossingResult::exact || r == CutResult::no_line) return r;
     // A side decided from an inexact line could be wrong at the centre it misplaces: undecided instead.
     return r == CutResult::cut ? CutResult::cut_inexact : CutResult::no_line;

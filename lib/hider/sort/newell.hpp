@@ -151,18 +151,18 @@ private:
         Cut& pc = act.cuts[0];
         Cut& qc = act.cuts[1];
         CutResult p_cut = CutResult::no_line, q_cut = CutResult::no_line;
-        const int p_side = side_known_or_classified(p, po, qp, q.tri);
+        const int p_side = side_known_or_classified(p, po, qp, plane_name(q));
         if (p_side > 0) return false;  // (3) P wholly behind Q's plane
         Outline qo;  // only now: a piece's outline costs its cuts' clipping
         outline_of(q, cuts(), qo);
-        const int q_side = side_known_or_classified(q, qo, pp, p.tri);
+        const int q_side = side_known_or_classified(q, qo, pp, plane_name(p));
         if (q_side < 0) return false;                    // (4) Q wholly in front of P's plane
         if (projections_disjoint(po, qo)) return false;  // (5)
         // One that straddles the other's plane is cut there on trial (after (5): most such pairs are
         // neighbours in a mesh, which share no pixel): a cut that leaves nothing on one side decides the side.
-        const int p_vs_q = p_side != 0 ? p_side : side_by_cut(p, qp, q.tri, p_cut, pc);
+        const int p_vs_q = p_side != 0 ? p_side : side_by_cut(p, qp, plane_name(q), p_cut, pc);
         if (p_vs_q > 0) return false;  // (3)
-        const int q_vs_p = q_side != 0 ? q_side : side_by_cut(q, pp, p.tri, q_cut, qc);
+        const int q_vs_p = q_side != 0 ? q_side : side_by_cut(q, pp, plane_name(p), q_cut, qc);
         if (q_vs_p < 0) return false;  // (4)
         bool too_deep = p_cut == CutResult::too_deep || q_cut == CutResult::too_deep;
         bool cycle = false;
@@ -260,17 +260,17 @@ private:
         return near && far;
     }
 
-    /// x's side of plane pl (the plane of mesh triangle plane_tri), outline xo: known from x's cuts, else
+    /// x's side of plane pl (named `plane`, plane_name()), outline xo: known from x's cuts, else
     /// classified (0: it straddles the plane).
-    int side_known_or_classified(const ScreenPoly& x, const Outline& xo, const ScreenPlane& pl, uint32_t plane_tri) const {
-        const int known = known_side(x, cuts(), plane_tri);
+    int side_known_or_classified(const ScreenPoly& x, const Outline& xo, const ScreenPlane& pl, uint32_t plane) const {
+        const int known = known_side(x, cuts(), plane);
         return known != 0 ? known : side_of(pl, xo);
     }
 
     /// The side of x, which straddles plane pl, from the cut along it (pieces into far/near): a cut that
     /// leaves nothing of nonzero area on one side decides the side, else 0. `cut` tells how the try went.
-    int side_by_cut(const ScreenPoly& x, const ScreenPlane& pl, uint32_t plane_tri, CutResult& cut, Cut& pieces) {
-        cut = cut_polygon(x, cuts(), pl, plane_tri, width_, height_, pieces.far, pieces.near, pieces.far_cut, pieces.near_cut);
+    int side_by_cut(const ScreenPoly& x, const ScreenPlane& pl, uint32_t plane, CutResult& cut, Cut& pieces) {
+        cut = cut_polygon(x, cuts(), pl, plane, width_, height_, pieces.far, pieces.near, pieces.far_cut, pieces.near_cut);
         pieces.inexact = cut == CutResult::cut_inexact;
         if (cut == CutResult::far_only) return 1;
         if (cut == CutResult::near_only) return -1;

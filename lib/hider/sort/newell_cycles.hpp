@@ -77,11 +77,11 @@ inline bool Newell::break_by_pixels(uint32_t q, Action& act) {
 
 inline bool Newell::cut_straddling(uint32_t x, uint32_t y, bool exact, Action& act) {
     const ScreenPoly &px = polys_[x], &py = polys_[y];
-    if (known_side(px, cuts(), py.tri) != 0) return false;
+    if (known_side(px, cuts(), plane_name(py)) != 0) return false;
     const ScreenPlane pl = plane_of(py);
     if (!straddles(px, pl, exact)) return false;
     Cut& c = act.cuts[act.count];
-    const CutResult r = cut_polygon(px, cuts(), pl, py.tri, width_, height_, c.far, c.near, c.far_cut, c.near_cut);
+    const CutResult r = cut_polygon(px, cuts(), pl, plane_name(py), width_, height_, c.far, c.near, c.far_cut, c.near_cut);
     cycle_too_deep_ = cycle_too_deep_ || r == CutResult::too_deep;
     if (!made(r)) return false;
     c.inexact = r == CutResult::cut_inexact;

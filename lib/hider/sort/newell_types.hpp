@@ -28,8 +28,10 @@ struct NewellStats {
 constexpr uint64_t kNewellTestsPerPolygon = 1024;
 
 struct NewellOptions {
-    /// The face of each mesh triangle (Mesh::ids), or empty. Polygons of one face are taken as coplanar
-    /// and never ordered against each other (nor cut): a fan of a large flat face costs no cuts.
+    /// The face of each mesh triangle (e.g. Mesh::ids), or empty. Polygons of one face are taken as
+    /// coplanar and never ordered against each other (nor cut): a fan of a large flat face costs no cuts.
+    /// Give one face only to triangles whose vertices lie exactly on one plane (a folded quad's two
+    /// triangles can hide each other, and would be drawn in depth order).
     Span<const uint32_t> face_ids;
     /// Most pair tests one call may run; 0 = kNewellTestsPerPolygon x polys.capacity() + 65536.
     /// Past it the remaining polygons go out in depth order, and the result is capacity_exceeded.

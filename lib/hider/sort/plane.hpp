@@ -87,11 +87,11 @@ inline int side_of(const ScreenPlane& pl, const Outline& o) {
     return near ? -1 : 1;
 }
 
-/// The side of the plane of mesh triangle `plane_tri` that a cut of p's chain put it on (+1 far, -1
+/// The side of the plane named `plane` (plane_name()) that a cut of p's chain put it on (+1 far, -1
 /// near), or 0 when no cut of p came from that plane.
-inline int known_side(const ScreenPoly& p, Span<const PieceCut> cuts, uint32_t plane_tri) {
+inline int known_side(const ScreenPoly& p, Span<const PieceCut> cuts, uint32_t plane) {
     for (uint32_t c = p.cut; c != kNoCut; c = cuts[c].prev)
-        if ((cuts[c].plane & ~kCutFar) == plane_tri) return (cuts[c].plane & kCutFar) != 0 ? 1 : -1;
+        if ((cuts[c].plane & ~kCutFar) == plane) return (cuts[c].plane & kCutFar) != 0 ? 1 : -1;
     return 0;
 }
 

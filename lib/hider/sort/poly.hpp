@@ -18,18 +18,27 @@ struct ScreenPoly {
     ScreenVertex v[3];               ///< the triangle; for a piece, its parent's exact triangle
     uint32_t zmin, zmax;             ///< depth extent (of the piece)
     int16_t xmin, xmax, ymin, ymax;  ///< bounding box in subpixels (a piece's is one subpixel wider each way)
-    uint32_t tri;                    ///< mesh triangle it comes from (colour, id, and its plane's name)
+    uint32_t tri;                    ///< mesh triangle it comes from (colour, id), below kMaxPolyTriangles
     uint32_t moved_at;               ///< Newell: the chain of moves it was last moved in (kNotMoved if never)
     uint32_t cut;                    ///< newest cut of a piece in the cut pool, kNoCut for a whole triangle
     uint8_t flags;                   ///< kPolyFront
+    uint8_t part;                    ///< which of the screen triangles clipping made of `tri` (0..6)
 };
 static_assert(sizeof(ScreenPoly) == 56, "ScreenPoly layout is documented in README.md");
+
+/// Mesh triangles the object-space algorithms accept: below 2^28, so that a plane's name fits 31 bits.
+constexpr uint32_t kMaxPolyTriangles = uint32_t{1} << 28;
+
+/// The name of p's plane: its mesh triangle and clipped part. The parts of a clipped triangle lie in
+/// slightly different planes (their clip vertices are rounded), so a side found against one part must
+/// not be taken for another's. A piece keeps its parent's plane.
+inline uint32_t plane_name(const ScreenPoly& p) { return p.tri | uint32_t{p.part} << 28; }
 
 /// One cut of a piece: the half-plane it keeps, the older cut before it and the plane that made it.
 /// Two records per cut (one for each side), 16 bytes each:
 ///   line      x0 y0 x1 y1 (int16 each, subpixels)   bytes 0-7
 ///   prev      older cut of the same piece, or kNoCut  bytes 8-11
-///   plane     bit 31: the piece lies on the far side; bits 0-30: the mesh triangle whose plane cut it
+///   plane     bit 31: the piece lies on the far side; bits 0-30: plane_name() of the polygon that cut it
 struct PieceCut {
     CutLine line;
     uint32_t prev;
@@ -52,7 +61,7 @@ inline void update_extents(ScreenPoly& p) {
 /// cull is set, zero-area triangles and those covering no pixel centre of the frame skipped. Every
 /// mesh triangle lands in exactly one count of st: drawn (a polygon in `out`), culled, degenerate
 /// (zero area) or outside (clipped away or no pixel centre). When `out` fills, the rest are dropped
-/// and counted (st.status = capacity_exceeded).
+/// and counted (st.status = capacity_exceeded), as are the triangles from kMaxPolyTriangles on.
 inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
                         BoundedList<ScreenPoly>& out, FrameStats& st) {
     FrameView<Grey8Format> whole;  // geometry only: bounds of the full frame
@@ -64,16 +73,19 @@ inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVer
     for (size_t t = 0; t < mesh.tris.size(); ++t) {
         ++st.triangles_in;
         bool drawn = false, culled = false, degenerate = false;
+        uint8_t part = 0;
         FrameStats clip;
         for_each_clipped(view, mesh, verts, t, clip, [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+            ++part;
             const int32_t area = TriangleRaster::signed_area(a, b, c);
             if (area == 0) { degenerate = true; return; }
             if (cull && area > 0) { culled = true; return; }
             if (misses_band(screen_box(a, b, c), bb)) return;
             ScreenPoly p{{a, b, c}, 0, 0, 0, 0, 0, 0, static_cast<uint32_t>(t), kNotMoved, kNoCut,
-                         static_cast<uint8_t>(area < 0 ? kPolyFront : 0)};
+                         static_cast<uint8_t>(area < 0 ? kPolyFront : 0),
+                         static_cast<uint8_t>(part - 1)};
             update_extents(p);
-            if (out.push_back(p)) drawn = true;
+            if (t < kMaxPolyTriangles && out.push_back(p)) drawn = true;
             else st.status = Status::capacity_exceeded;
         });
         st.triangles_clipped += clip.triangles_clipped;
