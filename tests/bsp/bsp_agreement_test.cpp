@@ -161,6 +161,28 @@ TEST_CASE("axis splits keep a convex sphere's tree shallow, its cells labelled a
     }
 }
 
+TEST_CASE("axis splits end for every chain length, 1 included, and their trees equal the z-buffer") {
+    // An axis split taken because its plane reached both sides, with only cut polygons on one of them,
+    // could cut every polygon again and again: --max-chain 1 on a 24-triangle sphere ran until memory ran
+    // out. Now each side must keep a polygon of its own, so both children hold fewer than the node.
+    tool::Scene ball = test::uv_sphere(6, 3, 48, 36);  // every plane has all the others behind it
+    for (int max_chain : {1, 2, 3, 4}) {
+        INFO("max_chain " << max_chain);
+        tool::BspOptions opt;
+        opt.max_chain = max_chain;
+        tool::BspBuilt built;
+        tool::BspStats st;
+        std::string why;
+        REQUIRE_MESSAGE(tool::build_bsp(ball.positions, ball.tris, ball.ids, opt, built, st, why), why);
+        MESSAGE("sphere 6x3 with --max-chain " << max_chain << ": " << st.splitters << " axis splits, " << st.triangles
+                                               << " triangles, depth " << st.max_depth);
+        CHECK(st.splitters > 0);
+        CHECK(st.triangles < 40 * ball.tris.size());
+        const std::vector<uint8_t> blob = tool::bsp_blob(built, tool::BspFit{ball.centre, ball.scale});
+        check("sphere 6x3 --max-chain " + std::to_string(max_chain), ball, true, &blob);
+    }
+}
+
 TEST_CASE("axis splits try the other axes when the longest one's median plane holds a cap") {
     // A closed cone: apex at x = 5, a ring of 600 at x = -5 and its cap, a fan in the plane x = -5. Most
     // corners lie in that plane, so the median on x (the longest axis) is the cap's plane, which leaves the

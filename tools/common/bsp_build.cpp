@@ -297,7 +297,7 @@ private:
 
     /// An axis plane across the polygons of `list`: perpendicular to an axis of their corners' box (the
     /// longest first), through the median corner on it (the plane's origin: that corner's vertex), the
-    /// first that has polygons on both sides. Appended to planes_ (with its group and no face), with its
+    /// first that leaves a polygon wholly on each side. Appended to planes_ (with its group and no face), with its
     /// classification of `list` in cls; kBspNone (planes_ as it was) when no axis does. Polygons lying in
     /// the plane, if any, stay in its node as usual.
     uint32_t splitter(const std::vector<uint32_t>& list, std::vector<int>& cls) {
@@ -326,7 +326,7 @@ private:
             faces_.push_back(0);
             const uint32_t index = static_cast<uint32_t>(planes_.size() - 1);
             classify_all(index, list, cls);
-            if (reaches_both(cls)) return index;
+            if (splits_off_both(cls)) return index;
             planes_.pop_back();
             groups_.pop_back();
             faces_.pop_back();
@@ -337,7 +337,7 @@ private:
     /// Splits the polygons of each node by its plane, depth first, in preorder (children after parents).
     /// With opt_.max_chain, a node of more polygons than that whose chosen plane leaves one side empty
     /// (a link of a chain, as every plane of a convex surface does) takes a splitter() plane instead
-    /// when one has polygons on both sides.
+    /// when one leaves a polygon wholly on each side.
     void build_tree(std::vector<uint32_t> all) {
         struct Item {
             std::vector<uint32_t> list;
@@ -407,7 +407,17 @@ private:
         const int s = sides(cls);
         return s == 1 || s == 2;
     }
-    static bool reaches_both(const std::vector<int>& cls) { return sides(cls) == 3; }
+    /// A polygon wholly on each side: both children then hold fewer polygons than the node, cut ones
+    /// counted on both sides (with only cut polygons on one side a split may cut every polygon again
+    /// and again, and the tree never ends).
+    static bool splits_off_both(const std::vector<int>& cls) {
+        bool front = false, back = false;
+        for (int c : cls) {
+            front = front || c == 1;
+            back = back || c == -1;
+        }
+        return front && back;
+    }
 
     /// Every point made on an edge's line between its ends joins the edge, in order along it.
     std::vector<uint32_t> closed_loop(const Poly& p) {
