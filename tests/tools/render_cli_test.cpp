@@ -903,6 +903,34 @@ TEST_CASE("hider-bsp reports OBJ errors with the file and the line, like hider-r
     }
 }
 
+TEST_CASE("hider-bsp refuses a model its tree cannot hold, and a failed run leaves the output file as it was") {
+    // A triangle 2e-4 wide at x = 1e6: the blob keeps the fit's centre to 30 bits, whose rounding times the
+    // scale put the vertices 3,000 world units out, past the tree's world. It was written (exit 0), and
+    // every reader refused the tree ("bad data"). Now: exit 2, with the reason and what to do.
+    const std::string far =
+        write_model("far_off.obj", "v 1000000.0003800001 0 0\nv 1000000.00058 0.0001 0\nv 1000000.00048 0 0.0002\nf 1 2 3\n");
+    const std::string out = scratch_path("far_off.hbsp");
+    const Run r = bsp_tool(far, out);
+    CHECK(r.code == 2);
+    CHECK_FALSE(r.output_created);
+    CHECK(contains(r.err, "far_off.obj: the model lies too far from the origin for its size"));
+    CHECK(contains(r.err, "move the model nearer the origin"));
+    const Run in_render = render(far, {"--algo", "bsp"});
+    CHECK(in_render.code == 2);
+    CHECK(contains(in_render.err, "too far from the origin"));
+    // Every face without area: an empty tree is no use, and says so.
+    const Run flat = bsp_tool(write_model("collinear.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\nf 3 2 1\n"), out);
+    CHECK(flat.code == 2);
+    CHECK(contains(flat.err, "no face with an area"));
+    // A camera outside the tree's world fails after the output was named: an existing file stays.
+    const std::string kept = scratch_path("kept.hpp");
+    std::ofstream(kept, std::ios::binary) << "keep me";
+    const Run cam = run_tool(kBspExe, {kTorus, "-o", kept, "--eye", "100,0,0"}, scratch_path("none"));
+    CHECK(cam.code == 2);
+    CHECK(contains(cam.err, "outside the tree's world"));
+    CHECK(read_file(kept) == "keep me");
+}
+
 TEST_CASE("hider-bsp --max-chain: off by default, N splits the chains across an axis, and --stats says how often") {
     auto depth_and_splits = [](const Args& extra) {
         const Run r = bsp_tool(kTorus, scratch_path("chain.hbsp"), extra);

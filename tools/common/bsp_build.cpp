@@ -985,6 +985,21 @@ bool bsp_from_obj(const std::string& path, const BspOptions& opt, std::vector<ui
         error = path + ": " + error;
         return false;
     }
+    // The blob keeps the centre to 30 bits: for a model far from the origin for its size, the rounding
+    // times the scale moves it off the tree's world (whose node boxes must hold every vertex).
+    const int32_t limit = kBspWorldLimitRaw - (int32_t{1} << kBspBoxShift);
+    for (const Vec3q16& v : scene.positions)
+        for (const Q16 c : {v.x, v.y, v.z})
+            if (c.raw() <= -limit || c.raw() >= limit) {
+                std::ostringstream o;
+                o << path << ": the model lies too far from the origin for its size (centre " << fit.centre[0] << ", "
+                  << fit.centre[1] << ", " << fit.centre[2] << ", extent " << 2 * half
+                  << "): a tree keeps its centre to 30 bits, which puts a vertex " << std::abs(to_double(c))
+                  << " world units from it, beyond the tree's world of +-" << limit / 65536
+                  << "; move the model nearer the origin";
+                error = o.str();
+                return false;
+            }
     BspBuilt tree;
     if (!build_bsp(scene.positions, scene.tris, scene.ids, opt, tree, stats, error)) {
         error = path + ": " + error;

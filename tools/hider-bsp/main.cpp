@@ -84,25 +84,30 @@ int main(int argc, char** argv) {
     std::vector<uint8_t> blob;
     BspStats st;
     if (!bsp_from_obj(model_path, opt, blob, st, why)) fail(why);
+    if (st.triangles == 0)
+        fail(model_path + ": no face with an area (" + std::to_string(st.degenerate) + " of " +
+             std::to_string(st.input_triangles) + " triangles degenerate on the grid): the tree would be empty");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::ofstream out(out_path, std::ios::binary);
+    // Everything is checked before the output is opened: a failure leaves an existing file as it was.
+    const AlignedBlob aligned(blob);
+    std::vector<uint32_t> stack(bsp_stack_entries(1u << 16));
+    BspTree tree;
+    const Status loaded = bsp_load(aligned.span(), {stack.data(), stack.size()}, tree);
+    if (loaded != Status::ok) fail(model_path + ": internal: the built tree does not load (" + status_name(loaded) + ")");
+    std::string contents;
     if (header) {
         std::string extra;
         if (!camera_options.empty()) {  // the camera in the tree's world, exactly as hider-render maps it
-            const AlignedBlob aligned(blob);
-            std::vector<uint32_t> stack(bsp_stack_entries(1u << 16));
-            BspTree tree;
             Scene scene;
-            if (bsp_load(aligned.span(), {stack.data(), stack.size()}, tree) != Status::ok) fail("internal: the built tree does not load");
             if (!bsp_scene(tree, cam, scene, why)) fail(model_path + ": " + why);
             extra = bake::camera_source(scene.camera, scene.width, scene.height);
         }
-        const std::string src =
-            bsp_header_source(blob, name, std::filesystem::path(model_path).filename().string(), camera_options, extra);
-        out.write(src.data(), static_cast<std::streamsize>(src.size()));
+        contents = bsp_header_source(blob, name, std::filesystem::path(model_path).filename().string(), camera_options, extra);
     } else {
-        out.write(reinterpret_cast<const char*>(blob.data()), static_cast<std::streamsize>(blob.size()));
+        contents.assign(reinterpret_cast<const char*>(blob.data()), blob.size());
     }
+    std::ofstream out(out_path, std::ios::binary);
+    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
     out.close();
     if (!out) fail(out_path + ": cannot write");
     if (stats) {
