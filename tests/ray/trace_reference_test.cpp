@@ -164,3 +164,31 @@ TEST_CASE("random scenes with a mesh match the double-precision ray tracer on >=
         CHECK(c.smooth.rate() >= 0.999);
     }
 }
+
+TEST_CASE("no shadow acne: a mesh seen from afar and a sphere lit from inside against the double-precision ray tracer") {
+    // A hit point is off its surface by up to about t 2^-18 (the triangle test's rounded direction): on a
+    // mesh it could lie behind a neighbouring triangle, which then shadowed it (0.15% of the pixels of a
+    // sphere mesh seen from 1,000 units went dark, 184 levels off); a sphere of radius 8,190 left from
+    // inside shadowed its own inside the same way (22 levels off with one bounce). Secondary rays now start
+    // lifted off the surface.
+    const std::string ball = std::string(HIDER_TEST_DATA) + "/obj/ico3.obj";
+    const std::pair<std::string, int> scenes[] = {
+        {"background 1 0 1\nambient 0.1 0.1 0.1\ncamera eye 0 0 100 target 0 0 0 fov 13.68554682526188\nmesh " + ball +
+             " scale 10 color 0.8 0.8 0.2\nlight directional 1 1 1\n", 40},
+        {"background 1 0 1\nambient 0.1 0.1 0.1\ncamera eye 0 0 1000 target 0 0 0 fov 1.3750327092781995\nmesh " + ball +
+             " scale 10 color 0.8 0.8 0.2\nlight point 3 3 999\n", 40},
+        {"background 1 0 1\nbounces 1\ncamera eye -7000 0 0 target 0 0 0 fov 90\nsphere 0 0 0 8190 color 0.9 0.9 0.2 reflect 0.5\n"
+         "sphere 0 0 0 1000 color 0.2 0.2 0.9 reflect 0.5\nlight point 8000 1000 0\nlight point 0 8100 0\n", 8},
+    };
+    int n = 0;
+    for (const auto& [text, worst] : scenes) {
+        const std::string path = std::string(HIDER_TEST_OUT) + "/acne_" + std::to_string(++n) + ".txt";
+        std::ofstream(path) << text;
+        tool::RayScene s;
+        std::string why;
+        REQUIRE_MESSAGE(tool::load_ray_scene(path, s, why), why);
+        const Comparison c = compare(s, 160, 120, "acne " + std::to_string(n));
+        CHECK(c.silhouettes.away > 10000);
+        CHECK(c.silhouettes.worst <= worst);  // near a mesh's edges too: where a neighbour shadowed a hit
+    }
+}

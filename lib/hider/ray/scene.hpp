@@ -46,7 +46,7 @@ struct Scene {
     Rgb ambient{0, 0, 0};         ///< light reaching every surface (unshadowed)
     Rgb background{0, 0, 0};      ///< colour of a ray that meets nothing
     uint8_t max_bounces = 0;      ///< reflections followed (0: none)
-    Q16 max_distance = Q16::max();  ///< a ray meets nothing farther than this
+    Q16 max_distance = Q16::max();  ///< a primary or mirror ray meets nothing farther (shadow rays: to the light)
     /// A sphere holding every sphere (radius 0: none): a ray that misses it skips all sphere tests.
     /// enclosing_sphere() makes one; validate_scene() checks that it holds them all.
     Sphere sphere_bound{};

@@ -3,7 +3,8 @@
 // in a loop (no recursion) up to Scene::max_bounces. Colour arithmetic (CONVENTIONS.md, "Ray tracing"):
 // light per channel in Q16 (255 -> 65535), weights in Q15, the pixel accumulated in Q23; all floors.
 // Tie rule: equal t goes to spheres, then planes, then meshes, each in array order, and within a mesh
-// to the smaller triangle index. A secondary ray ignores the flat or convex object it leaves.
+// to the smaller triangle index. A secondary ray ignores the flat or convex object it leaves, and leaves
+// a mesh or a sphere's inside lifted off the surface (ray_start()).
 #pragma once
 #include <hider/ray/cull.hpp>
 
@@ -107,6 +108,21 @@ inline Vec3q30 facing_normal(const Scene& s, const Hit& h, const Vec3q16& p, con
     return n;
 }
 
+/// Where the secondary rays of hit h at p (normal n facing the viewer) start. A flat object or a sphere
+/// seen from outside is skipped by them, so p serves. A mesh's neighbouring triangles and a sphere left
+/// from inside are not: p, off the surface by up to about t 2^-18 (the triangle test's rounded direction),
+/// may lie behind them, and its shadow rays would meet them at once (acne). So it is lifted towards the
+/// viewer by kRayEpsilonRaw + t 2^-17 (clamped to the world).
+inline Vec3q16 ray_start(const Hit& h, const Vec3q16& p, const Vec3q30& n) {
+    if (h.kind != ObjectKind::triangle && (h.kind != ObjectKind::sphere || h.front)) return p;
+    const int64_t lift = kRayEpsilonRaw + (h.t_q16 >> 17);
+    auto comp = [lift](Q16 c, Q30 nc) {
+        const int64_t v = c.raw() + ((nc.raw() * lift + (int64_t{1} << 29)) >> 30);
+        return Q16::from_raw(static_cast<int32_t>(clamp<int64_t>(v, 1 - kRayWorldLimitRaw, kRayWorldLimitRaw - 1)));
+    };
+    return {comp(p.x, n.x), comp(p.y, n.y), comp(p.z, n.z)};
+}
+
 inline const Surface& hit_surface(const Scene& s, const Hit& h) {
     if (h.kind == ObjectKind::sphere) return s.surfaces[s.spheres[h.object].surface];
     if (h.kind == ObjectKind::plane) return s.surfaces[s.planes[h.object].surface];
@@ -186,8 +202,9 @@ inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, 
         // The next rays leave this object on the side facing the viewer: a flat object or a sphere seen
         // from outside cannot be met again, so it is skipped (no self-shadowing acne at grazing angles).
         skip = (h.kind != ObjectKind::sphere || h.front) ? detail::Skip{h.kind, h.object, h.triangle} : detail::Skip{};
+        const Vec3q16 from = detail::ray_start(h, p, n);
         uint32_t e[3];
-        detail::irradiance(s, p, n, skip, stack, stats, e);
+        detail::irradiance(s, from, n, skip, stack, stats, e);
         const Rgb base = detail::surface_color(f, p, n);
         const uint32_t r = bounce < s.max_bounces ? f.reflect_q15 : 0;
         const uint32_t w_local = (weight * (kReflectOne - r)) >> 15;
@@ -198,7 +215,7 @@ inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, 
         }
         weight = (weight * r) >> 15;
         if (weight == 0) break;
-        set_ray(ray, p, reflect(ray.dir, n));
+        set_ray(ray, from, reflect(ray.dir, n));
     }
     auto out = [](uint32_t a) { return static_cast<uint8_t>(min<uint32_t>((a + (1u << 22)) >> 23, 255u)); };
     return {out(acc[0]), out(acc[1]), out(acc[2])};
