@@ -132,10 +132,45 @@ TEST_CASE("Every projection path lands within 0.2 pixel of gluLookAt + gluPerspe
             (void)p.project_row(vals16.data(), k, pts16.data());  // int16: the generic-type loops
             worst16 = std::max(worst16, worst_error(p, e, vals16.data(), k, pts16.data()));
         }
-        MESSAGE(std::string(v.name) << ": worst error in pixels: rows " << worst_row << ", points " << worst_point << ", int16 rows " << worst16);
+        MESSAGE(std::string(v.name) << ": worst error in pixels: rows " << worst_row << ", points " << worst_point << ", int16 rows "
+                                    << worst16 << "; bound " << p.error_bound_subpixels() / 16.0);
+        CHECK(p.error_bound_subpixels() <= 16);  // hider-plot stays quiet
+        CHECK(std::max({worst_row, worst_point, worst16}) * 16 <= p.error_bound_subpixels());
         CHECK(worst_row < 0.2);
         CHECK(worst_point < 0.2);
         CHECK(worst16 < 0.2);
+    }
+}
+
+TEST_CASE("A tall height range seen from close by: the error bound holds and says more than a pixel") {
+    // The int32 steps are scaled to the surface's box: when its corners reach far beyond the frame for the
+    // distance of the nearest point, their rounding (half a unit a step) spreads over many pixels. Heights
+    // 0..500 units under an eye 6 units away: the points in the frame lie up to a few pixels off, and
+    // error_bound_subpixels() must cover them (hider-plot then warns).
+    for (const int32_t y_unit : {128, 12850, 128502, 513000}) {  // heights up to 0.5, 50, 500, 2,000 units
+        CAPTURE(y_unit);
+        const Exact e{camera({0, 2, 6}, {0, 0, 0}, 60), 320, 240, 60};
+        Surface s = grid_surface();
+        s.y_unit_raw = y_unit;
+        SurfaceProjection p;
+        REQUIRE(p.prepare(e.cam, 320, 240, s) == Status::ok);
+        std::vector<uint8_t> vals(128, 0);
+        std::vector<PlotPoint> pts(128);
+        double worst = 0;
+        for (int k = 0; k < 64; ++k) {
+            for (int i = 0; i < 128; ++i) vals[i] = static_cast<uint8_t>((i * 7 + k * 13) % 97 == 0 ? 255 : 0);
+            (void)p.project_row(vals.data(), k, pts.data());
+            for (int i = 0; i < 128; ++i) {
+                double x = 0, y = 0, depth = 0;
+                if (pts[i].x == kNoPoint || !e.project(world(s, i, k, vals[i]), x, y, depth)) continue;
+                if (x < 0 || x > 320 || y < 0 || y > 240) continue;  // the bound is for points in the frame
+                worst = std::max({worst, std::fabs(pts[i].x / 16.0 - x), std::fabs(pts[i].y / 16.0 - y)});
+            }
+        }
+        MESSAGE("heights up to " << 255.0 * y_unit / 65536 << " units: worst error " << worst << " px, bound "
+                                 << p.error_bound_subpixels() / 16.0 << " px");
+        CHECK(worst * 16 <= p.error_bound_subpixels());
+        if (worst > 1) CHECK(p.error_bound_subpixels() > 16);
     }
 }
 

@@ -226,6 +226,19 @@ TEST_CASE("hider-plot: --mesh adds constant-x lines; PNG output; a clamped view 
     CHECK(read_file(png).rfind("\x89PNG\r\n\x1a\n", 0) == 0);
 }
 
+TEST_CASE("hider-plot: a view whose projection may be a pixel off warns, with the bound") {
+    // One peak of 500 units among zeros, the eye 6 units from the surface: the surface's box reaches far
+    // beyond the frame, and the far curve (all heights 0) was drawn 2.7 pixels off without a word.
+    const std::string f = write("pin.pgm", pgm(false, 3, 2, 255, [](int r, int c) { return r == 1 && c == 1 ? 255 : 0; }));
+    const Run pin = plot({"--heightmap", f, "--height", "-500", "--eye", "0,2,6", "--target", "0,0,0", "--shade", "id"});
+    CHECK(pin.code == 0);
+    CHECK(contains(pin.err, "hider-plot: warning: projected points may lie up to "));
+    CHECK(contains(pin.err, "frame more of it, or narrow the height range"));
+    const Run flat = plot({"--heightmap", f, "--height", "-0.5", "--eye", "0,2,6", "--target", "0,0,0", "--shade", "id"});
+    CHECK(flat.code == 0);
+    CHECK(flat.err.empty());
+}
+
 TEST_CASE("hider-plot: a malformed, truncated or unsupported height map is rejected with the file and the reason") {
     auto v = [](int r, int c) { return bump(r, c, 255); };
     SUBCASE("wrong magic") {

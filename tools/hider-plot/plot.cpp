@@ -225,6 +225,14 @@ bool render(const HeightGrid& g, const CameraD& cam, const Options& opt, Result&
     if (out.stats.points_clamped != 0)
         out.warning = std::to_string(out.stats.points_clamped) +
                       " projected points lay too far outside the frame and were clamped (segments near them may shift)";
+    out.error_subpixels = proj.error_bound_subpixels();
+    if (out.error_subpixels > 16) {
+        std::ostringstream o;
+        o << (out.warning.empty() ? "" : "; ") << "projected points may lie up to " << out.error_subpixels / 16.0
+          << " pixels from their exact place (the surface reaches far beyond the frame for the distance of its "
+             "nearest point: frame more of it, or narrow the height range)";
+        out.warning += o.str();
+    }
     return true;
 }
 

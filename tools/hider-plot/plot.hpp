@@ -51,7 +51,8 @@ struct Result {
     int width = 0, height = 0;
     std::vector<uint8_t> rgb;  ///< width * height * 3
     horizon::PlotStats stats;  ///< summed over bands (pixels) / of the last band (the rest)
-    std::string warning;       ///< non-empty when lib/ had to clamp something
+    std::string warning;       ///< non-empty when lib/ had to clamp something or may be a pixel off
+    int32_t error_subpixels = 0;  ///< SurfaceProjection::error_bound_subpixels()
 };
 
 /// Fills unset camera values: target = centre of the bounding box, eye from above the front edge

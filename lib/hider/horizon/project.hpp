@@ -83,6 +83,7 @@ public:
                     detail::round_shift(mul128(int64_t{view.near_raw}, int64_t{1} << 38), shift), 1));
             }
         }
+        error_subpixels_ = error_bound(w_bottom + kStepError);
         w_top = min<int64_t>(w_top + kStepError, (int64_t{1} << 29) - 1);
         n0_ = 0;
         while ((w_top << n0_) < (int64_t{1} << 29)) ++n0_;
@@ -109,6 +110,14 @@ public:
         }
         return Status::ok;
     }
+
+    /// A bound on how far (in 1/16 pixel) a point in the frame and in front of the near plane may lie
+    /// from its exact projection: the int32 steps round U, V and W by up to half a unit each, and a point
+    /// adds up samples + curves + heights of them; plus a quarter pixel for the reciprocal table, the
+    /// camera's rotation and the output's rounding. Below a pixel for a surface framed whole; it grows
+    /// with the ratio of the farthest corner's screen reach to the nearest point's distance (a tall
+    /// height range seen from close by). hider-plot warns above a pixel.
+    int32_t error_bound_subpixels() const { return error_subpixels_; }
 
     const Surface& surface() const { return surface_; }
     int32_t width() const { return width_; }
@@ -279,6 +288,22 @@ private:
         return true;
     }
 
+    /// error_bound_subpixels() for the axes just set, the nearest corner's scaled W being w_near.
+    int32_t error_bound(int64_t w_near) const {
+        const int64_t h_max = (int64_t{surface_.value_max} - surface_.value_min) >> value_shift_;
+        const int64_t e = (int64_t{surface_.samples} + surface_.curves + h_max + 2) / 2 + 1;  // units of each axis
+        const int64_t w_min = max<int64_t>(w_near, near_w_);
+        auto in_w_units = [&](int q) {  // e units of axis q in units of W's scale, rounded up
+            const int d = axis_[q].shift - axis_[2].shift;
+            return d >= 0 ? (d > 30 ? INT64_MAX / 4 : e << d) : ((e >> -d) + 1);
+        };
+        const int64_t ew = e, reach = 16 * int64_t{max(width_, height_)};
+        const int64_t worst = max(in_w_units(0), in_w_units(1));
+        if (worst >= INT64_MAX / 4 || w_min <= 0) return INT32_MAX;
+        // plus a quarter pixel: the reciprocal table, the camera's fixed-point rotation, the output's rounding
+        return static_cast<int32_t>(min<int64_t>((worst + reach * ew + w_min - 1) / w_min + 4, INT32_MAX));
+    }
+
     static constexpr bool in_world(int64_t c) { return c > -kWorldLimitRaw && c < kWorldLimitRaw; }
     /// (value - value_min) >> value_shift, below 2^15, for value in [value_min, value_max].
     int32_t reduce(int32_t value) const {
@@ -291,6 +316,7 @@ private:
     Sweep sweep_ = Sweep::curves;
     int32_t near_w_ = 1;
     int value_shift_ = 0, n0_ = 0, du_ = 0, dv_ = 0, fast_n_ = 0;
+    int32_t error_subpixels_ = 0;
     bool checked_ = true;  ///< project_row() must check near plane and slow path per sample
     bool level_ = false;   ///< W and V do not change along a curve (level_pass.hpp)
     bool compact_ = false;
