@@ -170,7 +170,8 @@ TEST_CASE("A tall height range seen from close by: the error bound holds and say
         MESSAGE("heights up to " << 255.0 * y_unit / 65536 << " units: worst error " << worst << " px, bound "
                                  << p.error_bound_subpixels() / 16.0 << " px");
         CHECK(worst * 16 <= p.error_bound_subpixels());
-        if (worst > 1) CHECK(p.error_bound_subpixels() > 16);
+        CHECK(p.error_bound_subpixels() <= 4 * 16 * worst + 16);  // not far above it either
+        if (y_unit >= 128502) CHECK(p.error_bound_subpixels() > 16);  // 500 units and up: over a pixel, hider-plot warns
     }
 }
 

@@ -914,6 +914,12 @@ TEST_CASE("hider-render --stats: bsp-front's covered pixels are those of the fac
                           "--stats"});
     REQUIRE(r.code == 0);
     CHECK(contains(r.out, "written 41 covered 41 overdraw 1.00"));
+    // With culling, from inside the torus's tube looking across its hole: the walk draws front faces
+    // (bsp_walk_faces()), not the back faces the eye's cell would see; covered said 0.
+    const Run inside = render(kTorus, {"--algo", "bsp-front", "--size", "64x48", "--eye", "1,0,0", "--target", "-1,0,0",
+                                       "--near", "0.01", "--stats"});
+    REQUIRE(inside.code == 0);
+    CHECK(contains(inside.out, "written 1139 covered 1139 overdraw 1.00"));
 }
 
 TEST_CASE("hider-bsp refuses a model its tree cannot hold, and a failed run leaves the output file as it was") {
@@ -934,6 +940,7 @@ TEST_CASE("hider-bsp refuses a model its tree cannot hold, and a failed run leav
     // Every face without area: an empty tree is no use, and says so.
     const Run flat = bsp_tool(write_model("collinear.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\nf 3 2 1\n"), out);
     CHECK(flat.code == 2);
+    CHECK_FALSE(flat.output_created);
     CHECK(contains(flat.err, "no face with an area"));
     // A camera outside the tree's world fails after the output was named: an existing file stays.
     const std::string kept = scratch_path("kept.hpp");

@@ -35,50 +35,6 @@ uint32_t count_covered(Span<const ScreenPoly> polys, Span<const PieceCut> cuts, 
     return n;
 }
 
-/// Newell's face of each triangle (NewellOptions::face_ids): its Mesh::ids face when every vertex of
-/// that face's triangles lies exactly on one plane of the fixed-point grid, else a face of its own. An
-/// OBJ polygon that is not flat must have its triangles ordered among themselves like any others.
-std::vector<uint32_t> flat_faces(const Mesh& mesh) {
-    if (mesh.ids.empty()) return {};
-    struct Face {
-        __int128 n[3] = {0, 0, 0}, d = 0;  // n . p = d for each of its vertices p
-        bool has_plane = false, flat = true;
-    };
-    std::unordered_map<uint32_t, Face> faces;
-    auto pos = [&](uint16_t v) {
-        const Vec3q16& p = mesh.positions[v];
-        return std::array<__int128, 3>{p.x.raw(), p.y.raw(), p.z.raw()};
-    };
-    for (int pass = 0; pass < 2; ++pass)
-        for (size_t t = 0; t < mesh.tris.size(); ++t) {
-            Face& f = faces[mesh.ids[t]];
-            const auto a = pos(mesh.tris[t].v[0]), b = pos(mesh.tris[t].v[1]), c = pos(mesh.tris[t].v[2]);
-            if (pass == 0 && !f.has_plane) {  // the first triangle of the face with a plane (|coordinates| < 2^29)
-                const __int128 u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-                f.n[0] = u[1] * w[2] - u[2] * w[1];
-                f.n[1] = u[2] * w[0] - u[0] * w[2];
-                f.n[2] = u[0] * w[1] - u[1] * w[0];
-                f.d = f.n[0] * a[0] + f.n[1] * a[1] + f.n[2] * a[2];
-                f.has_plane = f.n[0] != 0 || f.n[1] != 0 || f.n[2] != 0;
-            }
-            if (pass == 1 && f.has_plane)
-                for (const auto& p : {a, b, c}) f.flat = f.flat && f.n[0] * p[0] + f.n[1] * p[1] + f.n[2] * p[2] == f.d;
-        }
-    std::vector<uint32_t> out(mesh.tris.size());
-    std::unordered_map<uint32_t, uint32_t> number;  // only equality matters: faces renumbered from 0
-    uint32_t next = 0;
-    for (size_t t = 0; t < mesh.tris.size(); ++t) {
-        if (!faces[mesh.ids[t]].flat) {
-            out[t] = next++;
-            continue;
-        }
-        const auto it = number.emplace(mesh.ids[t], next).first;
-        next += it->second == next;
-        out[t] = it->second;
-    }
-    return out;
-}
-
 /// Storage of one sorted render, what an application would declare statically on a device.
 struct SortedStore {
     std::vector<ScreenPoly> polys;
@@ -325,6 +281,47 @@ bool render(const Scene& scene, const RenderOptions& opt, RenderResult& out, std
         case PixelFormat::grey8: return render_format<Grey8Format>(scene, opt, out, error);
     }
     return false;
+}
+
+std::vector<uint32_t> flat_faces(const Mesh& mesh) {
+    if (mesh.ids.empty()) return {};
+    struct Face {
+        __int128 n[3] = {0, 0, 0}, d = 0;  // n . p = d for each of its vertices p
+        bool has_plane = false, flat = true;
+    };
+    std::unordered_map<uint32_t, Face> faces;
+    auto pos = [&](uint16_t v) {
+        const Vec3q16& p = mesh.positions[v];
+        return std::array<__int128, 3>{p.x.raw(), p.y.raw(), p.z.raw()};
+    };
+    for (int pass = 0; pass < 2; ++pass)
+        for (size_t t = 0; t < mesh.tris.size(); ++t) {
+            Face& f = faces[mesh.ids[t]];
+            const auto a = pos(mesh.tris[t].v[0]), b = pos(mesh.tris[t].v[1]), c = pos(mesh.tris[t].v[2]);
+            if (pass == 0 && !f.has_plane) {  // the first triangle of the face with a plane (|coordinates| < 2^29)
+                const __int128 u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+                f.n[0] = u[1] * w[2] - u[2] * w[1];
+                f.n[1] = u[2] * w[0] - u[0] * w[2];
+                f.n[2] = u[0] * w[1] - u[1] * w[0];
+                f.d = f.n[0] * a[0] + f.n[1] * a[1] + f.n[2] * a[2];
+                f.has_plane = f.n[0] != 0 || f.n[1] != 0 || f.n[2] != 0;
+            }
+            if (pass == 1 && f.has_plane)
+                for (const auto& p : {a, b, c}) f.flat = f.flat && f.n[0] * p[0] + f.n[1] * p[1] + f.n[2] * p[2] == f.d;
+        }
+    std::vector<uint32_t> out(mesh.tris.size());
+    std::unordered_map<uint32_t, uint32_t> number;  // only equality matters: faces renumbered from 0
+    uint32_t next = 0;
+    for (size_t t = 0; t < mesh.tris.size(); ++t) {
+        if (!faces[mesh.ids[t]].flat) {
+            out[t] = next++;
+            continue;
+        }
+        const auto it = number.emplace(mesh.ids[t], next).first;
+        next += it->second == next;
+        out[t] = it->second;
+    }
+    return out;
 }
 
 std::vector<uint32_t> decode_ids(const RenderResult& r) {

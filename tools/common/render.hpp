@@ -66,6 +66,12 @@ struct RenderResult {
 /// Renders `scene` with lib/ only. Returns false with a reason for unusable options.
 bool render(const Scene& scene, const RenderOptions& opt, RenderResult& out, std::string& error);
 
+/// Newell's face of each triangle (NewellOptions::face_ids) as render() passes it: mesh.ids' face where
+/// all that face's vertices lie exactly on one plane of the fixed-point grid, else a face of its own.
+/// (An OBJ quad with decimal coordinates off the axes is seldom exactly flat on the grid: its triangles
+/// are then ordered like any others, at the cost of a few pair tests.)
+std::vector<uint32_t> flat_faces(const Mesh& mesh);
+
 /// Face id per pixel decoded from an RGB888 id render (0 = background).
 std::vector<uint32_t> decode_ids(const RenderResult& r);
 

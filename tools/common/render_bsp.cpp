@@ -11,7 +11,7 @@ namespace hider::tool {
 namespace {
 
 /// Pixels covered by at least one triangle the walk may draw (an independent count for the overdraw):
-/// not culled, and of the faces the eye's cell sees when the cells are labelled (bsp_visible_faces()).
+/// of the faces it draws (bsp_walk_faces(): front faces when culling, else those the eye's cell sees).
 template <class Frame>
 uint32_t covered_pixels(const View& view, const BspTree& tree, const std::vector<ScreenVertex>& verts, bool cull,
                         const Vec3q16& eye, const Frame& whole) {
@@ -19,14 +19,16 @@ uint32_t covered_pixels(const View& view, const BspTree& tree, const std::vector
     uint32_t n = 0;
     FrameStats st;
     std::vector<uint32_t> stack(bsp_stack_entries(tree.max_depth));
-    const BspFaces faces = bsp_visible_faces(view, eye, tree, {stack.data(), stack.size()});
+    DrawOptions walk;
+    walk.cull = cull;
+    const BspFaces faces = bsp_walk_faces(view, eye, tree, walk, {stack.data(), stack.size()});
     for (const BspNode& node : tree.nodes) {
         const int side = detail::eye_side(tree, node, eye);
         if (side == 0) continue;
         for (uint32_t t = node.first; t < node.first + node.count; ++t) {
             const BspTriangle& tri = tree.triangles[t];
             const bool front = (side > 0) != ((tri.face & kBspFaceBack) != 0);  // the eye on its front side
-            if ((cull && !front) || !bsp_draws(faces, front)) continue;
+            if (!bsp_draws(faces, front)) continue;
             for_each_clipped(view, tree.vertices, {verts.data(), verts.size()}, tri.v[0], tri.v[1], tri.v[2], st,
                              [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
                                  TriangleRaster tr;

@@ -116,7 +116,8 @@ int newell_run_command(const Args& args) {
                    {links.data(), 2 * cap}, {cells.data(), cells.size()}, {chain.data(), cap},
                    {reorders.data(), reorders.size()}};
     job.order = &order;
-    job.options.face_ids = {p.scene.ids.data(), p.scene.ids.size()};  // as render() passes them
+    const std::vector<uint32_t> faces = flat_faces(p.scene.mesh());  // as render() passes them
+    job.options.face_ids = {faces.data(), faces.size()};
     hider_bench_newell(&job);
     if (job.status != Status::ok && job.status != Status::capacity_exceeded)
         fail(model_path + ": newell_order: " + status_name(job.status));

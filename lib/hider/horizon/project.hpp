@@ -26,6 +26,7 @@ public:
     /// invalid_argument (fewer than 2 samples or curves, dx or dz <= 0, value_min > value_max, y_unit < 1),
     /// out_of_range (a corner of the surface's bounding box outside the world range).
     Status prepare(const Camera& cam, int32_t width, int32_t height, const Surface& s) {
+        error_subpixels_ = INT32_MAX;
         if (s.samples < 2 || s.curves < 2 || s.samples > kMaxCount || s.curves > kMaxCount || s.dx.raw() <= 0 ||
             s.dz.raw() <= 0 || s.value_min > s.value_max || s.y_unit_raw < 1)
             return Status::invalid_argument;
@@ -292,16 +293,16 @@ private:
     int32_t error_bound(int64_t w_near) const {
         const int64_t h_max = (int64_t{surface_.value_max} - surface_.value_min) >> value_shift_;
         const int64_t e = (int64_t{surface_.samples} + surface_.curves + h_max + 2) / 2 + 1;  // units of each axis
-        const int64_t w_min = max<int64_t>(w_near, near_w_);
+        const int64_t w_min = max<int64_t>(w_near, near_w_);  // near_w_ >= 1
         auto in_w_units = [&](int q) {  // e units of axis q in units of W's scale, rounded up
             const int d = axis_[q].shift - axis_[2].shift;
             return d >= 0 ? (d > 30 ? INT64_MAX / 4 : e << d) : ((e >> -d) + 1);
         };
-        const int64_t ew = e, reach = 16 * int64_t{max(width_, height_)};
+        const int64_t reach = 16 * int64_t{max(width_, height_)};  // |X|, |Y| of a point in the frame
         const int64_t worst = max(in_w_units(0), in_w_units(1));
-        if (worst >= INT64_MAX / 4 || w_min <= 0) return INT32_MAX;
+        if (worst >= INT64_MAX / 4) return INT32_MAX;
         // plus a quarter pixel: the reciprocal table, the camera's fixed-point rotation, the output's rounding
-        return static_cast<int32_t>(min<int64_t>((worst + reach * ew + w_min - 1) / w_min + 4, INT32_MAX));
+        return static_cast<int32_t>(min<int64_t>((worst + reach * e + w_min - 1) / w_min + 4, INT32_MAX));
     }
 
     static constexpr bool in_world(int64_t c) { return c > -kWorldLimitRaw && c < kWorldLimitRaw; }
@@ -316,7 +317,7 @@ private:
     Sweep sweep_ = Sweep::curves;
     int32_t near_w_ = 1;
     int value_shift_ = 0, n0_ = 0, du_ = 0, dv_ = 0, fast_n_ = 0;
-    int32_t error_subpixels_ = 0;
+    int32_t error_subpixels_ = INT32_MAX;  ///< unknown until prepare() succeeds
     bool checked_ = true;  ///< project_row() must check near plane and slow path per sample
     bool level_ = false;   ///< W and V do not change along a curve (level_pass.hpp)
     bool compact_ = false;

@@ -22,23 +22,30 @@ struct ScreenPoly {
     uint32_t moved_at;               ///< Newell: the chain of moves it was last moved in (kNotMoved if never)
     uint32_t cut;                    ///< newest cut of a piece in the cut pool, kNoCut for a whole triangle
     uint8_t flags;                   ///< kPolyFront
-    uint8_t part;                    ///< which of the screen triangles clipping made of `tri` (0..6)
+    uint8_t part;                    ///< which of the screen triangles clipping made of `tri` (0..13)
 };
 static_assert(sizeof(ScreenPoly) == 56, "ScreenPoly layout is documented in README.md");
+static_assert(ClipPolygon::kMaxVertices - 2 <= 16, "a clipped triangle's parts must fit plane_name()'s 4 bits");
 
-/// Mesh triangles the object-space algorithms accept: below 2^28, so that a plane's name fits 31 bits.
-constexpr uint32_t kMaxPolyTriangles = uint32_t{1} << 28;
+/// Mesh triangles the object-space algorithms accept (build_polys() drops the rest): below 2^27, so
+/// that a plane's name fits 31 bits.
+constexpr uint32_t kMaxPolyTriangles = uint32_t{1} << 27;
 
-/// The name of p's plane: its mesh triangle and clipped part. The parts of a clipped triangle lie in
-/// slightly different planes (their clip vertices are rounded), so a side found against one part must
-/// not be taken for another's. A piece keeps its parent's plane.
-inline uint32_t plane_name(const ScreenPoly& p) { return p.tri | uint32_t{p.part} << 28; }
+/// The name of p's plane, bits 0-26 its mesh triangle, bits 27-30 its clipped part (bit 31 stays free
+/// for kCutFar). The parts of a clipped triangle lie in slightly different planes (their clip vertices
+/// are rounded), so a side found against one part must not be taken for another's. A piece keeps its
+/// parent's plane. Precondition: p.tri < kMaxPolyTriangles, p.part < 16 (as build_polys() makes them).
+inline uint32_t plane_name(const ScreenPoly& p) {
+    HIDER_ASSERT(p.tri < kMaxPolyTriangles && p.part < 16);
+    return p.tri | uint32_t{p.part} << 27;
+}
 
 /// One cut of a piece: the half-plane it keeps, the older cut before it and the plane that made it.
 /// Two records per cut (one for each side), 16 bytes each:
 ///   line      x0 y0 x1 y1 (int16 each, subpixels)   bytes 0-7
 ///   prev      older cut of the same piece, or kNoCut  bytes 8-11
-///   plane     bit 31: the piece lies on the far side; bits 0-30: plane_name() of the polygon that cut it
+///   plane     bits 0-30: plane_name() of the polygon that cut it (0-26 its mesh triangle, 27-30 its
+///             clipped part); bit 31 (kCutFar): the piece lies on the far side
 struct PieceCut {
     CutLine line;
     uint32_t prev;
@@ -61,7 +68,7 @@ inline void update_extents(ScreenPoly& p) {
 /// cull is set, zero-area triangles and those covering no pixel centre of the frame skipped. Every
 /// mesh triangle lands in exactly one count of st: drawn (a polygon in `out`), culled, degenerate
 /// (zero area) or outside (clipped away or no pixel centre). When `out` fills, the rest are dropped
-/// and counted (st.status = capacity_exceeded), as are the triangles from kMaxPolyTriangles on.
+/// and counted (st.status = capacity_exceeded); so are the triangles from kMaxPolyTriangles on (as outside).
 inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
                         BoundedList<ScreenPoly>& out, FrameStats& st) {
     FrameView<Grey8Format> whole;  // geometry only: bounds of the full frame
@@ -72,6 +79,11 @@ inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVer
     const BandBounds bb = band_bounds(whole);
     for (size_t t = 0; t < mesh.tris.size(); ++t) {
         ++st.triangles_in;
+        if (t >= kMaxPolyTriangles) {  // no plane name left for it
+            ++st.triangles_outside;
+            st.status = Status::capacity_exceeded;
+            continue;
+        }
         bool drawn = false, culled = false, degenerate = false;
         uint8_t part = 0;
         FrameStats clip;
@@ -85,7 +97,7 @@ inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVer
                          static_cast<uint8_t>(area < 0 ? kPolyFront : 0),
                          static_cast<uint8_t>(part - 1)};
             update_extents(p);
-            if (t < kMaxPolyTriangles && out.push_back(p)) drawn = true;
+            if (out.push_back(p)) drawn = true;
             else st.status = Status::capacity_exceeded;
         });
         st.triangles_clipped += clip.triangles_clipped;
