@@ -2,6 +2,7 @@
 #include "host/ppm.hpp"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -18,23 +19,50 @@ std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>
     return out;
 }
 
-bool write_file(const std::string& path, const std::vector<uint8_t>& bytes, std::string& error) {
-    std::ofstream f(path, std::ios::binary);
+namespace {
+
+bool write_bytes(const std::string& path, const char* data, size_t size, std::string& error) {
+    // POSIX lstat/access rather than <filesystem>, which the WebAssembly build's libc++ lacks.
+    struct stat st {};
+    const bool exists = ::lstat(path.c_str(), &st) == 0;
+#if defined(__wasi__)
+    const bool in_place = true;  // the web build's file system has no rename: written in place
+#else
+    const bool in_place = exists && !S_ISREG(st.st_mode);  // /dev/stdout, a pipe, a symlink
+#endif
+    if (exists && !in_place && ::access(path.c_str(), W_OK) != 0) {  // a read-only file stays refused
+        error = path + ": " + std::strerror(errno);
+        return false;
+    }
+    const std::string target = in_place ? path : path + ".partial";
+    std::ofstream f(target, std::ios::binary);
     if (!f) {
         error = path + ": " + std::strerror(errno);
         return false;
     }
-    f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    f.write(data, static_cast<std::streamsize>(size));
     f.close();
     if (!f) {
-        // A truncated file holds a partial image: do not leave it behind (but never unlink a device).
-        // POSIX stat rather than <filesystem>, which the WebAssembly build's libc++ lacks.
-        struct stat st {};
-        if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) std::remove(path.c_str());
+        if (!in_place) std::remove(target.c_str());  // a truncated file: never left behind
         error = path + ": write failed";
         return false;
     }
+    if (!in_place && std::rename(target.c_str(), path.c_str()) != 0) {
+        error = path + ": " + std::strerror(errno);
+        std::remove(target.c_str());
+        return false;
+    }
     return true;
+}
+
+}  // namespace
+
+bool write_file(const std::string& path, const std::vector<uint8_t>& bytes, std::string& error) {
+    return write_bytes(path, reinterpret_cast<const char*>(bytes.data()), bytes.size(), error);
+}
+
+bool write_file(const std::string& path, const std::string& bytes, std::string& error) {
+    return write_bytes(path, bytes.data(), bytes.size(), error);
 }
 
 bool write_ppm(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, std::string& error) {

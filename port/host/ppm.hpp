@@ -25,9 +25,12 @@ void append_rgb888(const FrameView<Format, Depth>& f, std::vector<uint8_t>& out)
 /// The bytes of a P6 file: "P6\n<W> <H>\n255\n" then W*H*3 bytes of `rgb`.
 std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>& rgb);
 
-/// Writes `bytes` to `path` (binary); on failure removes a partial file, returns false and sets `error`
-/// to "path: reason". Shared by the PPM and PNG writers.
+/// Writes `bytes` to `path` (binary) through a temporary file beside it, renamed over `path` only when
+/// every byte is written: a failed write leaves an existing file as it was and no partial one. A path
+/// that is a device, a pipe or a symlink is written in place. On failure returns false and sets `error`
+/// to "path: reason". Shared by the PPM and PNG writers and the tools' other outputs.
 bool write_file(const std::string& path, const std::vector<uint8_t>& bytes, std::string& error);
+bool write_file(const std::string& path, const std::string& bytes, std::string& error);
 
 /// Writes a P6 file; on failure returns false and sets `error` to "path: reason".
 bool write_ppm(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, std::string& error);

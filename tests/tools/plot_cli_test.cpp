@@ -314,6 +314,16 @@ TEST_CASE("hider-plot: bad options are rejected with a plain reason") {
     check_error(run({"--function", "sinc", "-o", out_ppm(), "--curves"}), {"--curves needs a value"}, Usage::yes);
     const std::string bad_out = path("no_such_dir/out.ppm");
     check_error(run({"--function", "sinc", "-o", bad_out}, bad_out), {bad_out});
+    // Found by a red-team pass: a zero up vector was blamed on the view direction; a directory given as
+    // the height map aborted (uncaught std::ios_failure); any extension but ".png" wrote PPM bytes.
+    check_error(plot({"--function", "sinc", "--up", "0,0,0"}), {"up vector is zero"});
+    check_error(plot({"--heightmap", path("")}), {"cannot open for reading", "Is a directory"});
+    const std::string jpg = path("out.jpg");
+    check_error(run({"--function", "sinc", "-o", jpg}, jpg), {"unknown image format '.jpg'", "use .ppm or .png"});
+    const std::string upper = path("out.PNG");
+    const Run png = run({"--function", "sinc", "--size", "40x30", "-o", upper}, upper);
+    CHECK(png.code == 0);
+    CHECK(read_file(upper).rfind("\x89PNG", 0) == 0);
 }
 
 TEST_CASE("hider-plot: a view that cannot see the surface is an error") {

@@ -595,6 +595,7 @@ TEST_CASE("A full Newell pool is a warning naming the pool and the size it neede
     const Run strict = render(model, with(cam, {"--no-cull", "--algo", "reverse", "--pool", "100", "--strict"}));
     CHECK(strict.code == 2);
     CHECK(contains(strict.err, "hider-render: error: Newell's cut pool of 100 polygons is full"));
+    CHECK_FALSE(strict.output_created);  // an error leaves no image (it wrote the incomplete one before)
     // The size it names is enough: no warning, exit 0 even with --strict.
     const Run enough = render(model, with(cam, {"--no-cull", "--algo", "newell", "--pool", std::to_string(needed), "--strict"}));
     INFO("stderr with the named pool: ", enough.err);
@@ -815,6 +816,26 @@ TEST_CASE("A tree from hider-bsp and the same OBJ built in memory give byte-iden
     }
 }
 
+TEST_CASE("A tree past a mesh's 65,536 vertices renders from its blob as from its OBJ") {
+    // dense-1-1000's 1,000 triangles cut into a tree of 73,524 vertices (the bunny's: 96,703). The walk
+    // indexes them in 32 bits; hider-render refused the blob ("hider meshes hold at most 65536").
+    const auto [model, cam] = generated("dense-1-1000");
+    const std::string blob = scratch_path("dense1000.hbsp");
+    const Run built = run_tool(kBspExe, {model, "-o", blob, "--stats"}, blob);
+    REQUIRE(built.code == 0);
+    const size_t at = built.out.find(" vertices ");
+    REQUIRE(at != std::string::npos);
+    CHECK(std::atol(built.out.c_str() + at + 10) > 65536);
+    const Args flags = with(cam, {"--algo", "bsp", "--size", "96x72", "--shade", "id", "--no-cull"});
+    const Run from_blob = render(blob, flags);
+    INFO("stderr: ", from_blob.err);
+    REQUIRE(from_blob.code == 0);
+    const std::string blob_image = read_file(out_ppm());
+    const Run from_obj = render(model, flags);
+    REQUIRE(from_obj.code == 0);
+    CHECK(read_file(out_ppm()) == blob_image);
+}
+
 TEST_CASE("hider-bsp's output is deterministic, and its .hpp holds the blob's bytes under the given name") {
     const std::string again = scratch_path("torus_again.hbsp");
     REQUIRE(bsp_tool(kTorus, again).code == 0);
@@ -950,6 +971,31 @@ TEST_CASE("hider-bsp refuses a model its tree cannot hold, and a failed run leav
     CHECK(contains(cam.err, "outside the tree's world"));
     CHECK(read_file(kept) == "keep me");
 }
+
+TEST_CASE("A write that fails midway leaves hider-bsp's existing output as it was, and nothing partial") {
+    // hider-bsp (like hider-bake and hider-scenes) wrote in place: a failed write left a truncated file
+    // over the good one. Outputs now go through a temporary file renamed over the output when whole.
+    const std::string out = scratch_path("kept.hbsp");
+    REQUIRE(bsp_tool(write_model("cube_small.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"), out).code == 0);
+    const std::string good = read_file(out);
+    REQUIRE(!good.empty());
+    const Run r = run_tool(kBspExe, {kTorus, "-o", out}, scratch_path("none"), "trap '' XFSZ; ulimit -f 1; ");
+    CHECK(r.code == 2);
+    CHECK(contains(r.err, out + ": write failed"));
+    CHECK(read_file(out) == good);
+    CHECK_FALSE(exists(out + ".partial"));
+}
+
+#if !defined(__SANITIZE_ADDRESS__)  // ASan reserves far more address space than the limit below
+TEST_CASE("A tool that runs out of memory says so and exits 2, without an output") {
+    // The tools are built without exceptions: a failed allocation aborted (std::bad_alloc, exit 134).
+    const Run r = run({std::string(HIDER_TEST_DATA) + "/models/stanford-bunny.obj", "-o", out_ppm(), "--algo", "bsp"}, out_ppm(),
+                      "ulimit -v 50000; ");
+    CHECK(r.code == 2);
+    CHECK(r.err == "hider-render: out of memory\n");
+    CHECK_FALSE(r.output_created);
+}
+#endif
 
 TEST_CASE("hider-bsp --max-chain: off by default, N splits the chains across an axis, and --stats says how often") {
     auto depth_and_splits = [](const Args& extra) {

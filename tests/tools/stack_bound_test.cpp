@@ -379,3 +379,27 @@ TEST_CASE("hider-stack: register lists and name patterns") {
     CHECK(glob_match("k*E", "kMeshE"));
     CHECK(!glob_match("k*E", "kMesh"));
 }
+
+TEST_CASE("hider-stack: a function without its code, an sp step past 16 MB and a --not-pointers name of nothing give no bound") {
+    // A red-team pass: each of these gave a bound too low, with exit 0.
+    const std::string dump = chain_dump();
+    // big's symbol stays, its disassembly goes (a cut-off dump): it counted as a frame of 0 (1,072 for 1,680).
+    const size_t from = dump.find("00000130 <big>:"), to = dump.find("00000150 <spin>:");
+    REQUIRE(from != std::string::npos);
+    REQUIRE(to != std::string::npos);
+    const stackbound::Bound cut = bound_of(dump.substr(0, from) + dump.substr(to), "reset");
+    CHECK(!cut.ok);
+    CHECK(cut.why.find("big: no instructions in the dump for its") != std::string::npos);
+    // reset's "sub sp, #16" as a 32-bit wrap of -8: the frame became 0.
+    std::string wrap = dump;
+    const size_t sub = wrap.find("sub\tsp, #16");
+    REQUIRE(sub != std::string::npos);
+    wrap.replace(sub, 11, "sub\tsp, #4294967288");
+    const stackbound::Bound w = bound_of(wrap, "reset");
+    CHECK(!w.ok);
+    CHECK(w.why.find("4294967288") != std::string::npos);
+    // A data object name that matches nothing was ignored: a typo would let pointers through unnoticed.
+    const stackbound::Bound typo = bound_of(dump, "reset", {"nope"});
+    CHECK(!typo.ok);
+    CHECK(typo.why == "--not-pointers nope matches no data object");
+}

@@ -1025,7 +1025,9 @@ bool bsp_scene(const BspTree& tree, const CameraArgs& args, Scene& out, std::str
     CameraArgs cam = args;
     cam.fit_centre = fit.centre;
     cam.fit_scale = fit.scale;
-    if (!build_scene(model, cam, out, error)) return false;
+    // A tree's cuts may take it past a Mesh's 65,536 vertices (the bunny's: 96,703); its walk indexes them
+    // in 32 bits and projects them without a Mesh.
+    if (!build_scene(model, cam, out, error, tree.vertices.size())) return false;
     for (size_t i = 0; i < tree.vertices.size(); ++i)
         if (!(out.positions[i] == tree.vertices[i])) {
             error = "the tree's world transform does not reproduce its vertices";

@@ -2,6 +2,9 @@
 #include "common/cli.hpp"
 
 #include <cctype>
+#include <cfloat>
+#include <cstdio>
+#include <new>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -13,7 +16,22 @@ bool parse_double(const std::string& s, double& out) {
     char* end = nullptr;
     errno = 0;
     out = std::strtod(s.c_str(), &end);
-    return end == s.c_str() + s.size() && errno == 0 && std::isfinite(out);
+    // An underflow (1e-310, a denormal or 0) is still a number strtod read; an overflow is not.
+    const bool in_range = errno == 0 || (errno == ERANGE && std::fabs(out) <= DBL_MIN);
+    return end == s.c_str() + s.size() && in_range && std::isfinite(out);
+}
+
+namespace {
+const char* g_tool_name = "hider";
+void out_of_memory() {
+    std::fprintf(stderr, "%s: out of memory\n", g_tool_name);
+    std::_Exit(2);  // outputs are written whole or not at all (port::write_file), so nothing partial is left
+}
+}  // namespace
+
+void exit_2_when_out_of_memory(const char* tool) {
+    g_tool_name = tool;
+    std::set_new_handler(out_of_memory);
 }
 
 bool parse_int(const std::string& s, long& out) {

@@ -7,8 +7,12 @@
 
 namespace hider::tool {
 
-/// strtod syntax, the whole string, finite. False on anything else.
+/// strtod syntax, the whole string, finite (an underflow to a denormal or 0 included). False on anything else.
 bool parse_double(const std::string& s, double& out);
+
+/// Makes an allocation that fails print "<tool>: out of memory" and exit with status 2 (the tools are
+/// built without exceptions: std::bad_alloc would abort). Call first in main().
+void exit_2_when_out_of_memory(const char* tool);
 
 /// Decimal integer (optional '-'), the whole string, in range of long. False on anything else.
 bool parse_int(const std::string& s, long& out);

@@ -33,14 +33,14 @@ bool to_q16(double v, Q16& out) {
 
 }  // namespace
 
-bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std::string& error) {
+bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std::string& error, size_t max_vertices) {
     if (model.vertices.empty() || model.faces.empty()) {
         error = "empty model";
         return false;
     }
-    if (model.vertices.size() > kMaxMeshVertices) {
+    if (model.vertices.size() > max_vertices) {
         error = "model has " + std::to_string(model.vertices.size()) + " vertices; hider meshes hold at most " +
-                std::to_string(kMaxMeshVertices);
+                std::to_string(max_vertices);
         return false;
     }
     if (args.width < 1 || args.height < 1 || args.width > kMaxFrameSide || args.height > kMaxFrameSide) {

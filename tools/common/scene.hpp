@@ -47,8 +47,10 @@ struct Scene {
 };
 
 /// Converts a loaded OBJ model and camera arguments to a Scene. On failure returns false and sets
-/// `error` to a plain reason (the caller prefixes the file name).
-bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std::string& error);
+/// `error` to a plain reason (the caller prefixes the file name). `max_vertices`: a Mesh's limit by
+/// default; a BSP tree's vertices (32-bit indices, drawn without a Mesh) pass their own.
+bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std::string& error,
+                 size_t max_vertices = kMaxMeshVertices);
 
 /// Exact double value of a Q16 world coordinate (for references that must see hider's own scene).
 inline double to_double(Q16 v) { return v.raw() / 65536.0; }

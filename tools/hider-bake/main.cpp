@@ -7,7 +7,9 @@
 #include <iostream>
 #include <string>
 
+#include "common/cli.hpp"
 #include "common/obj.hpp"
+#include "host/ppm.hpp"
 #include "common/scene.hpp"
 #include "hider-bake/cli.hpp"
 #include "hider-bake/emit.hpp"
@@ -34,6 +36,7 @@ std::string base_name(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    hider::tool::exit_2_when_out_of_memory("hider-bake");
     std::string model_path, out_path;
     bake::BakeInfo info;
     CameraArgs cam;
@@ -69,10 +72,6 @@ int main(int argc, char** argv) {
 
     info.model = base_name(model_path);
     const std::string text = bake::emit_header(scene, info);
-    std::ofstream out(out_path, std::ios::binary);
-    if (!out) fail(out_path + ": " + std::strerror(errno));
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (!out) fail(out_path + ": write failed");
+    if (!port::write_file(out_path, text, why)) fail(why);
     return 0;
 }

@@ -11,7 +11,9 @@
 #include <sstream>
 #include <string>
 
+#include "common/cli.hpp"
 #include "common/ray_scene.hpp"
+#include "host/ppm.hpp"
 #include "hider-bake/cli.hpp"
 #include "hider-bake/emit.hpp"
 
@@ -130,6 +132,7 @@ std::string emit(const RayScene& s, const std::string& name, const std::string& 
 }  // namespace
 
 int main(int argc, char** argv) {
+    hider::tool::exit_2_when_out_of_memory("hider-bake-ray");
     std::string scene_path, out_path, name;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -153,10 +156,6 @@ int main(int argc, char** argv) {
     if (!load_ray_scene(scene_path, scene, why)) fail(why);
     const size_t slash = scene_path.find_last_of('/');
     const std::string text = emit(scene, name, slash == std::string::npos ? scene_path : scene_path.substr(slash + 1));
-    std::ofstream out(out_path, std::ios::binary);
-    if (!out) fail(out_path + ": " + std::strerror(errno));
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (!out) fail(out_path + ": write failed");
+    if (!port::write_file(out_path, text, why)) fail(why);
     return 0;
 }

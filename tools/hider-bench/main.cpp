@@ -114,6 +114,7 @@ bool parse_camera_option(const Args& args, size_t& i, CameraArgs& cam) {
 }  // namespace hider::tool::bench
 
 int main(int argc, char** argv) {
+    hider::tool::exit_2_when_out_of_memory("hider-bench");
     using namespace hider::tool::bench;
     if (argc < 2) fail(std::string("no command given\n") + kUsage);
     const std::string command = argv[1];

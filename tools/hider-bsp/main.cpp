@@ -14,6 +14,7 @@
 #include <hider/bsp/order.hpp>
 
 #include "common/bsp_build.hpp"
+#include "host/ppm.hpp"
 #include "common/cli.hpp"
 #include "common/render_bsp.hpp"
 #include "hider-bake/cli.hpp"
@@ -49,6 +50,7 @@ bool ends_with(const std::string& s, const std::string& tail) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    hider::tool::exit_2_when_out_of_memory("hider-bsp");
     std::string model_path, out_path, name = "tree", camera_options, recorded;
     BspOptions opt;
     CameraArgs cam;
@@ -106,10 +108,7 @@ int main(int argc, char** argv) {
     } else {
         contents.assign(reinterpret_cast<const char*>(blob.data()), blob.size());
     }
-    std::ofstream out(out_path, std::ios::binary);
-    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-    out.close();
-    if (!out) fail(out_path + ": cannot write");
+    if (!port::write_file(out_path, contents, why)) fail(why);
     if (stats) {
         std::printf("input triangles %zu (degenerate %zu) polygons %zu cuts %zu split-ratio %.3f\n", st.input_triangles,
                     st.degenerate, st.polygons, st.cuts,

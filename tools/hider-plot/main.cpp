@@ -43,6 +43,7 @@ long parse_count(const std::string& opt, const std::string& s, long lo, long hi)
 }  // namespace
 
 int main(int argc, char** argv) {
+    hider::tool::exit_2_when_out_of_memory("hider-plot");
     std::string function, heightmap, out_path;
     ViewArgs view;
     Options opt;
@@ -96,6 +97,9 @@ int main(int argc, char** argv) {
     if (function.empty() == heightmap.empty()) fail(std::string("give exactly one of --function and --heightmap\n") + kUsage);
     if (out_path.empty()) fail(std::string("no output given (-o OUT.ppm)\n") + kUsage);
     if (curves * samples > (1L << 24)) fail("--curves x --samples above 2^24 samples");
+    bool png = false;
+    std::string why_format;
+    if (!tool::output_format(out_path, png, why_format)) fail(why_format);  // .ppm or .png, any case; before the work
 
     HeightGrid grid;
     if (!function.empty()) {
@@ -116,7 +120,6 @@ int main(int argc, char** argv) {
     if (!resolve_camera(grid, view, cam, why)) fail(why);
     Result result;
     if (!render(grid, cam, opt, result, why)) fail(why);
-    const bool png = out_path.size() > 4 && out_path.compare(out_path.size() - 4, 4, ".png") == 0;
     if (!(png ? port::write_png(out_path, result.width, result.height, result.rgb, why)
               : port::write_ppm(out_path, result.width, result.height, result.rgb, why)))
         fail(why);

@@ -72,6 +72,10 @@ bool resolve_camera(const HeightGrid& g, const ViewArgs& args, CameraD& out, std
     cam.fov_deg = args.fov_deg;
     cam.target = args.target.value_or(Vec3d{0.0, (ylo + yhi) / 2, 0.0});
     cam.up = args.up.value_or(Vec3d{0.0, 1.0, 0.0});
+    if (length(cam.up) == 0) {
+        error = "up vector is zero";
+        return false;
+    }
     if (args.eye) {
         cam.eye = *args.eye;
     } else {  // from above the front edge (z = +1), just far enough to frame the box

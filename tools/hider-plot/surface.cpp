@@ -1,7 +1,11 @@
 // Built-in functions and the PGM reader of hider-plot.
 #include "hider-plot/surface.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -95,16 +99,31 @@ bool sample_function(const std::string& name, double scale, int curves, int samp
 }
 
 bool read_pgm(const std::string& path, Pgm& out, std::string& error) {
+    struct stat st {};  // a directory opens on Linux, then throws from its first read
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+        error = path + ": cannot open for reading: " + std::strerror(EISDIR);
+        return false;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         error = path + ": cannot open for reading";
         return false;
     }
-    const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     auto fail = [&](const std::string& what) {
         error = path + ": " + what;
         return false;
     };
+    // Read in chunks up to the largest map the header may declare (2^26 values of up to 5 digits and a
+    // separator in P2): /dev/zero or a huge file is an error, not an unbounded allocation.
+    constexpr size_t kMaxBytes = size_t{6} << 26;
+    std::string data;
+    std::vector<char> chunk(size_t{1} << 20);
+    while (in) {
+        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        data.append(chunk.data(), static_cast<size_t>(in.gcount()));
+        if (data.size() > kMaxBytes) return fail("file larger than " + std::to_string(kMaxBytes) + " bytes, the most a height map holds");
+    }
+    if (in.bad()) return fail("read error");
     if (data.size() < 2 || data[0] != 'P' || (data[1] != '2' && data[1] != '5')) {
         const std::string magic = data.substr(0, std::min<size_t>(2, data.size()));
         return fail("not a PGM height map (magic '" + magic + "', expected P2 or P5)");

@@ -152,6 +152,7 @@ int render_scene_file(const std::string& scene_path, const std::string& model_pa
 }  // namespace
 
 int main(int argc, char** argv) {
+    hider::tool::exit_2_when_out_of_memory("hider-render");
     std::string model_path, out_path, scene_path;
     bool size_given = false;
     CameraArgs cam;
@@ -281,7 +282,8 @@ int main(int argc, char** argv) {
         if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
         if (!render(scene, opt, result, why)) fail(why);
     }
-    write_image(out_path, result);
+    // --strict: an incomplete frame is an error, and an error leaves no image behind.
+    if (!(strict && result.stats.status != Status::ok)) write_image(out_path, result);
     if (stats) {
         const FrameStats& s = result.stats;
         if (opt.algo == Algo::raycast)  // rays meet triangles through the BVH: none is set up, culled or clipped

@@ -2,11 +2,15 @@
 // hider-render options for its camera. Usage: hider-scenes NAME -o OUT.obj. Errors exit 2.
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
+#include "common/cli.hpp"
 #include "common/gen_scenes.hpp"
+#include "host/ppm.hpp"
 
 int main(int argc, char** argv) {
+    hider::tool::exit_2_when_out_of_memory("hider-scenes");
     using namespace hider::tool;
     std::string name, out;
     for (int i = 1; i < argc; ++i) {
@@ -31,10 +35,10 @@ int main(int argc, char** argv) {
         std::cerr << "hider-scenes: " << why << "\n";
         return 2;
     }
-    std::ofstream file(out);
-    if (file) gen::write_obj(s, file);
-    if (!file) {
-        std::cerr << "hider-scenes: " << out << ": cannot write\n";
+    std::ostringstream text;
+    gen::write_obj(s, text);
+    if (!hider::port::write_file(out, text.str(), why)) {  // no partial OBJ left behind
+        std::cerr << "hider-scenes: " << why << "\n";
         return 2;
     }
     std::cout << gen::camera_flags(s) << "\n";

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdlib>
 #include <istream>
 #include <map>
@@ -66,8 +67,10 @@ bool immediate(const std::string& op, long& v) {
     if (!s.empty() && s[0] == '#') s = s.substr(1);
     if (s.empty()) return false;
     char* end = nullptr;
+    errno = 0;
     v = std::strtol(s.c_str(), &end, 0);
-    return end != nullptr && *end == '\0';
+    // No instruction moves sp by 16 MB: a larger value is a damaged dump (a 32-bit wrap once gave a frame of 0).
+    return end != nullptr && *end == '\0' && errno == 0 && v > -(1L << 24) && v < (1L << 24);
 }
 
 bool arm_condition(const std::string& c) {
@@ -639,6 +642,11 @@ bool parse_objdump(std::istream& in, Program& p, std::string& why) {
     for (size_t i = 0; i < p.funcs.size(); ++i) {
         if (p.isa == Isa::arm) classify_arm(ps, i);
         else classify_riscv(ps, i);
+        // A symbol with bytes but no instruction (a cut-off dump, code in a section -d does not show) would
+        // count as a frame of 0: refused if the bound reaches it.
+        if (p.funcs[i].size != 0 && ps.code[i].empty())
+            p.funcs[i].problems.push_back("no instructions in the dump for its " + std::to_string(p.funcs[i].size) +
+                                          " bytes (objdump -d output cut off, or code in a section -d does not show)");
     }
     return true;
 }
@@ -696,6 +704,11 @@ Bound bound(const Program& p, const Options& opt) {
     for (const std::string& h : opt.handlers)
         if (find_function(p, h) < 0) {
             b.why = "no handler named " + h;
+            return b;
+        }
+    for (const std::string& pattern : opt.not_pointers)
+        if (std::none_of(p.objects.begin(), p.objects.end(), [&](const Program::Range& r) { return detail::glob_match(pattern, r.name); })) {
+            b.why = "--not-pointers " + pattern + " matches no data object";
             return b;
         }
     std::vector<std::string> why_taken;
