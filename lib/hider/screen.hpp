@@ -12,10 +12,11 @@ constexpr int32_t kGuardBand = (1 << 14) - 64;      ///< clip planes sit here; r
 
 /// The coordinate (subpixels from the frame centre) of the centre of pixel 0 on an axis of `size` pixels.
 constexpr int32_t pixel_centre_origin(int32_t size) { return kSubpixel / 2 - size * (kSubpixel / 2); }
-/// Depths are kept in [kDepthMargin, 2^32 - 1 - kDepthMargin] so plane-stepping error never wraps.
+/// Depths are kept in [kDepthMargin, 2^32 - 2^16 - 1 - kDepthMargin] so plane-stepping error never wraps,
+/// and so a 16-bit buffer's z >> 16 stays below its clear value 0xFFFF: the farthest surface still draws.
 constexpr uint32_t kDepthMargin = 4096;
 constexpr uint32_t kDepthNear = kDepthMargin;
-constexpr uint32_t kDepthFar = 0xFFFFFFFFu - kDepthMargin;
+constexpr uint32_t kDepthFar = 0xFFFF0000u - 1 - kDepthMargin;
 
 /// A projected vertex: x, y in subpixels from the frame centre (y down), z in [kDepthNear, kDepthFar]
 /// (smaller = nearer, affine in screen space). A vertex outside a clip plane has z == 0 and its planes

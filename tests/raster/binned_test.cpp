@@ -64,22 +64,37 @@ struct Scratch {
                {order.data(), order.size()}} {}
 };
 
+/// The frame through draw_zbuffer_binned() in bands of `rows` rows, with `slots` carried set-ups, into
+/// band buffers of `pad` spare elements a row (stride = width + pad), which nothing may touch.
 template <class Format, class Depth>
 std::vector<typename Format::Pixel> binned(const tool::Scene& s, const Projected& p, int32_t rows, size_t slots,
-                                           FrameStats& st, BinnedStats& bs) {
-    std::vector<typename Format::Pixel> color(static_cast<size_t>(s.width) * rows), out;
-    std::vector<Depth> depth(color.size());
-    const auto buffers = band_view<Format, Depth>(color.data(), depth.data(), s.width, s.height, 0, rows);
+                                           FrameStats& st, BinnedStats& bs, int32_t pad = 0) {
+    using Pixel = typename Format::Pixel;
+    const int32_t stride = s.width + pad;
+    Pixel sentinel{};
+    std::memset(&sentinel, 0x5A, sizeof sentinel);
+    std::vector<Pixel> color(static_cast<size_t>(stride) * rows, sentinel), out;
+    std::vector<Depth> depth(color.size(), Depth(0x5A5A5A5Au));
+    auto buffers = band_view<Format, Depth>(color.data(), depth.data(), s.width, s.height, 0, rows);
+    buffers.stride = stride;
     Scratch scratch(s.tris.size(), static_cast<size_t>((s.height + rows - 1) / rows), slots);
     int32_t next_row = 0;
+    bool pad_kept = true;
     st = draw_zbuffer_binned(p.view, s.mesh(), {p.verts.data(), p.verts.size()}, buffers, p.opt, kBackground, scratch.view,
                              [&](const FrameView<Format, Depth>& band) {
                                  CHECK(band.y0 == next_row);
+                                 CHECK(band.stride == stride);
                                  next_row = band.y1;
-                                 out.insert(out.end(), band.color, band.color + static_cast<size_t>(band.rows()) * s.width);
+                                 for (int32_t y = band.y0; y < band.y1; ++y) {
+                                     out.insert(out.end(), band.row(y), band.row(y) + s.width);
+                                     for (int32_t x = s.width; x < stride; ++x)
+                                         pad_kept = pad_kept && std::memcmp(band.row(y) + x, &sentinel, sizeof sentinel) == 0 &&
+                                                    band.depth_row(y)[x] == Depth(0x5A5A5A5Au);
+                                 }
                                  return true;
                              }, &bs);
     CHECK(next_row == s.height);
+    CHECK(pad_kept);
     return out;
 }
 
@@ -171,6 +186,36 @@ TEST_CASE("binned bands give exactly the whole frame on scenes that clip: throug
         check("torus far " + std::to_string(far), test::load_model("torus.obj", cam));
     }
     CHECK(clipped > 300);  // the scenes do clip
+}
+
+TEST_CASE("binned bands honour a band buffer's stride: rows of width + pad, the pad untouched") {
+    // The RGB565 kernel path drew rows stride apart but cleared and handed done() rows width apart: a
+    // frame shifted by a column per row, with status ok (found by a red-team fuzzer).
+    const tool::Scene s = test::load_model("torus.obj", [] {
+        tool::CameraArgs c = torus_view();
+        c.width = 53;
+        c.height = 37;
+        return c;
+    }());
+    for (const bool cull : {true, false}) {
+        for (const int32_t pad : {1, 3, 8}) {
+            for (const int32_t rows : {1, 4, 37}) {
+                CAPTURE(cull);
+                CAPTURE(pad);
+                CAPTURE(rows);
+                const Projected p = project(s, cull, Shade::headlight);
+                FrameStats full_st, st;
+                BinnedStats bs;
+                CHECK(same_bytes(binned<Rgb565Format, uint16_t>(s, p, rows, 4, st, bs, pad),
+                                 whole_frame<Rgb565Format, uint16_t>(s, p, full_st)));
+                CHECK(st.ok());
+                const Projected q = project(s, cull, Shade::depth);
+                CHECK(same_bytes(binned<Rgb888Format, uint32_t>(s, q, rows, 4, st, bs, pad),
+                                 whole_frame<Rgb888Format, uint32_t>(s, q, full_st)));
+                CHECK(st.ok());
+            }
+        }
+    }
 }
 
 TEST_CASE("binned bands carry set-ups across bands, and set them up again when the slots run out") {

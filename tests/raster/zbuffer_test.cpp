@@ -162,9 +162,9 @@ TEST_CASE("band by band gives exactly the bytes of the full frame in every forma
 TEST_CASE("the 16-bit buffer separates surfaces one stored LSB apart and merges closer ones") {
     // Two screen-filling parallel quads at view distance w: the farther drawn first, then the nearer.
     const double n = 1, f = 100, w = 50;
-    const double lsb16 = w * w * (1 / n - 1 / f) * 65536.0 / (4294967296.0 - 8192);  // CONVENTIONS.md
-    auto run = [&](double gap, int bits) {
-        const double zf = -w - gap / 2, zn = -w + gap / 2, e = 200;
+    const double lsb16 = w * w * (1 / n - 1 / f) * 65536.0 / (4294967296.0 - 73728);  // CONVENTIONS.md
+    auto run = [&](double gap, int bits, double at) {
+        const double zf = -at - gap / 2, zn = -at + gap / 2, e = 200;
         tool::CameraArgs cam;
         cam.eye = tool::Vec3d{0, 0, 0};
         cam.target = tool::Vec3d{0, 0, -1};
@@ -183,13 +183,67 @@ TEST_CASE("the 16-bit buffer separates surfaces one stored LSB apart and merges 
         return static_cast<double>(nearer) / ids.size();
     };
     MESSAGE("16-bit resolution at w = 50 (near 1, far 100): " << lsb16 << " units");
-    CHECK(run(3 * lsb16, 16) == 1.0);    // separated everywhere
-    CHECK(run(lsb16 / 16, 16) < 0.25);   // mostly tied: the first drawn (farther) stays
+    CHECK(run(3 * lsb16, 16, w) == 1.0);    // separated everywhere
+    // 1/16 LSB apart: tied (the first drawn, farther, stays) unless a stored step falls between the two,
+    // about one distance in 16; at 16 distances across a stored LSB, most tie.
+    int tied = 0;
+    for (int k = 0; k < 16; ++k) tied += run(lsb16 / 16, 16, w + k * lsb16 / 16) < 0.25;
+    MESSAGE("1/16 LSB apart: tied at " << tied << " of 16 distances");
+    CHECK(tied >= 12);
     // 32-bit: limited by the stepping error, (W + H) / 2 LSB of 2^32.
-    const double lsb32 = w * w * (1 / n - 1 / f) * (64 + 48) / 2 / (4294967296.0 - 8192);
+    const double lsb32 = w * w * (1 / n - 1 / f) * (64 + 48) / 2 / (4294967296.0 - 73728);
     MESSAGE("32-bit resolution at w = 50: " << lsb32 << " units");
-    CHECK(run(3 * lsb16 / 64, 32) == 1.0);  // far below the 16-bit limit, still separated with 32 bits
-    CHECK(run(4 * lsb32, 32) == 1.0);
+    CHECK(run(3 * lsb16 / 64, 32, w) == 1.0);  // far below the 16-bit limit, still separated with 32 bits
+    CHECK(run(4 * lsb32, 32, w) == 1.0);
+}
+
+TEST_CASE("the 16-bit buffer draws a surface up to the far plane, however far that is from the near one") {
+    // The last 2^-16 of the depth range once stored 0xFFFF, the clear value, in a 16-bit buffer, which no
+    // surface beats: with near 1/256 and far 8000 a triangle 300 units away drew 0 of its pixels (a
+    // red-team fuzzer: about 2% of its random scenes). Every distance to just inside the far plane, both
+    // paths (counting and row kernel) against the 32-bit buffer.
+    const auto u = [](double x) { return Q16::from_raw(static_cast<int32_t>(std::lround(x * 65536))); };
+    for (const double far : {8000.0, 100.0}) {
+        for (const double dist : {1.0, 50.0, 200.0, 300.0, 1000.0, 4000.0, 7990.0, 99.9}) {
+            if (dist >= far) continue;
+            CAPTURE(far);
+            CAPTURE(dist);
+            const double e = dist * 0.3;
+            const Vec3q16 pos[3] = {{u(-e), u(-e), u(-dist)}, {u(e), u(-e), u(-dist)}, {u(0), u(e), u(-dist)}};
+            const Tri tris[1] = {{{0, 1, 2}}};
+            Mesh mesh;
+            mesh.positions = {pos, 3};
+            mesh.tris = {tris, 1};
+            Camera cam;
+            cam.eye = {u(0), u(0), u(0)};
+            cam.target = {u(0), u(0), u(-1)};
+            cam.up = {u(0), u(1), u(0)};
+            cam.fovy = Angle::from_degrees(u(60));
+            cam.near = Q16::from_raw(kMinNearRaw);
+            cam.far = u(far);
+            View view;
+            REQUIRE(make_view(cam, 16, 16, view) == Status::ok);
+            ScreenVertex verts[3];
+            REQUIRE(project_vertices(view, mesh.positions, {verts, 3}) == Status::ok);
+            CHECK((verts[0].z >> 16) < 0xFFFFu);
+            std::vector<uint16_t> c16(256), d16(256), c32(256);
+            std::vector<uint32_t> d32(256);
+            const auto f16 = frame_view<Rgb565Format, uint16_t>(c16.data(), d16.data(), 16, 16);
+            const auto f32 = frame_view<Rgb565Format, uint32_t>(c32.data(), d32.data(), 16, 16);
+            clear(f16, Rgb{0, 0, 0});
+            clear(f32, Rgb{0, 0, 0});
+            const FrameStats s16 = draw_zbuffer<true>(view, mesh, {verts, 3}, f16, DrawOptions{});
+            const FrameStats s32 = draw_zbuffer<true>(view, mesh, {verts, 3}, f32, DrawOptions{});
+            CHECK(s16.pixels_written > 10);
+            CHECK(s16.pixels_written == s32.pixels_written);
+            CHECK(c16 == c32);
+            std::vector<uint16_t> k16(256), kd16(256);
+            const auto fk = frame_view<Rgb565Format, uint16_t>(k16.data(), kd16.data(), 16, 16);
+            clear(fk, Rgb{0, 0, 0});
+            (void)draw_zbuffer<false>(view, mesh, {verts, 3}, fk, DrawOptions{});  // the row kernel
+            CHECK(k16 == c16);
+        }
+    }
 }
 
 TEST_CASE("draw_zbuffer rejects a frame it cannot use") {

@@ -101,6 +101,7 @@ public:
     template <class BandDone>
     bool band(size_t b, size_t bands, int32_t y0, int32_t y1, Rgb background, BandDone& done) {
         band_ = band_view<Rgb565Format, uint16_t>(buffers_.color, buffers_.depth, buffers_.width, buffers_.height, y0, y1);
+        band_.stride = buffers_.stride;  // the kernel's rows (kband_) are buffers' rows too
         clear_band(background);
         band_bb_ = band_bounds(band_);
         kband_.row_from = y0;
@@ -155,11 +156,13 @@ public:
     }
 
 private:
-    /// clear() of the band: whole words straight to fill_words() when both buffers are word-aligned and
-    /// the band holds an even number of pixels (clear() and fill() cost a band more around the stores).
+    /// clear() of the band: whole words straight to fill_words() when the rows are packed, both buffers
+    /// word-aligned and the band holds an even number of pixels (clear() and fill() cost a band more
+    /// around the stores).
     void clear_band(Rgb background) {
         const size_t n = static_cast<size_t>(band_.width) * static_cast<size_t>(band_.rows());
-        if ((n & 1u) != 0 || ((reinterpret_cast<uintptr_t>(band_.color) | reinterpret_cast<uintptr_t>(band_.depth)) & 3u) != 0) {
+        if ((n & 1u) != 0 || band_.stride != band_.width ||
+            ((reinterpret_cast<uintptr_t>(band_.color) | reinterpret_cast<uintptr_t>(band_.depth)) & 3u) != 0) {
             clear(band_, background);
             return;
         }

@@ -28,7 +28,8 @@ __attribute__((noinline)) void draw_bands_generic(const View& view, const Mesh& 
     const FaceShading shading(view, opt);
     for (size_t b = 0; b < bands; ++b) {
         const int32_t y0 = static_cast<int32_t>(b) * rows, y1 = min(height, y0 + rows);
-        const FrameView<Format, Depth> band = band_view<Format, Depth>(buffers.color, buffers.depth, width, height, y0, y1);
+        FrameView<Format, Depth> band = band_view<Format, Depth>(buffers.color, buffers.depth, width, height, y0, y1);
+        band.stride = buffers.stride;
         clear(band, background);
         const BandBounds band_bb = band_bounds(band);
         uint16_t last = kNoTriangle;
@@ -101,7 +102,7 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
 }  // namespace detail
 
 /// Draws `mesh` band by band: for each band of `buffers.y1` rows (buffers: a view of rows [0, y1) whose
-/// memory is reused for every band), clears it to `background`, draws every triangle's rows in it and
+/// memory, `buffers.stride` elements a row, is reused for every band), clears it to `background`, draws every triangle's rows in it and
 /// calls done(band), a FrameView of the band's rows; done() returns false to stop the frame. Same
 /// bytes as clear() + draw_zbuffer() on the whole frame; statistics as the whole frame's. `bs`, if
 /// given, receives the carried-slot figures. Errors: invalid_argument (unusable buffers, a mesh of more
