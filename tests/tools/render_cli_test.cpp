@@ -997,6 +997,23 @@ TEST_CASE("A tool that runs out of memory says so and exits 2, without an output
 }
 #endif
 
+TEST_CASE("A concave face whose fan from its first vertex paints outside it is a warning naming its line") {
+    // Every tool fans an OBJ polygon from its first vertex. A V (notch at vertex 4) fanned from vertex 1
+    // filled the notch, silently (a red-team pass). An L fanned from its inner corner is exact: no warning.
+    const std::string v = write_model("notch.obj", "# a V\nv 0 0 0\nv 2 0 0\nv 2 2 0\nv 1 0.5 0\nv 0 2 0\nf 1 2 3 4 5\n");
+    const Run r = render(v, {"--size", "32x32"});
+    CHECK(r.code == 0);
+    CHECK(r.output_created);
+    CHECK(r.err == "hider-render: warning: " + v + ":7: face is not convex from its first vertex: its fan covers area outside it (triangulate it)\n");
+    const Run tree = bsp_tool(v, scratch_path("notch.hbsp"));
+    CHECK(tree.code == 0);
+    CHECK(contains(tree.err, "hider-bsp: warning: " + v + ":7: face is not convex"));
+    const std::string l = write_model("ell.obj", "v 1 1 0\nv 0 1 0\nv 0 0 0\nv 2 0 0\nv 2 2 0\nv 1 2 0\nf 1 2 3 4 5 6\n");
+    const Run ok = render(l, {"--size", "32x32"});
+    CHECK(ok.code == 0);
+    CHECK(ok.err.empty());
+}
+
 TEST_CASE("hider-bsp --max-chain: off by default, N splits the chains across an axis, and --stats says how often") {
     auto depth_and_splits = [](const Args& extra) {
         const Run r = bsp_tool(kTorus, scratch_path("chain.hbsp"), extra);

@@ -966,6 +966,7 @@ bool bsp_from_obj(const std::string& path, const BspOptions& opt, std::vector<ui
         error = format(err);
         return false;
     }
+    const std::vector<int> badly_fanned = badly_fanned_faces(model);
     BspFit fit;
     if (!bsp_model_fit(model, fit, error)) {
         error = path + ": " + error;
@@ -1007,6 +1008,7 @@ bool bsp_from_obj(const std::string& path, const BspOptions& opt, std::vector<ui
     }
     blob = bsp_blob(tree, fit);
     stats.bytes = blob.size();
+    stats.badly_fanned = badly_fanned;  // build_bsp() starts the statistics afresh
     return true;
 }
 

@@ -46,6 +46,7 @@ enum class BspCells : uint8_t {
 constexpr double kBspCellStrayRaw = 16;
 
 struct BspStats {
+    std::vector<int> badly_fanned;  ///< bsp_from_obj(): `f` lines badly_fanned_faces() names (for a warning)
     size_t input_triangles = 0;
     size_t degenerate = 0;        ///< input triangles of zero area, dropped
     size_t cuts = 0;              ///< polygons cut in two

@@ -367,4 +367,42 @@ std::string format(const ObjError& e) {
     return e.file + ":" + std::to_string(e.line) + ": " + e.what;
 }
 
+std::vector<int> badly_fanned_faces(const ObjModel& model) {
+    std::vector<int> lines;
+    for (const ObjFace& f : model.faces) {
+        if (f.v.size() <= 3) continue;
+        const auto& vs = model.vertices;
+        double n[3] = {0, 0, 0};  // Newell's normal: twice the polygon's vector area
+        for (size_t i = 0; i < f.v.size(); ++i) {
+            const auto& a = vs[static_cast<size_t>(f.v[i])];
+            const auto& b = vs[static_cast<size_t>(f.v[(i + 1) % f.v.size()])];
+            n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+            n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+            n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+        }
+        const auto& o = vs[static_cast<size_t>(f.v[0])];
+        bool against = false;
+        for (size_t i = 1; i + 1 < f.v.size() && !against; ++i) {
+            const auto& a = vs[static_cast<size_t>(f.v[i])];
+            const auto& b = vs[static_cast<size_t>(f.v[i + 1])];
+            const double u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]}, w[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
+            const double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+            const double d = c[0] * n[0] + c[1] * n[1] + c[2] * n[2];
+            const double scale = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            against = d < 0 && d * d > 1e-12 * scale;  // clearly turned back, not a rounding of a sliver
+        }
+        if (against) lines.push_back(f.line);
+    }
+    return lines;
+}
+
+std::vector<std::string> fan_warnings(const std::string& path, const std::vector<int>& lines) {
+    std::vector<std::string> out;
+    for (size_t i = 0; i < lines.size() && i < 5; ++i)
+        out.push_back(path + ":" + std::to_string(lines[i]) +
+                      ": face is not convex from its first vertex: its fan covers area outside it (triangulate it)");
+    if (lines.size() > 5) out.push_back(path + ": " + std::to_string(lines.size() - 5) + " more such faces");
+    return out;
+}
+
 }  // namespace hider::tool

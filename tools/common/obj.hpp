@@ -53,6 +53,14 @@ struct ObjError {
 /// Reads the OBJ file at `path` into `out`; on failure fills `err`, leaves `out` empty and returns false.
 bool load_obj(const std::string& path, ObjModel& out, ObjError& err);
 
+/// Faces of more than 3 vertices whose fan from the first vertex (how every tool triangulates) does not
+/// cover the polygon: a fan triangle turns against the polygon's (Newell) normal, so the fan paints outside
+/// a concave face. Their `f` line numbers, in file order, for a warning.
+std::vector<int> badly_fanned_faces(const ObjModel& model);
+
+/// One warning line per such face (at most 5, then a count): "path:line: face ... (triangulate it)".
+std::vector<std::string> fan_warnings(const std::string& path, const std::vector<int>& lines);
+
 /// Reads OBJ text from `in` (named `name` in errors) into `out`; on failure fills `err`, leaves `out`
 /// empty and returns false. Cost O(bytes read); memory O(model) plus one line of at most limits.max_line_bytes.
 bool parse_obj(std::istream& in, const std::string& name, ObjModel& out, ObjError& err,

@@ -96,6 +96,28 @@ bool valid_name(const std::string& name, std::string& why) {
     return true;
 }
 
+bool name_unused(const std::string& source, const std::string& name, std::string& why) {
+    auto word = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; };
+    size_t start = 0;
+    while (start < source.size()) {
+        size_t end = source.find('\n', start);
+        if (end == std::string::npos) end = source.size();
+        std::string line = source.substr(start, end - start);
+        start = end + 1;
+        const size_t comment = line.find("//");
+        if (comment != std::string::npos) line.resize(comment);
+        if (line.rfind("namespace ", 0) == 0 || line.rfind("#", 0) == 0) continue;
+        for (size_t at = line.find(name); at != std::string::npos; at = line.find(name, at + 1)) {
+            const bool before = at > 0 && word(line[at - 1]), after = at + name.size() < line.size() && word(line[at + name.size()]);
+            if (!before && !after) {
+                why = "is a name the generated header uses (in '" + line + "'); choose another";
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
 std::string emit_header(const Scene& s, const BakeInfo& info) {
     const bool with_ids = !default_ids(s);
     const size_t nv = s.positions.size(), nt = s.tris.size();

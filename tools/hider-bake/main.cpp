@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
     ObjModel model;
     ObjError err;
     if (!load_obj(model_path, model, err)) fail(format(err));
+    for (const std::string& w : fan_warnings(model_path, badly_fanned_faces(model))) std::cerr << "hider-bake: warning: " << w << "\n";
     Scene scene;
     if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
     const Status ms = validate(scene.mesh());
@@ -72,6 +73,7 @@ int main(int argc, char** argv) {
 
     info.model = base_name(model_path);
     const std::string text = bake::emit_header(scene, info);
+    if (!bake::name_unused(text, info.name, why)) fail("--name '" + info.name + "' " + why);
     if (!port::write_file(out_path, text, why)) fail(why);
     return 0;
 }

@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
     std::vector<uint8_t> blob;
     BspStats st;
     if (!bsp_from_obj(model_path, opt, blob, st, why)) fail(why);
+    for (const std::string& w : fan_warnings(model_path, st.badly_fanned)) std::cerr << "hider-bsp: warning: " << w << "\n";
     if (st.triangles == 0)
         fail(model_path + ": no face with an area (" + std::to_string(st.degenerate) + " of " +
              std::to_string(st.input_triangles) + " triangles degenerate on the grid): the tree would be empty");
@@ -105,6 +106,7 @@ int main(int argc, char** argv) {
             extra = bake::camera_source(scene.camera, scene.width, scene.height);
         }
         contents = bsp_header_source(blob, name, std::filesystem::path(model_path).filename().string(), camera_options, extra);
+        if (!bake::name_unused(contents, name, why)) fail("--name '" + name + "': " + why);
     } else {
         contents.assign(reinterpret_cast<const char*>(blob.data()), blob.size());
     }

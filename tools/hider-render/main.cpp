@@ -267,6 +267,7 @@ int main(int argc, char** argv) {
         } else {
             BspStats bs;
             if (!bsp_from_obj(model_path, BspOptions{}, blob, bs, why)) fail(why);
+            for (const std::string& w : fan_warnings(model_path, bs.badly_fanned)) std::cerr << "hider-render: warning: " << w << "\n";
         }
         const AlignedBlob aligned(blob);
         std::vector<uint32_t> probe(bsp_stack_entries(1u << 16));
@@ -279,6 +280,7 @@ int main(int argc, char** argv) {
         ObjModel model;
         ObjError err;
         if (!load_obj(model_path, model, err)) fail(format(err));
+        for (const std::string& w : fan_warnings(model_path, badly_fanned_faces(model))) std::cerr << "hider-render: warning: " << w << "\n";
         if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
         if (!render(scene, opt, result, why)) fail(why);
     }
