@@ -92,6 +92,8 @@ TEST_CASE("every malformed scene line is reported with file, line and what is wr
         {"camera eye 0 0 5 target 0 0 0 zoom 2\n", "t.txt:1: ", "camera: unknown field 'zoom'"},
         {"camera eye 0 0 9000 target 0 0 0\n", "t.txt:1: ", "camera: eye z 9000 is outside the world cube"},
         {c + "sphere 0 0 0 1 " + std::string(5000, ' ') + "\n", "t.txt:2: ", "line longer than 4096 bytes"},
+        {c + "#" + std::string(4096, 'x'), "t.txt:2: ", "line longer than 4096 bytes"},  // 4,097 bytes, no newline
+        {c + "#" + std::string(4095, 'x') + "\n" + std::string(10000, '\0'), "t.txt:3: ", "line longer than 4096 bytes"},
     };
     for (const BadCase& b : cases) {
         INFO("scene text: ", b.text.substr(0, 200));

@@ -245,6 +245,14 @@ TEST_CASE("A malformed face vertex token is an error") {
     }
 }
 
+TEST_CASE("A UTF-8 byte order mark before the first statement is skipped, and only there") {
+    // It hid the first `v` line ("vertex index 3 out of range (2 vertices defined so far)").
+    const Parsed p = parse("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    CHECK(p.ok);
+    CHECK(p.model.vertices.size() == 3);
+    CHECK(error_of("v 0 0 0\n\xEF\xBB\xBFv 1 0 0\nv 0 1 0\nf 1 2 3\n") != "ok");  // inside the file it is garbage
+}
+
 TEST_CASE("A face needs at least three vertices") {
     CHECK(error_of(kTriangle + "f\n") == "test.obj:4: face has 0 vertices, needs at least 3");
     CHECK(error_of(kTriangle + "f 1\n") == "test.obj:4: face has 1 vertex, needs at least 3");

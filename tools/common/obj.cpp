@@ -184,6 +184,8 @@ public:
             if (status == ReadStatus::too_long) {
                 return fail(line_, "line longer than " + std::to_string(limits_.max_line_bytes) + " bytes");
             }
+            // A UTF-8 byte order mark (some Windows editors write one) hid the first statement.
+            if (line_ == 1 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
             if (!parse_line(text)) return false;
         }
         if (model_.vertices.empty()) return fail(0, "no vertices");

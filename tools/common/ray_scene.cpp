@@ -459,9 +459,21 @@ bool parse_ray_scene(std::istream& in, const std::string& name, const std::strin
         error = name + ":" + std::to_string(line) + ": " + what;
         return false;
     };
-    while (std::getline(in, text)) {
+    // One line, at most kMaxLineBytes: a longer one (or /dev/zero) fails when it passes the limit, not
+    // after the whole line is in memory. 1: a line, 0: the end, -1: too long.
+    auto next_line = [&in](std::string& out) -> int {
+        out.clear();
+        for (int c = in.get(); c != std::char_traits<char>::eof(); c = in.get()) {
+            if (c == '\n') return 1;
+            if (out.size() == kMaxLineBytes) return -1;
+            out.push_back(static_cast<char>(c));
+        }
+        return out.empty() ? 0 : 1;
+    };
+    for (int got = next_line(text); got != 0; got = next_line(text)) {
         ++line;
-        if (text.size() > kMaxLineBytes) return fail("line longer than " + std::to_string(kMaxLineBytes) + " bytes");
+        if (got < 0) return fail("line longer than " + std::to_string(kMaxLineBytes) + " bytes");
+        if (line == 1 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);  // a UTF-8 byte order mark
         const size_t hash = text.find('#');
         if (hash != std::string::npos) text.resize(hash);
         std::istringstream words(text);
