@@ -2,13 +2,16 @@
 #include "host/ppm.hpp"
 
 #include <sys/stat.h>
+#include <sys/types.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace hider::port {
 
@@ -21,21 +24,9 @@ std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>
 
 namespace {
 
-bool write_bytes(const std::string& path, const char* data, size_t size, std::string& error) {
-    // POSIX lstat/access rather than <filesystem>, which the WebAssembly build's libc++ lacks.
-    struct stat st {};
-    const bool exists = ::lstat(path.c_str(), &st) == 0;
-#if defined(__wasi__)
-    const bool in_place = true;  // the web build's file system has no rename: written in place
-#else
-    const bool in_place = exists && !S_ISREG(st.st_mode);  // /dev/stdout, a pipe, a symlink
-#endif
-    if (exists && !in_place && ::access(path.c_str(), W_OK) != 0) {  // a read-only file stays refused
-        error = path + ": " + std::strerror(errno);
-        return false;
-    }
-    const std::string target = in_place ? path : path + ".partial";
-    std::ofstream f(target, std::ios::binary);
+/// In place, as ofstream writes: a device, a pipe, a symlink, a file with other hard links, the web build.
+bool write_in_place(const std::string& path, const char* data, size_t size, bool existed, std::string& error) {
+    std::ofstream f(path, std::ios::binary);
     if (!f) {
         error = path + ": " + std::strerror(errno);
         return false;
@@ -43,16 +34,64 @@ bool write_bytes(const std::string& path, const char* data, size_t size, std::st
     f.write(data, static_cast<std::streamsize>(size));
     f.close();
     if (!f) {
-        if (!in_place) std::remove(target.c_str());  // a truncated file: never left behind
+        // A truncated file we created holds a partial image: not left behind (a device is never unlinked).
+        struct stat st {};
+        if (!existed && ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) std::remove(path.c_str());
         error = path + ": write failed";
         return false;
     }
-    if (!in_place && std::rename(target.c_str(), path.c_str()) != 0) {
+    return true;
+}
+
+bool write_bytes(const std::string& path, const char* data, size_t size, std::string& error) {
+    // POSIX calls rather than <filesystem>, which the WebAssembly build's libc++ lacks.
+    struct stat st {};
+    const bool exists = ::lstat(path.c_str(), &st) == 0;
+#if defined(__wasi__)
+    return write_in_place(path, data, size, exists, error);  // the web build's file system: no mkstemp
+#else
+    if (exists && (!S_ISREG(st.st_mode) || st.st_nlink > 1)) return write_in_place(path, data, size, true, error);
+    if (exists && ::access(path.c_str(), W_OK) != 0) {  // a read-only file stays refused
         error = path + ": " + std::strerror(errno);
-        std::remove(target.c_str());
+        return false;
+    }
+    // A fresh, exclusive temporary file beside the output (never a link, never someone else's file),
+    // renamed over it when every byte is written.
+    std::vector<char> temp(path.begin(), path.end());
+    for (const char c : std::string(".XXXXXX")) temp.push_back(c);
+    temp.push_back('\0');
+    const int fd = ::mkstemp(temp.data());
+    if (fd < 0) {
+        if (exists) return write_in_place(path, data, size, true, error);  // a writable file in a closed directory
+        error = path + ": " + std::strerror(errno);
+        return false;
+    }
+    mode_t mode = st.st_mode & 07777;
+    if (!exists) {
+        mode = ::umask(0);
+        ::umask(mode);
+        mode = static_cast<mode_t>(0666 & ~mode);
+    }
+    bool ok = ::fchmod(fd, mode) == 0;
+    for (size_t done = 0; ok && done < size;) {
+        const ssize_t n = ::write(fd, data + done, size - done);
+        if (n < 0 && errno == EINTR) continue;
+        ok = n > 0;
+        if (ok) done += static_cast<size_t>(n);
+    }
+    ok = (::close(fd) == 0) && ok;
+    if (!ok) {
+        ::unlink(temp.data());
+        error = path + ": write failed";
+        return false;
+    }
+    if (std::rename(temp.data(), path.c_str()) != 0) {
+        error = path + ": cannot replace it: " + std::strerror(errno);
+        ::unlink(temp.data());
         return false;
     }
     return true;
+#endif
 }
 
 }  // namespace

@@ -25,10 +25,12 @@ void append_rgb888(const FrameView<Format, Depth>& f, std::vector<uint8_t>& out)
 /// The bytes of a P6 file: "P6\n<W> <H>\n255\n" then W*H*3 bytes of `rgb`.
 std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>& rgb);
 
-/// Writes `bytes` to `path` (binary) through a temporary file beside it, renamed over `path` only when
-/// every byte is written: a failed write leaves an existing file as it was and no partial one. A path
-/// that is a device, a pipe or a symlink is written in place. On failure returns false and sets `error`
-/// to "path: reason". Shared by the PPM and PNG writers and the tools' other outputs.
+/// Writes `bytes` to `path` (binary) through a fresh temporary file beside it (mkstemp, the existing
+/// file's mode), renamed over `path` only when every byte is written: a failed write leaves an existing
+/// file as it was and no partial one. Written in place: a device, a pipe, a symlink, a file with other
+/// hard links, a writable file in a directory that is not, and every file in the WebAssembly build; a
+/// failed write there leaves what was written. On failure returns false and sets `error` to "path: reason".
+/// Shared by the PPM and PNG writers and the tools' other outputs.
 bool write_file(const std::string& path, const std::vector<uint8_t>& bytes, std::string& error);
 bool write_file(const std::string& path, const std::string& bytes, std::string& error);
 

@@ -324,6 +324,13 @@ TEST_CASE("hider-plot: bad options are rejected with a plain reason") {
     const Run png = run({"--function", "sinc", "--size", "40x30", "-o", upper}, upper);
     CHECK(png.code == 0);
     CHECK(read_file(upper).rfind("\x89PNG", 0) == 0);
+    // A device takes PPM whatever its name (the extension check refused /dev/stdout).
+    const Run out = run({"--function", "sinc", "--size", "40x30", "-o", "/dev/stdout"}, path("none"));
+    CHECK(out.code == 0);
+    CHECK(out.out.rfind("P6\n40 30\n255\n", 0) == 0);
+    // An up vector of denormals is a direction like any other (it gave an eye of inf and nan).
+    const Run tiny = run({"--function", "sinc", "--size", "40x30", "--up", "1e-310,1e-310,0", "-o", out_ppm()});
+    CHECK(tiny.code == 0);
 }
 
 TEST_CASE("hider-plot: a view that cannot see the surface is an error") {

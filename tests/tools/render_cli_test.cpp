@@ -917,6 +917,13 @@ TEST_CASE("hider-bsp reports OBJ errors with the file and the line, like hider-r
     const Run bad_name = bsp_tool(kTorus, scratch_path("t.hpp"), {"--name", "1tree"});
     CHECK(bad_name.code == 2);
     CHECK(contains(bad_name.err, "--name"));
+    // Names that broke the header they named (it did not compile; found by a red-team pass).
+    for (const std::string shadow : {"uint8_t", "ray", "hider", "NULL", "INT32_MAX", "linux"}) {
+        const Run r = bsp_tool(kTorus, scratch_path("t.hpp"), {"--name", shadow});
+        CHECK(r.code == 2);
+        CHECK(contains(r.err, "--name '" + shadow + "' is "));
+    }
+    CHECK(bsp_tool(kTorus, scratch_path("t.hpp"), {"--name", "mesh"}).code == 0);  // a member's name is fine
     for (const char* chain : {"-1", "x", "100000001"}) {
         const Run bad_chain = bsp_tool(kTorus, out, {"--max-chain", chain});
         CHECK(bad_chain.code == 2);

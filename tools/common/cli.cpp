@@ -1,6 +1,8 @@
 // Command-line number parsing shared by the host tools.
 #include "common/cli.hpp"
 
+#include <sys/stat.h>
+
 #include <cctype>
 #include <cfloat>
 #include <cstdio>
@@ -43,6 +45,11 @@ bool parse_int(const std::string& s, long& out) {
 }
 
 bool output_format(const std::string& path, bool& png, std::string& why) {
+    struct stat st {};  // a device or a pipe (/dev/stdout, a fifo) takes PPM, whatever its name
+    if (path.rfind("/dev/", 0) == 0 || (::stat(path.c_str(), &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)))) {
+        png = false;
+        return true;
+    }
     const size_t slash = path.find_last_of('/'), dot = path.find_last_of('.');
     std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : path.substr(dot + 1);
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

@@ -18,7 +18,7 @@ void exit_2_when_out_of_memory(const char* tool);
 bool parse_int(const std::string& s, long& out);
 
 /// The image format of an output path by its extension, case-insensitively: .ppm (png = false) or .png
-/// (png = true). False with the user message for any other extension.
+/// (png = true); PPM for a path under /dev/ (/dev/stdout) or a pipe. False with the user message for any other.
 bool output_format(const std::string& path, bool& png, std::string& why);
 
 /// "x,y,z" for option `opt`; on failure returns false and sets `why` to the user message.

@@ -10,6 +10,17 @@
 namespace hider::tool::bake {
 namespace {
 
+// What the baked headers (hider-bake, hider-bake-ray, hider-bsp) name without qualification, the
+// namespaces they open, the <stdint.h>/<stddef.h> types, and macros GNU C++ predefines in lower case.
+// A namespace hider::scenes::NAME or hider::bsp_data::NAME of one of these breaks its own header or
+// one included beside it (--name ray: every ray-baked header's ray::Surface).
+const std::set<std::string> kReserved = {
+    "hider", "scenes", "bsp_data", "ray", "std", "Angle", "Camera", "Light", "LightKind", "Mesh", "MeshObject",
+    "Normal14", "Plane", "Q14", "Q16", "Q30", "Scene", "ScreenVertex", "Sphere", "Surface", "Tri", "Vec3q16",
+    "BvhHeader", "BvhNode", "BvhTriangles", "Span", "int8_t", "int16_t", "int32_t", "int64_t", "uint8_t",
+    "uint16_t", "uint32_t", "uint64_t", "size_t", "ptrdiff_t", "intptr_t", "uintptr_t", "linux", "unix",
+    "i386", "errno", "assert", "offsetof"};
+
 // C++17 keywords and alternative tokens: none of them can name a namespace.
 const std::set<std::string> kKeywords = {
     "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case", "catch",
@@ -93,27 +104,16 @@ bool valid_name(const std::string& name, std::string& why) {
         why = "is a C++ keyword";
         return false;
     }
-    return true;
-}
-
-bool name_unused(const std::string& source, const std::string& name, std::string& why) {
-    auto word = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; };
-    size_t start = 0;
-    while (start < source.size()) {
-        size_t end = source.find('\n', start);
-        if (end == std::string::npos) end = source.size();
-        std::string line = source.substr(start, end - start);
-        start = end + 1;
-        const size_t comment = line.find("//");
-        if (comment != std::string::npos) line.resize(comment);
-        if (line.rfind("namespace ", 0) == 0 || line.rfind("#", 0) == 0) continue;
-        for (size_t at = line.find(name); at != std::string::npos; at = line.find(name, at + 1)) {
-            const bool before = at > 0 && word(line[at - 1]), after = at + name.size() < line.size() && word(line[at + name.size()]);
-            if (!before && !after) {
-                why = "is a name the generated header uses (in '" + line + "'); choose another";
-                return false;
-            }
-        }
+    if (kReserved.count(name) != 0) {
+        why = "is a name the generated headers use unqualified (inside namespace ...::" + name +
+              " it would mean that namespace, there or in another baked header); choose another";
+        return false;
+    }
+    bool capitals = true;  // the macro convention: NULL, INT32_MAX, a project's own macros
+    for (char c : name) capitals = capitals && !(c >= 'a' && c <= 'z');
+    if (capitals) {
+        why = "is all capitals, as macros are named (NULL, INT32_MAX); choose a name with a lower-case letter";
+        return false;
     }
     return true;
 }

@@ -15,13 +15,10 @@ struct BakeInfo {
     std::string options;    ///< the camera options as given, space-separated
 };
 
-/// Whether `name` is usable as the namespace of a baked scene (an identifier, no "__", not a keyword).
+/// Whether `name` is usable as the namespace of a baked scene: an identifier, no "__", not a keyword, not
+/// a name the baked headers use unqualified (kReserved: Camera, ray, uint8_t, ...), not all capitals (macros).
 bool valid_name(const std::string& name, std::string& why);
 
-/// False (with `why`) if the generated `source` uses `name` as a word outside comments, `#` and
-/// `namespace` lines: inside `namespace ...::name` such a name (Camera, ray, uint8_t) would mean the namespace itself
-/// and the header would not compile.
-bool name_unused(const std::string& source, const std::string& name, std::string& why);
 
 /// `kWidth`, `kHeight` and `kCamera` (a constexpr hider::Camera) as declarations for a baked header.
 std::string camera_source(const Camera& camera, int width, int height);

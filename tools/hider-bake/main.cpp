@@ -73,7 +73,6 @@ int main(int argc, char** argv) {
 
     info.model = base_name(model_path);
     const std::string text = bake::emit_header(scene, info);
-    if (!bake::name_unused(text, info.name, why)) fail("--name '" + info.name + "' " + why);
     if (!port::write_file(out_path, text, why)) fail(why);
     return 0;
 }

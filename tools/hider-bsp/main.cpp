@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
     const bool header = ends_with(out_path, ".hpp");
     if (!header && !ends_with(out_path, ".hbsp")) fail("output '" + out_path + "': use .hbsp (a blob) or .hpp (a C++ header)");
     std::string why;
-    if (!bake::valid_name(name, why)) fail("--name '" + name + "': " + why);
+    if (!bake::valid_name(name, why)) fail("--name '" + name + "' " + why);
     if (!camera_options.empty() && !header) fail("camera options need a .hpp output (a blob holds no camera)");
 
     const auto start = std::chrono::steady_clock::now();
@@ -106,7 +106,6 @@ int main(int argc, char** argv) {
             extra = bake::camera_source(scene.camera, scene.width, scene.height);
         }
         contents = bsp_header_source(blob, name, std::filesystem::path(model_path).filename().string(), camera_options, extra);
-        if (!bake::name_unused(contents, name, why)) fail("--name '" + name + "': " + why);
     } else {
         contents.assign(reinterpret_cast<const char*>(blob.data()), blob.size());
     }

@@ -72,10 +72,12 @@ bool resolve_camera(const HeightGrid& g, const ViewArgs& args, CameraD& out, std
     cam.fov_deg = args.fov_deg;
     cam.target = args.target.value_or(Vec3d{0.0, (ylo + yhi) / 2, 0.0});
     cam.up = args.up.value_or(Vec3d{0.0, 1.0, 0.0});
-    if (length(cam.up) == 0) {
+    const double up_max = std::max({std::fabs(cam.up[0]), std::fabs(cam.up[1]), std::fabs(cam.up[2])});
+    if (up_max == 0) {
         error = "up vector is zero";
         return false;
     }
+    for (double& c : cam.up) c /= up_max;  // a denormal up (1e-310) made the side vector's norm 0 or inf
     if (args.eye) {
         cam.eye = *args.eye;
     } else {  // from above the front edge (z = +1), just far enough to frame the box
@@ -108,10 +110,6 @@ bool resolve_camera(const HeightGrid& g, const ViewArgs& args, CameraD& out, std
     const double dist = length(view);
     if (dist < 1e-3) {
         error = "eye and target coincide";
-        return false;
-    }
-    if (length(cam.up) == 0) {
-        error = "up vector is zero";
         return false;
     }
     if (length(cross(view, cam.up)) < 2e-4 * dist * length(cam.up)) {

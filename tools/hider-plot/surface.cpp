@@ -121,7 +121,7 @@ bool read_pgm(const std::string& path, Pgm& out, std::string& error) {
     while (in) {
         in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
         data.append(chunk.data(), static_cast<size_t>(in.gcount()));
-        if (data.size() > kMaxBytes) return fail("file larger than " + std::to_string(kMaxBytes) + " bytes, the most a height map holds");
+        if (data.size() > kMaxBytes) return fail("file larger than " + std::to_string(kMaxBytes) + " bytes, hider-plot's limit for a height map");
     }
     if (in.bad()) return fail("read error");
     if (data.size() < 2 || data[0] != 'P' || (data[1] != '2' && data[1] != '5')) {

@@ -1,9 +1,11 @@
 // hider-stack: a static worst-case stack bound for a firmware ELF, from `objdump -t -s -d` output
 // (stack_bound.hpp says how it bounds). Exit 0: bounded (and within --limit); 1: above --limit;
 // 2: cannot be bounded (recursion, sp written by a register, a call that does not resolve) or bad usage.
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <string>
 
 #include "stack_bound.hpp"
@@ -21,6 +23,10 @@ int usage(const char* why) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    std::set_new_handler([] {  // built without exceptions: std::bad_alloc would abort
+        std::fputs("hider-stack: out of memory\n", stderr);
+        std::_Exit(2);
+    });
     std::string dump;
     stackbound::Options opt;
     long limit = -1;
