@@ -1019,6 +1019,19 @@ TEST_CASE("A concave face whose fan from its first vertex paints outside it is a
     const Run ok = render(l, {"--size", "32x32"});
     CHECK(ok.code == 0);
     CHECK(ok.err.empty());
+    // A convex face with a vertex on its first edge: that fan triangle is degenerate, and the sign of its
+    // rounding noise once decided (a reviewer: 724 of 2,000 such rectangles warned). And the V at the
+    // extremes of double, where squared products over- or underflowed and the V passed unnoticed.
+    const std::string mid = write_model("midpoint.obj", "v 0.1 0.9 0.66\nv 0.6 0.9 0.81\nv 1.1 0.9 0.96\nv 1.1 1.0 1.03\nv 0.1 1.0 0.73\nf 1 2 3 4 5\n");
+    const Run quiet = render(mid, {"--size", "32x32"});
+    CHECK(quiet.code == 0);
+    CHECK(quiet.err.empty());
+    for (const std::string scale : {"e-40", "e40"}) {
+        const std::string big = write_model("notch" + scale + ".obj", "v 0" + scale + " 0 0\nv 2" + scale + " 0 0\nv 2" + scale + " 2" + scale +
+                                                                          " 0\nv 1" + scale + " 0.5" + scale + " 0\nv 0 2" + scale + " 0\nf 1 2 3 4 5\n");
+        const Run far = render(big, {"--size", "32x32"});
+        CHECK(contains(far.err, ":6: face is not convex"));
+    }
 }
 
 TEST_CASE("hider-bsp --max-chain: off by default, N splits the chains across an axis, and --stats says how often") {

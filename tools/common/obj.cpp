@@ -4,6 +4,8 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <climits>
@@ -371,27 +373,41 @@ std::string format(const ObjError& e) {
 
 std::vector<int> badly_fanned_faces(const ObjModel& model) {
     std::vector<int> lines;
+    std::vector<std::array<double, 3>> p;
     for (const ObjFace& f : model.faces) {
         if (f.v.size() <= 3) continue;
-        const auto& vs = model.vertices;
+        // Relative to the first vertex, scaled by the face's largest offset: no overflow or underflow at
+        // any model size, and rounding is relative to the face.
+        const auto& o = model.vertices[static_cast<size_t>(f.v[0])];
+        double scale = 0;
+        p.clear();
+        for (const int32_t i : f.v) {
+            const auto& v = model.vertices[static_cast<size_t>(i)];
+            p.push_back({v[0] - o[0], v[1] - o[1], v[2] - o[2]});
+            for (const double c : p.back()) scale = std::max(scale, std::fabs(c));
+        }
+        if (!(scale > 0) || !std::isfinite(scale)) continue;
+        for (auto& q : p)
+            for (double& c : q) c /= scale;
         double n[3] = {0, 0, 0};  // Newell's normal: twice the polygon's vector area
-        for (size_t i = 0; i < f.v.size(); ++i) {
-            const auto& a = vs[static_cast<size_t>(f.v[i])];
-            const auto& b = vs[static_cast<size_t>(f.v[(i + 1) % f.v.size()])];
+        for (size_t i = 0; i < p.size(); ++i) {
+            const auto& a = p[i];
+            const auto& b = p[(i + 1) % p.size()];
             n[0] += (a[1] - b[1]) * (a[2] + b[2]);
             n[1] += (a[2] - b[2]) * (a[0] + b[0]);
             n[2] += (a[0] - b[0]) * (a[1] + b[1]);
         }
-        const auto& o = vs[static_cast<size_t>(f.v[0])];
+        const double n_len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         bool against = false;
-        for (size_t i = 1; i + 1 < f.v.size() && !against; ++i) {
-            const auto& a = vs[static_cast<size_t>(f.v[i])];
-            const auto& b = vs[static_cast<size_t>(f.v[i + 1])];
-            const double u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]}, w[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
+        for (size_t i = 1; i + 1 < p.size() && !against; ++i) {
+            const auto& u = p[i];
+            const auto& w = p[i + 1];
             const double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
             const double d = c[0] * n[0] + c[1] * n[1] + c[2] * n[2];
-            const double scale = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-            against = d < 0 && d * d > 1e-12 * scale;  // clearly turned back, not a rounding of a sliver
+            const double u_len = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+            const double w_len = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+            // Clearly turned back, not the rounding of a fan triangle whose vertices are collinear.
+            against = d < -1e-9 * u_len * w_len * n_len;
         }
         if (against) lines.push_back(f.line);
     }
