@@ -214,7 +214,8 @@ void fill(T* p, size_t n, T v) {
 }  // namespace detail
 
 /// Fills the band's colour with `background` and its depth (if any) with the farthest value.
-/// Cost: about one store per two 16-bit elements.
+/// Cost: about one store per two 16-bit elements. Precondition: f.valid() (it writes f.width elements
+/// at every f.stride; the draws refuse an invalid frame with invalid_argument, clear() cannot say so).
 template <class Format, class Depth>
 void clear(const FrameView<Format, Depth>& f, Rgb background) {
     const typename Format::Pixel c = Format::pack(background);

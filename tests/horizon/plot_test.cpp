@@ -245,6 +245,18 @@ TEST_CASE("Heights outside the declared range are drawn at its limits and report
     for (int32_t v : g) over += v > s.value_max;
     CHECK(r.values_clamped == static_cast<uint32_t>(over));
     CHECK(r.pixels > 500);
+    // Heights at the ends of int32 alternating, coloured by height: the ramp's interpolation between
+    // them overflowed int32 (undefined behaviour, caught by UBSan in the sanitizer build; a red-team
+    // pass). Still out_of_range, every value counted.
+    std::vector<int32_t> wild(g.size());
+    for (size_t i = 0; i < wild.size(); ++i) wild[i] = (i & 1) != 0 ? INT32_MAX : INT32_MIN;
+    PlotStyle ramp = palette_style();
+    ramp.shading = Shading::height;
+    Scratch sc2(160, 120);
+    const PlotStats w = plot(p, GridSource<int32_t>{wild.data(), kSamples, kCurves, 0}, sc2.hz, sc2.b,
+                             FrameTarget<Rgb888Format>(frame_view<Rgb888Format, uint16_t>(px.data(), nullptr, 160, 120)), ramp);
+    CHECK(w.status == Status::out_of_range);
+    CHECK(w.values_clamped == static_cast<uint32_t>(wild.size()));
 }
 
 namespace {

@@ -255,6 +255,27 @@ TEST_CASE("Samples behind the near plane have no point; a segment crossing it en
     }
 }
 
+TEST_CASE("A near plane beyond the whole surface leaves every sample behind it, however far") {
+    // Its W threshold wrapped in int32 once the near plane lay about 8 times beyond the farthest corner:
+    // every sample counted as in front, and the projection indexed its reciprocal table far out of range
+    // (a red-team pass: near 100 drew 848 pixels of a surface 3 units away, status ok).
+    for (const double near : {2.0, 10.0, 40.0, 100.0, 500.0, 4000.0}) {
+        CAPTURE(near);
+        Camera c = camera({0, 2, 3}, {0, 0, 0}, 60);
+        c.near = Q16::from_raw(static_cast<int32_t>(near * 65536));
+        c.far = Q16::from_raw(static_cast<int32_t>(8000.0 * 65536));
+        SurfaceProjection p;
+        REQUIRE(p.prepare(c, 64, 48, grid_surface()) == Status::ok);
+        std::vector<uint8_t> vals(128, 200);
+        std::vector<PlotPoint> pts(128);
+        for (int k = 0; k < 64; k += 9) {
+            const RowCounts rc = p.project_row(vals.data(), k, pts.data());
+            if (near >= 10) CHECK(rc.behind == 128);  // every corner is nearer than 5 units
+            for (const PlotPoint& pt : pts) if (near >= 10) CHECK(pt.x == kNoPoint);
+        }
+    }
+}
+
 TEST_CASE("prepare() rejects unusable surfaces and cameras") {
     const Camera cam = camera({0, 1.5, 2.5}, {0, 0, 0}, 45);
     SurfaceProjection p;

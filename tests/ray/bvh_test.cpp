@@ -270,6 +270,16 @@ TEST_CASE("validate_bvh accepts the built tree and rejects every kind of damage"
     Mesh fewer = m;
     fewer.tris = {m.tris.data(), m.tris.size() - 1};
     CHECK(validate_bvh(b.bvh.view(), fewer, {s.data(), s.size()}) == Status::bad_data);
+    // Normals or ids short of the triangles: cast_row() would read past them (a red-team pass).
+    REQUIRE(m.normals.size() == m.tris.size());
+    Mesh short_normals = m;
+    short_normals.normals = {m.normals.data(), m.normals.size() - 1};
+    CHECK(validate_bvh(b.bvh.view(), short_normals, {s.data(), s.size()}) == Status::bad_data);
+    std::vector<uint32_t> ids(m.tris.size() - 1, 7);
+    Mesh short_ids = m;
+    short_ids.ids = {ids.data(), ids.size()};
+    CHECK(validate_bvh(b.bvh.view(), short_ids, {s.data(), s.size()}) == Status::bad_data);
+    CHECK(validate_bvh(b.bvh.view(), m, {s.data(), s.size()}) == Status::ok);
 }
 
 TEST_CASE("the builder keeps depth within its limit and leaves small") {

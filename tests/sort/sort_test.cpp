@@ -567,6 +567,13 @@ TEST_CASE("build_polys fills its list to capacity and counts what it drops") {
     CHECK(short_list.size() == n - 1);
     CHECK(short_list.dropped() == 1);
     CHECK(short_list.high_water() == n - 1);
+    // Fewer projected vertices than the mesh has: refused like draw_zbuffer refuses it (it read past
+    // them; a red-team pass).
+    BoundedList<ScreenPoly> none(store.data(), store.size());
+    FrameStats st_verts;
+    build_polys(view, s.mesh(), {verts.data(), 10}, true, none, st_verts);
+    CHECK(st_verts.status == Status::invalid_argument);
+    CHECK(none.size() == 0);
 }
 
 TEST_CASE("newell_order refuses an order list or scratch smaller than the polygon pool") {

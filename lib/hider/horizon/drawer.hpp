@@ -10,6 +10,13 @@
 
 namespace hider::horizon {
 
+namespace detail {
+/// a + b modulo 2^32 (what the instruction does, without signed overflow's undefined behaviour).
+constexpr int32_t add_wrapping(int32_t a, int32_t b) {
+    return static_cast<int32_t>(static_cast<uint32_t>(a) + static_cast<uint32_t>(b));
+}
+}  // namespace detail
+
 /// Draws curves against a Horizon into a Target (target.hpp). Use: set_pixel() (or set_ramp() when
 /// kByValue), then per curve move_to(), line_to() for each further point, finish(). Points within one
 /// curve must run monotonically in x for the result to be exact (a curve that folds back over its own
@@ -147,12 +154,16 @@ private:
         const PlotPoint& l = right ? a : p;  // left and right end, so a segment gives the same rows both ways
         const PlotPoint& r = right ? p : a;
         const int32_t dx = r.x - l.x, dy = r.y - l.y;
-        const int32_t vl = right ? vlast_ : value, dv = right ? value - vlast_ : vlast_ - value;
+        // Heights outside the surface's range (counted, status out_of_range) may differ by more than int32
+        // holds: the difference and the sums wrap as uint32, the same instructions without the overflow.
+        const int32_t vl = right ? vlast_ : value;
+        const int32_t dv = static_cast<int32_t>(right ? static_cast<uint32_t>(value) - static_cast<uint32_t>(vlast_)
+                                                      : static_cast<uint32_t>(vlast_) - static_cast<uint32_t>(value));
         if (dx < 256 && dy < 65536 && dy > -65536) {  // short: a Q15 fraction from the slope table
             const uint32_t inv = detail::kSlope.v[dx];
             for (;;) {
                 const int32_t t = static_cast<int32_t>((static_cast<uint32_t>(b * 16 - l.x) * inv) >> 9);
-                boundary(b, right, l.y + ((dy * t) >> 15), kByValue ? vl + static_cast<int32_t>((int64_t{dv} * t) >> 15) : 0);
+                boundary(b, right, l.y + ((dy * t) >> 15), kByValue ? detail::add_wrapping(vl, static_cast<int32_t>((int64_t{dv} * t) >> 15)) : 0);
                 if (b == end) break;
                 b += right ? 1 : -1;
             }
@@ -164,7 +175,7 @@ private:
             const int32_t dq = static_cast<int32_t>(div_floor(int64_t{step} * dy, dx));
             const int32_t drem = static_cast<int32_t>(int64_t{step} * dy - int64_t{dq} * dx);
             for (;;) {
-                const int32_t v = kByValue ? vl + static_cast<int32_t>(int64_t{dv} * (b * 16 - l.x) / dx) : 0;
+                const int32_t v = kByValue ? detail::add_wrapping(vl, static_cast<int32_t>(int64_t{dv} * (b * 16 - l.x) / dx)) : 0;
                 boundary(b, right, l.y + q, v);
                 if (b == end) break;
                 b += right ? 1 : -1;

@@ -80,8 +80,12 @@ public:
                     w_top = max(w_top, w);
                     w_bottom = min(w_bottom, w - kStepError);
                 }
-                near_w_ = static_cast<int32_t>(max<int64_t>(
-                    detail::round_shift(mul128(int64_t{view.near_raw}, int64_t{1} << 38), shift), 1));
+                // The near plane in W's units, saturated: below shift 7 (and above int32 after it) it lies
+                // beyond every sample, which are all behind it then. (It wrapped: points behind the near
+                // plane were drawn, through a table index far out of range.)
+                const int64_t near = shift >= 7 ? detail::round_shift(mul128(int64_t{view.near_raw}, int64_t{1} << 38), shift)
+                                                : int64_t{INT32_MAX};
+                near_w_ = static_cast<int32_t>(min<int64_t>(max<int64_t>(near, 1), INT32_MAX));
             }
         }
         error_subpixels_ = error_bound(w_bottom + kStepError);

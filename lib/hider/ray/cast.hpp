@@ -36,7 +36,7 @@ inline bool primary_query(const PrimaryRays& rays, const Vec3q30& d, bool cull, 
 /// Casts row y of the frame of `rays` against `mesh` and writes width pixels of Format to `row`:
 /// opt.shade headlight or id (Shade::depth is not a ray-casting mode: the caller rejects it), pixels
 /// that meet nothing get `background`. Counts rays and hits and the BVH's work. Preconditions:
-/// validate_bvh(bvh, mesh, stack) == ok, 0 <= y < rays.height.
+/// validate_bvh(bvh, mesh, stack) == ok with this stack (or one no shorter), 0 <= y < rays.height.
 template <class Format>
 TraceStats cast_row(const PrimaryRays& rays, const Mesh& mesh, const Bvh& bvh, const DrawOptions& opt, Rgb background,
                     int32_t y, typename Format::Pixel* row, Span<BvhStackEntry> stack) {

@@ -224,7 +224,8 @@ inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, 
 /// Traces row y of the frame into `row` (width pixels of Format). With `rects` (sphere_rects() of this
 /// frame, one per sphere) primary rays test only the spheres whose rectangle holds their pixel; the
 /// frame is the same either way. Borrows `stack` and `rects` for the call.
-/// Precondition: validate_scene(s, stack) == ok, 0 <= y < rays.height, rects empty or >= spheres.
+/// Precondition: validate_scene(s, stack) == ok with this stack (or one no shorter), 0 <= y < rays.height,
+/// rects empty or >= spheres.
 template <class Format>
 TraceStats trace_row(const Scene& s, const PrimaryRays& rays, int32_t y, typename Format::Pixel* row,
                      Span<BvhStackEntry> stack, Span<const SphereRect> rects = {}) {

@@ -359,7 +359,8 @@ private:
 /// order found, and when the pair-test budget runs out the rest go in depth order: the result is then
 /// capacity_exceeded and NewellStats says which; the frame still draws. Cost: one grid
 /// query per candidate, pair tests only for overlapping boxes; at most the budget of pair tests, and
-/// an input triangle cut by k planes makes at most (k^2 + k + 2) / 2 pieces.
+/// an input triangle cut by k planes makes at most (k^2 + k + 2) / 2 pieces. Precondition: polys come
+/// from build_polys() (no piece) or from an earlier newell_order() with this same `cuts` pool.
 inline Status newell_order(const View& view, BoundedList<ScreenPoly>& polys, BoundedList<PieceCut>& cuts,
                            const NewellScratch& scratch, BoundedList<uint32_t>& order, NewellStats& ns,
                            const NewellOptions& opt = {}) {

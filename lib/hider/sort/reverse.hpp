@@ -9,7 +9,8 @@ namespace hider {
 /// Draws polys in `order` from the last (nearest) to the first, writing each pixel of the band at most
 /// once; pieces are drawn with their cut chains in `cuts`. `coverage` is caller memory of rows() *
 /// coverage_words(width) words (cleared here). Stops early when the band is full. Returns
-/// invalid_argument if the frame is unusable or coverage too small.
+/// invalid_argument if the frame is unusable or coverage too small. Precondition (as for
+/// paint_in_order()): every entry of `order` indexes polys, and `cuts` is the pool polys were cut into.
 template <class Format, class Depth>
 FrameStats paint_front_to_back(const View& view, const Mesh& mesh, Span<const ScreenPoly> polys, Span<const PieceCut> cuts,
                                Span<const uint32_t> order, const FrameView<Format, Depth>& frame, const DrawOptions& opt,
