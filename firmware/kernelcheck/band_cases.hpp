@@ -1,7 +1,8 @@
 // Random small scenes drawn band by band, shared by the kernelcheck firmware and its host twin. Each
 // case is a draw case (draw_cases.hpp: a frame up to 24 x 24, 40 random triangles, some clipped), a
 // quarter of its triangles repeating an earlier one so that depths tie, culled or not, drawn by the band
-// renderer (binned.hpp) in bands of 1 to 6 rows with 0 to 5 carried slots: set-ups are carried,
+// renderer (binned.hpp) in bands of 1 to 6 rows, rows 0 to 3 elements longer than the frame's width (the
+// band buffer's stride: the pads must stay as they are), with 0 to 5 carried slots: set-ups are carried,
 // resumed, refused a slot and set up again. run_band_cases() draws each case through `draw` (on ARMv7-M
 // with the assembly band loop) and `twin` (the C++ loop) and digests every band, the frame's statistics
 // and the carried-slot figures.
@@ -57,6 +58,7 @@ int run_band_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
         BandSetup s;
         s.buffers = hider::band_view<hider::Rgb565Format, uint16_t>(b.color, b.depth, c.view.width, c.view.height, 0,
                                                                      hider::min(rows, c.view.height));
+        s.buffers.stride = c.view.width + rng.range(0, 3);  // 0 to 3 spare elements a row, never written
         s.opt.cull = c.cull;
         s.opt.base = {static_cast<uint8_t>(rng.next()), static_cast<uint8_t>(rng.next()), static_cast<uint8_t>(rng.next())};
         const size_t bands = static_cast<size_t>((c.view.height + s.buffers.y1 - 1) / s.buffers.y1);
@@ -64,10 +66,14 @@ int run_band_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
         uint32_t digests[2];
         for (int pass = 0; pass < 2; ++pass) {
             Fnv fnv;
+            for (int32_t k = 0; k < kMaxRows * kWidth; ++k) {  // the pads keep these: digested with the rows
+                b.color[k] = 0x5A5A;
+                b.depth[k] = 0xA5A5;
+            }
             auto done = [&](const hider::FrameView<hider::Rgb565Format, uint16_t>& band) {
-                fnv.add(static_cast<uint32_t>(band.y0));
-                const uint32_t n = static_cast<uint32_t>(band.width * band.rows());
-                for (uint32_t k = 0; k < n; ++k) fnv.add(band.color[k] | (uint32_t{band.depth[k]} << 16));
+                fnv.add(static_cast<uint32_t>(band.y0) | static_cast<uint32_t>(band.stride) << 16);
+                for (int32_t y = band.y0; y < band.y1; ++y)
+                    for (int32_t x = 0; x < band.stride; ++x) fnv.add(band.row(y)[x] | (uint32_t{band.depth_row(y)[x]} << 16));
                 return true;
             };
             for (size_t k = bands; k < 25; ++k) head[k] = 0x5A5A;  // past the scratch: must stay as it is

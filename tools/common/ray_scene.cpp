@@ -461,14 +461,14 @@ bool parse_ray_scene(std::istream& in, const std::string& name, const std::strin
     };
     // One line, at most kMaxLineBytes: a longer one (or /dev/zero) fails when it passes the limit, not
     // after the whole line is in memory. 1: a line, 0: the end, -1: too long.
-    auto next_line = [&in](std::string& out) -> int {
-        out.clear();
+    auto next_line = [&in](std::string& into) -> int {
+        into.clear();
         for (int c = in.get(); c != std::char_traits<char>::eof(); c = in.get()) {
             if (c == '\n') return 1;
-            if (out.size() == kMaxLineBytes) return -1;
-            out.push_back(static_cast<char>(c));
+            if (into.size() == kMaxLineBytes) return -1;
+            into.push_back(static_cast<char>(c));
         }
-        return out.empty() ? 0 : 1;
+        return into.empty() ? 0 : 1;
     };
     for (int got = next_line(text); got != 0; got = next_line(text)) {
         ++line;
