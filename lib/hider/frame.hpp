@@ -99,6 +99,16 @@ constexpr FrameView<Format, Depth> band_view(typename Format::Pixel* color, Dept
     return v;
 }
 
+/// Rows [y0, y1) of the frame `buffers` belongs to, in buffers' own memory and stride: the band
+/// renderers draw every band of a frame into one band-sized buffer.
+template <class Format, class Depth>
+constexpr FrameView<Format, Depth> band_in(const FrameView<Format, Depth>& buffers, int32_t y0, int32_t y1) {
+    // Field by field, not a copy of buffers: GCC copied the whole view through the stack for each band.
+    FrameView<Format, Depth> v = band_view<Format, Depth>(buffers.color, buffers.depth, buffers.width, buffers.height, y0, y1);
+    v.stride = buffers.stride;
+    return v;
+}
+
 /// View of a whole width x height frame.
 template <class Format, class Depth = uint16_t>
 constexpr FrameView<Format, Depth> frame_view(typename Format::Pixel* color, Depth* depth, int32_t width,

@@ -23,12 +23,15 @@ struct Mesh {
 /// Most vertices a mesh may index with uint16_t.
 constexpr size_t kMaxMeshVertices = 65536;
 
+/// Whether normals and ids, each either empty or one per triangle, fit the triangles.
+inline bool triangle_arrays_fit(const Mesh& m) {
+    return (m.normals.empty() || m.normals.size() == m.tris.size()) && (m.ids.empty() || m.ids.size() == m.tris.size());
+}
+
 /// Checks a mesh once (sizes, every index, every coordinate inside the world range).
 /// Returns bad_data for a wrong size or index, out_of_range for a coordinate. Cost: O(vertices + triangles).
 inline Status validate(const Mesh& m) {
-    if (m.positions.size() > kMaxMeshVertices) return Status::bad_data;
-    if (!m.normals.empty() && m.normals.size() != m.tris.size()) return Status::bad_data;
-    if (!m.ids.empty() && m.ids.size() != m.tris.size()) return Status::bad_data;
+    if (m.positions.size() > kMaxMeshVertices || !triangle_arrays_fit(m)) return Status::bad_data;
     for (const Tri& t : m.tris)
         for (uint16_t i : t.v)
             if (i >= m.positions.size()) return Status::bad_data;

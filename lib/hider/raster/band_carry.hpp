@@ -100,8 +100,7 @@ public:
     /// Draws band b (rows [y0, y1)) after clearing it; false when done() refuses it.
     template <class BandDone>
     bool band(size_t b, size_t bands, int32_t y0, int32_t y1, Rgb background, BandDone& done) {
-        band_ = band_view<Rgb565Format, uint16_t>(buffers_.color, buffers_.depth, buffers_.width, buffers_.height, y0, y1);
-        band_.stride = buffers_.stride;  // the kernel's rows (kband_) are buffers' rows too
+        band_ = band_in(buffers_, y0, y1);  // buffers' stride: the kernel's rows (kband_) are buffers' rows too
         clear_band(background);
         band_bb_ = band_bounds(band_);
         kband_.row_from = y0;

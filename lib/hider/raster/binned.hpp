@@ -21,15 +21,14 @@ __attribute__((noinline)) void draw_bands_generic(const View& view, const Mesh& 
                                                   const FrameView<Format, Depth>& buffers, const DrawOptions& opt,
                                                   Rgb background, const BinnedScratch& scratch, BandDone& done,
                                                   BinnedStats& out, FrameStats& st) {
-    const int32_t rows = buffers.y1, width = buffers.width, height = buffers.height;
+    const int32_t rows = buffers.y1, height = buffers.height;
     const size_t bands = static_cast<size_t>((height + rows - 1) / rows);
     uint16_t* const next = scratch.next.data();
     uint16_t* const head = scratch.head.data();
     const FaceShading shading(view, opt);
     for (size_t b = 0; b < bands; ++b) {
         const int32_t y0 = static_cast<int32_t>(b) * rows, y1 = min(height, y0 + rows);
-        FrameView<Format, Depth> band = band_view<Format, Depth>(buffers.color, buffers.depth, width, height, y0, y1);
-        band.stride = buffers.stride;
+        const FrameView<Format, Depth> band = band_in(buffers, y0, y1);
         clear(band, background);
         const BandBounds band_bb = band_bounds(band);
         uint16_t last = kNoTriangle;
@@ -102,8 +101,9 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
 }  // namespace detail
 
 /// Draws `mesh` band by band: for each band of `buffers.y1` rows (buffers: a view of rows [0, y1) whose
-/// memory, `buffers.stride` elements a row, is reused for every band), clears it to `background`, draws every triangle's rows in it and
-/// calls done(band), a FrameView of the band's rows; done() returns false to stop the frame. Same
+/// memory, `buffers.stride` elements a row, is reused for every band), clears it to `background`, draws
+/// every triangle's rows in it and calls done(band), a FrameView of the band's rows; done() returns
+/// false to stop the frame. Same
 /// bytes as clear() + draw_zbuffer() on the whole frame; statistics as the whole frame's. `bs`, if
 /// given, receives the carried-slot figures. Errors: invalid_argument (unusable buffers, a mesh of more
 /// than 65,535 triangles, scratch too small: next < triangles, head < bands, slots < 3 x carried, more

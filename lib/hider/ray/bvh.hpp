@@ -74,9 +74,9 @@ inline bool leaf_valid(const Bvh& bvh, const Mesh& mesh, const BvhNode& n) {
 }
 }  // namespace detail
 
-/// Checks `bvh` against `mesh` once: magic and version (bad_data), sizes (normals and ids, when given, one
-/// per triangle), the pre-order tree shape, every index, boxes nested and holding their triangles, the root inside the world cube (out_of_range), the
-/// recorded depth (bad_data if the tree is deeper). capacity_exceeded when stack.size() < max_depth.
+/// Checks `bvh` against `mesh` once: magic and version (bad_data), sizes (triangle_arrays_fit() too), the
+/// pre-order tree shape, every index, boxes nested and holding their triangles, the root inside the world
+/// cube (out_of_range), the recorded depth (bad_data if the tree is deeper). capacity_exceeded when stack.size() < max_depth.
 /// Cost O(nodes + triangles); uses `stack` as scratch.
 inline Status validate_bvh(const Bvh& bvh, const Mesh& mesh, Span<BvhStackEntry> stack) {
     const BvhHeader& h = bvh.header;
@@ -84,9 +84,7 @@ inline Status validate_bvh(const Bvh& bvh, const Mesh& mesh, Span<BvhStackEntry>
         bvh.nodes.size() != h.node_count || bvh.triangles.size() != h.triangle_count || h.triangle_count != mesh.tris.size())
         return Status::bad_data;
     if (stack.size() < h.max_depth) return Status::capacity_exceeded;
-    // cast_row() reads a normal and an id per triangle hit (as validate(mesh) requires of them).
-    if ((!mesh.normals.empty() && mesh.normals.size() != mesh.tris.size()) || (!mesh.ids.empty() && mesh.ids.size() != mesh.tris.size()))
-        return Status::bad_data;
+    if (!triangle_arrays_fit(mesh)) return Status::bad_data;  // cast_row() reads a normal and an id per hit
     const BvhNode& root = bvh.nodes[0];
     for (int i = 0; i < 3; ++i)
         if (root.lo[i] <= -kRayWorldLimitRaw || root.hi[i] >= kRayWorldLimitRaw) return Status::out_of_range;
