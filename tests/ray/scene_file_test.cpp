@@ -1,4 +1,4 @@
-// The ray-tracing scene format (tools/common/ray_scene.*, README.md "Ray-traced scenes"): every kind of
+// The ray-tracing scene format (tools/common/ray_scene.*, README.md "Scene files (`hider-render --scene`)"): every kind of
 // malformed line is reported as "file:line: what" and rejected, good files load exactly, and
 // hider-render --scene keeps the tools' error contract (exit 2, one stderr line, no output file).
 #include <sys/wait.h>

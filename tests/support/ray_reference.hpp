@@ -1,5 +1,5 @@
 // Independent double-precision Whitted ray tracer for tests (no lib/ code): the same scene model as
-// lib/hider/ray/trace.hpp (README.md, "Ray-traced scenes") computed exactly, plus a signature per pixel
+// lib/hider/ray/trace.hpp (README.md, "Scene files (`hider-render --scene`)") computed exactly, plus a signature per pixel
 // of everything discrete along its path (objects met, checker squares, lights blocked) so tests can
 // leave out pixels next to a discontinuity (silhouettes, checker edges, shadow edges, their mirror images).
 #pragma once

@@ -842,6 +842,13 @@ TEST_CASE("hider-bsp's output is deterministic, and its .hpp holds the blob's by
     const std::string blob = read_file(torus_blob());
     CHECK(read_file(again) == blob);
     CHECK(blob.size() > 64);
+    // The extension picks the form in any case, as hider-render's and hider-plot's do.
+    const std::string upper = scratch_path("torus_upper.HBSP");
+    REQUIRE(bsp_tool(kTorus, upper).code == 0);
+    CHECK(read_file(upper) == blob);
+    const std::string upper_hpp = scratch_path("torus_upper.Hpp");
+    REQUIRE(bsp_tool(kTorus, upper_hpp, {"--name", "kUpper"}).code == 0);
+    CHECK(contains(read_file(upper_hpp), "kUpper"));
     const std::string header = scratch_path("torus_tree.hpp");
     const Run r = bsp_tool(kTorus, header, {"--name", "kTorusTree"});
     CHECK(r.code == 0);

@@ -44,6 +44,13 @@ bool parse_int(const std::string& s, long& out) {
     return end == s.c_str() + s.size() && errno == 0;
 }
 
+bool has_extension(const std::string& path, const std::string& ext) {
+    if (path.size() < ext.size()) return false;
+    for (size_t i = 0; i < ext.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(path[path.size() - ext.size() + i])) != ext[i]) return false;
+    return true;
+}
+
 bool output_format(const std::string& path, bool& png, std::string& why) {
     struct stat st {};  // a device or a pipe (/dev/stdout, a fifo) takes PPM, whatever its name
     if (path.rfind("/dev/", 0) == 0 || (::stat(path.c_str(), &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)))) {

@@ -21,6 +21,9 @@ bool parse_int(const std::string& s, long& out);
 /// (png = true); PPM for a path under /dev/ (/dev/stdout) or a pipe. False with the user message for any other.
 bool output_format(const std::string& path, bool& png, std::string& why);
 
+/// True when `path` ends with `ext` (given in lower case, dot included) in any case: "T.HBSP" has ".hbsp".
+bool has_extension(const std::string& path, const std::string& ext);
+
 /// "x,y,z" for option `opt`; on failure returns false and sets `why` to the user message.
 bool parse_vec3(const std::string& opt, const std::string& s, Vec3d& out, std::string& why);
 

@@ -1,4 +1,4 @@
-// Ray-tracing scene reader (format: README.md, "Ray-traced scenes"). Every number is checked against the
+// Ray-tracing scene reader (format: README.md, "Scene files (`hider-render --scene`)"). Every number is checked against the
 // range lib/ can hold before it is converted to fixed point, once; meshes get their BVH here.
 #include "common/ray_scene.hpp"
 

@@ -43,10 +43,6 @@ int int_option(const std::string& opt, const std::string& v, long lo, long hi) {
     return static_cast<int>(n);
 }
 
-bool ends_with(const std::string& s, const std::string& tail) {
-    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,8 +72,8 @@ int main(int argc, char** argv) {
     }
     if (model_path.empty()) fail(std::string("no model given\n") + kUsage);
     if (out_path.empty()) fail(std::string("no output given (-o OUT.hbsp)\n") + kUsage);
-    const bool header = ends_with(out_path, ".hpp");
-    if (!header && !ends_with(out_path, ".hbsp")) fail("output '" + out_path + "': use .hbsp (a blob) or .hpp (a C++ header)");
+    const bool header = has_extension(out_path, ".hpp");  // in any case, as the other tools
+    if (!header && !has_extension(out_path, ".hbsp")) fail("output '" + out_path + "': use .hbsp (a blob) or .hpp (a C++ header)");
     std::string why;
     if (!bake::valid_name(name, why)) fail("--name '" + name + "' " + why);
     if (!camera_options.empty() && !header) fail("camera options need a .hpp output (a blob holds no camera)");

@@ -47,14 +47,6 @@ Vec3d parse_vec(const std::string& opt, const std::string& s) {
     return v;
 }
 
-/// True when path ends with ext, in any case.
-bool has_extension(const std::string& path, const std::string& ext) {
-    if (path.size() < ext.size()) return false;
-    for (size_t i = 0; i < ext.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(path[path.size() - ext.size() + i])) != ext[i]) return false;
-    return true;
-}
-
 /// The whole file at `path`; false with "path: what" when it cannot be read.
 bool read_bytes(const std::string& path, std::vector<uint8_t>& out, std::string& why) {
     std::ifstream in(path, std::ios::binary);
@@ -121,7 +113,7 @@ bool model_only_option(const std::string& a) {
            a == "--reorders";
 }
 
-/// --scene FILE.txt: ray traces a scene file (README.md, "Ray-traced scenes").
+/// --scene FILE.txt: ray traces a scene file (README.md, "Scene files (`hider-render --scene`)").
 int render_scene_file(const std::string& scene_path, const std::string& model_path, const std::string& out_path,
                       bool size_given, const CameraArgs& cam, const RenderOptions& opt, bool stats, int argc, char** argv) {
     if (!model_path.empty()) fail("give either a model or --scene, not both ('" + model_path + "', '" + scene_path + "')");

@@ -12,11 +12,21 @@
 
 namespace {
 
+void print_usage(std::ostream& out) {
+    out << "usage: hider-stack DUMP --entry FUNC [--limit BYTES] [--handler FUNC]... [--not-pointers OBJECT]...\n"
+        << "  DUMP: the output of `objdump -t -s -d firmware.elf` (arm-none-eabi- or riscv64-unknown-elf-objdump;\n"
+        << "  --no-show-raw-insn optional)\n"
+        << "  --entry FUNC          the function the bound starts from (the reset handler)\n"
+        << "  --limit BYTES         exit 1 when the bound exceeds BYTES\n"
+        << "  --handler FUNC        an exception handler: never the target of an indirect call (repeatable)\n"
+        << "  --not-pointers OBJECT a data object whose words are not code addresses (repeatable)\n"
+        << "exit 0: bounded (within --limit); 1: above --limit; 2: no bound (recursion, sp moved by a register,\n"
+        << "an unresolved call) or bad usage\n";
+}
+
 int usage(const char* why) {
-    std::cerr << "hider-stack: " << why << "\n"
-              << "usage: hider-stack DUMP --entry FUNC [--limit BYTES] [--handler FUNC]... [--not-pointers OBJECT]...\n"
-              << "  DUMP: the output of `objdump -t -s -d firmware.elf` (arm-none-eabi- or riscv64-unknown-elf-objdump;\n"
-              << "  --no-show-raw-insn optional)\n";
+    std::cerr << "hider-stack: " << why << "\n";
+    print_usage(std::cerr);
     return 2;
 }
 
@@ -32,6 +42,10 @@ int main(int argc, char** argv) {
     long limit = -1;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
+        if (a == "--help" || a == "-h") {
+            print_usage(std::cout);
+            return 0;
+        }
         if (a == "--entry" || a == "--handler" || a == "--not-pointers" || a == "--limit") {
             const char* v = i + 1 < argc ? argv[++i] : nullptr;
             if (v == nullptr) return usage((a + " needs a value").c_str());

@@ -14,6 +14,7 @@ struct SortKey {
     uint32_t key;
     uint32_t index;
 };
+static_assert(sizeof(SortKey) == 8, "SortKey's size is documented in README.md");
 
 /// Sorts keys[0..n) by key, ascending and stable, with `scratch` (>= n entries) as the second
 /// buffer: four passes of 8 bits, O(n + 256) each. The result ends up in `keys`.
