@@ -20,4 +20,4 @@ $render tests/data/models/teapot.obj --eye 2,4,5 --no-cull -o demo.ppm
 $render tests/data/models/teapot.obj --eye 2,4,5 --no-cull -o demo.png
 $render tests/data/models/torus.obj --eye 0,0,-2.5 --target 0,0,0 --fov 73.7398 --near 0.25 --stats -o torus.png
 $render --scene tests/data/scenes/spheres.txt --size 320x256 --stats -o raytrace.png
-echo "wrote demo.ppm, demo.png (teapot), torus.png (benchmark view) and raytrace.png (ray-traced spheres)"
+echo "wrote demo.ppm, demo.png (teapot), torus.png (benchmark view) and raytrace.png (ray-traced spheres) in $PWD"

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Serves the playground site on 127.0.0.1 (Python's standard library only).
 
-Usage: serve.py SITE_DIR [PORT]   (PORT 0 or absent: 8000; the test uses a free port)
+Usage: serve.py SITE_DIR [PORT]   (absent: 8000; 0: a free port, printed; the test uses 0)
 WebAssembly needs the application/wasm and JavaScript module types, which older Pythons do not map.
 """
 import functools

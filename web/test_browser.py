@@ -212,7 +212,7 @@ class Suite:
         i = args.index("-o")
         return args[:i] + args[i + 2:]
 
-    def compare_frame(self, label, expect_args=None):
+    def compare_frame(self, label, expect_args=None, cwd=None):
         state = self.b.evaluate("document.body.dataset.state")
         page_error = self.b.evaluate("document.getElementById('error').textContent")
         if state != "done":
@@ -220,7 +220,7 @@ class Suite:
         args = self.page_args()
         if expect_args is not None and args != expect_args:
             raise Failure(f"{label}: page ran {args}, expected {expect_args}")
-        run, out = self.native(args)
+        run, out = self.native(args, cwd=cwd)
         if run.returncode != 0:
             raise Failure(f"{label}: native hider-render failed: {run.stderr}")
         width, height, rgb = read_ppm(out)
@@ -384,6 +384,11 @@ class Suite:
         self.expect_native_error("face index out of range", "broken.obj", b"v 0 0 0\nv 1 0 0\nf 1 2 7\n")
         self.expect_native_error("vertex with two coordinates", "two coords.obj", b"v 0 0 0\nv 1 2\nf 1 2 1\n")
         self.expect_native_error("number out of range", "tiny.obj", b"v 1e-400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+        # Hex numbers past double's range: musl's strtod sets no ERANGE for them (web/compat/from_chars.cpp).
+        self.expect_native_error("hex overflow", "hexbig.obj", b"v 0x1p1024 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+        self.expect_native_error("hex overflow by rounding", "hexround.obj",
+                                 b"v 0x1.fffffffffffff8p1023 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+        self.expect_native_error("hex underflow", "hexsmall.obj", b"v 0x1p-1080 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
         self.expect_native_error("binary garbage", "garbage.obj", bytes(range(256)) * 4)
         self.expect_native_error("no faces, chosen with the file input", "nofaces.obj", b"v 1 2 3\n", via_input=True)
         if self.o.screenshots:
@@ -392,6 +397,15 @@ class Suite:
         state = self.drop("subnormal.obj", b"v 1e-310 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n")
         if state != "done":
             raise Failure("subnormal coordinate: " + self.b.evaluate("document.getElementById('error').textContent"))
+        # Coordinates near the ends of double's range render (the model is scaled into the world), the
+        # same as natively: libc++'s three-argument std::hypot squares, and overflowed or underflowed here.
+        folder = os.path.join(self.o.work, "dropped")
+        for name, text in (("huge.obj", b"v 0 0 0\nv 2e154 0 0\nv 0 2e154 0\nf 1 2 3\n"),
+                           ("minute.obj", b"v 1e-170 0 0\nv 3e-170 0 0\nv 1e-170 2e-170 0\nf 1 2 3\n")):
+            with open(os.path.join(folder, name), "wb") as f:
+                f.write(text)
+            self.drop(name, text)
+            self.compare_frame(f"dropped {name} (coordinates near double's limits)", cwd=folder)
         # The page recovers: a shipped model chosen in the select renders again.
         self.b.evaluate("(() => { const s = document.getElementById('model'); s.value = 'torus'; "
                         "s.dispatchEvent(new Event('change')); })()")

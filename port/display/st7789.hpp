@@ -77,12 +77,15 @@ public:
         : hal_(hal), config_(config), band_(config.width, config.height) {}
 
     /// Resets the panel (pulse on RESET if wired, then SWRESET) and runs the controller's init sequence; false
-    /// if a required HAL function is missing or the config is empty. Blocks for about 400 ms in delay_ms.
+    /// if a required HAL function is missing, the config is empty or its offsets put the panel's last column
+    /// or row past RAM address 0xFFFF. Blocks for about 400 ms in delay_ms.
     [[nodiscard]] bool init() {
         initialized_ = false;
         if (band_.in_frame()) (void)band_.end_frame();
-        end_write();
+        close_window();
         if (!hal_complete() || config_.width == 0 || config_.height == 0) return false;
+        if (uint32_t{config_.x_offset} + config_.width > 0x10000u || uint32_t{config_.y_offset} + config_.height > 0x10000u)
+            return false;
         if (config_.controller != Controller::st7789 && config_.controller != Controller::ili9341) return false;
         if (hal_.set_reset != nullptr) {
             hal_.set_reset(hal_.user, false);
@@ -162,12 +165,10 @@ public:
         return true;
     }
 
-    /// Closes an open window and deselects the panel; does nothing when no window is open.
+    /// Closes an open window and deselects the panel; does nothing when no window is open, and nothing during
+    /// a sink frame (whose window the sink's end_frame closes: closing it early would send the rest unselected).
     void end_write() {
-        if (!writing_) return;
-        writing_ = false;
-        window_left_ = 0;
-        deselect();
+        if (!band_.in_frame()) close_window();
     }
 
     /// Whether a window is open for pixel data.
@@ -196,9 +197,16 @@ private:
         chunk_[2 * i + 1] = static_cast<uint8_t>(rgb565 & 0xFF);
     }
 
+    void close_window() {
+        if (!writing_) return;
+        writing_ = false;
+        window_left_ = 0;
+        deselect();
+    }
+
     // Command byte with DC low, then parameters with DC high; CS stays selected when `keep_selected`.
     void command(uint8_t cmd, const uint8_t* params, size_t len, bool keep_selected = false) {
-        end_write();
+        close_window();
         select();
         hal_.set_dc(hal_.user, false);
         hal_.spi_write(hal_.user, &cmd, 1);
@@ -266,7 +274,7 @@ private:
         SpiTft& tft = *static_cast<SpiTft*>(user);
         const bool was_open = tft.band_.in_frame();
         tft.last_band_status_ = tft.band_.end_frame();
-        if (was_open) tft.end_write();
+        if (was_open) tft.close_window();
         return tft.last_band_status_ == BandStatus::ok;
     }
 

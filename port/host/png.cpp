@@ -1,7 +1,8 @@
-// Minimal PNG encoder: IHDR, one IDAT of stored (uncompressed) deflate blocks, IEND.
+// Minimal PNG encoder: IHDR, IDAT chunks of stored (uncompressed) deflate blocks, IEND.
 #include "host/png.hpp"
 
-#include "host/ppm.hpp"
+#include <algorithm>
+#include <cstdint>
 
 
 namespace hider::port {
@@ -20,17 +21,23 @@ void put32(std::vector<uint8_t>& out, uint32_t v) {
     for (int s = 24; s >= 0; s -= 8) out.push_back(static_cast<uint8_t>(v >> s));
 }
 
-void chunk(std::vector<uint8_t>& out, const char* type, const std::vector<uint8_t>& body) {
-    put32(out, static_cast<uint32_t>(body.size()));
+void chunk(std::vector<uint8_t>& out, const char* type, const uint8_t* body, size_t n) {
+    put32(out, static_cast<uint32_t>(n));
     const size_t start = out.size();
     out.insert(out.end(), type, type + 4);
-    out.insert(out.end(), body.begin(), body.end());
+    out.insert(out.end(), body, body + n);
     put32(out, crc32(out.data() + start, out.size() - start));
 }
 
 }  // namespace
 
 std::vector<uint8_t> png_bytes(int width, int height, const std::vector<uint8_t>& rgb) {
+    return detail::png_bytes(width, height, rgb, kPngMaxChunk);
+}
+
+namespace detail {
+std::vector<uint8_t> png_bytes(int width, int height, const std::vector<uint8_t>& rgb, size_t max_idat) {
+    if (!rgb_size_ok(width, height, rgb.size()) || max_idat == 0 || max_idat > kPngMaxChunk) return {};
     std::vector<uint8_t> raw;  // each row: filter byte 0, then the pixels
     raw.reserve(static_cast<size_t>(height) * (static_cast<size_t>(width) * 3 + 1));
     for (int y = 0; y < height; ++y) {
@@ -59,14 +66,19 @@ std::vector<uint8_t> png_bytes(int width, int height, const std::vector<uint8_t>
     put32(ihdr, static_cast<uint32_t>(width));
     put32(ihdr, static_cast<uint32_t>(height));
     ihdr.insert(ihdr.end(), {8, 2, 0, 0, 0});  // 8-bit, RGB, deflate, adaptive filters, no interlace
-    chunk(out, "IHDR", ihdr);
-    chunk(out, "IDAT", z);
-    chunk(out, "IEND", {});
+    chunk(out, "IHDR", ihdr.data(), ihdr.size());
+    for (size_t pos = 0; pos < z.size();) {  // a chunk holds at most 2^31 - 1 bytes
+        const size_t n = std::min(max_idat, z.size() - pos);
+        chunk(out, "IDAT", z.data() + pos, n);
+        pos += n;
+    }
+    chunk(out, "IEND", nullptr, 0);
     return out;
 }
+}  // namespace detail
 
 bool write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, std::string& error) {
-    if (width <= 0 || height <= 0 || rgb.size() != static_cast<size_t>(width) * height * 3) {
+    if (!rgb_size_ok(width, height, rgb.size())) {
         error = path + ": image size does not match its pixel data";
         return false;
     }

@@ -15,6 +15,12 @@
 
 namespace hider::port {
 
+bool rgb_size_ok(int width, int height, size_t rgb_bytes) {
+    if (width <= 0 || height <= 0) return false;
+    const uint64_t bytes = uint64_t{static_cast<uint32_t>(width)} * static_cast<uint32_t>(height) * 3u;
+    return bytes <= SIZE_MAX / 2 && bytes == rgb_bytes;  // room for the PNG's row filters and chunks
+}
+
 std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>& rgb) {
     const std::string header = "P6\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
     std::vector<uint8_t> out(header.begin(), header.end());
@@ -105,7 +111,7 @@ bool write_file(const std::string& path, const std::string& bytes, std::string& 
 }
 
 bool write_ppm(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, std::string& error) {
-    if (width <= 0 || height <= 0 || rgb.size() != static_cast<size_t>(width) * height * 3) {
+    if (!rgb_size_ok(width, height, rgb.size())) {
         error = path + ": image size does not match its pixel data";
         return false;
     }

@@ -2,6 +2,7 @@
 #pragma once
 #include <hider/frame.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,6 +22,10 @@ void append_rgb888(const FrameView<Format, Depth>& f, std::vector<uint8_t>& out)
         }
     }
 }
+
+/// Whether width x height RGB888 pixels make a positive size of exactly `rgb_bytes` bytes, computed without
+/// wrapping (also where size_t has 32 bits) and small enough to encode (under SIZE_MAX / 2).
+bool rgb_size_ok(int width, int height, size_t rgb_bytes);
 
 /// The bytes of a P6 file: "P6\n<W> <H>\n255\n" then W*H*3 bytes of `rgb`.
 std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>& rgb);

@@ -1,5 +1,6 @@
 // Semihosting calls for ARM M-profile and RISC-V. Each call passes an operation number and a
-// pointer to a block of 32-bit words; the host answers in r0/a0 (docs/targets.md s.5).
+// pointer to a block of 32-bit words; the host answers in r0/a0 (Arm's semihosting specification;
+// RISC-V's semihosting specification for the trap sequence).
 #include "semihost/semihost.hpp"
 
 namespace hider::semihost {
@@ -18,7 +19,13 @@ constexpr uintptr_t kApplicationExit = 0x20026;            // ADP_Stopped_Applic
 }  // namespace
 }  // namespace hider::semihost
 
-#if defined(__arm__)
+#if defined(__arm__) && !(defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'M')
+// A- and R-profile cores trap with SVC (0x123456 in A32, 0xAB in T32), not BKPT: BKPT there would
+// stop in the debugger or hang under QEMU. Not built or tested here: refuse rather than hang.
+#error "semihost: ARM M-profile (Cortex-M) or RV32 only; this ARM core is A- or R-profile"
+#elif defined(__riscv) && __riscv_xlen != 32
+#error "semihost: RV32 only (RV64 passes 64-bit parameter blocks)"
+#elif defined(__arm__)
 namespace {
 intptr_t semihost_call(uintptr_t op, const void* arg) {
     register uintptr_t r0 __asm__("r0") = op;

@@ -1,6 +1,7 @@
 // Freestanding semihosting port: host files, console text and the exit status of a firmware run
-// under QEMU (-semihosting-config enable=on,target=native). ARM: bkpt 0xAB; RISC-V: the
-// slli/ebreak/srai sequence. Operation numbers and blocks: docs/targets.md s.5, ARM "Semihosting v2".
+// under QEMU (-semihosting-config enable=on,target=native). Cortex-M: bkpt 0xAB; RV32: the
+// slli/ebreak/srai sequence (other ARM profiles and RV64 are refused at compile time). Operation numbers
+// and blocks: Arm's "Semihosting for AArch32 and AArch64" (version 2), RISC-V's semihosting specification.
 #pragma once
 #include <stddef.h>
 #include <stdint.h>

@@ -312,13 +312,29 @@ TEST_CASE("set_window refuses inverted or off-panel rectangles and sends nothing
     CHECK(tft.set_window(239, 239, 239, 239));
 }
 
-TEST_CASE("set_window refuses a rectangle whose RAM address would pass 0xFFFF") {
-    FakeBus bus;
-    SpiTft tft(bus.hal(), TftConfig{Controller::st7789, 240, 240, 0xFFF0, 0, 0, true});
-    REQUIRE(tft.init());
-    bus.clear();
-    CHECK(tft.set_window(0, 0, 15, 0));
-    CHECK_FALSE(tft.set_window(0, 0, 16, 0));
+TEST_CASE("init refuses a panel whose offsets put a column or row past RAM address 0xFFFF, and sends nothing") {
+    {
+        FakeBus bus;  // the last column at 0xFFFF, the last row at 0xFFFF: fits
+        SpiTft tft(bus.hal(), TftConfig{Controller::st7789, 16, 8, 0xFFF0, 0xFFF8, 0, true});
+        REQUIRE(tft.init());
+        bus.clear();
+        CHECK(tft.set_window(0, 0, 15, 7));
+        CHECK(bus.params_of(0x2A) == std::vector<uint8_t>{0xFF, 0xF0, 0xFF, 0xFF});
+        CHECK(bus.params_of(0x2B) == std::vector<uint8_t>{0xFF, 0xF8, 0xFF, 0xFF});
+    }
+    for (const TftConfig& config : {TftConfig{Controller::st7789, 17, 8, 0xFFF0, 0, 0, true},
+                                    TftConfig{Controller::st7789, 8, 9, 0, 0xFFF8, 0, true},
+                                    TftConfig{Controller::ili9341, 240, 240, 65500, 0, 0, false}}) {
+        FakeBus bus;
+        SpiTft tft(bus.hal(), config);
+        CHECK_FALSE(tft.init());
+        CHECK(bus.events.empty());
+        CHECK_FALSE(tft.set_window(0, 0, 0, 0));
+        const BandSink sink = tft.sink();  // the sink too: it opens its window without set_window's checks
+        CHECK_FALSE(sink.begin_frame(sink.user, 1, 1));
+        CHECK(tft.last_band_status() == BandStatus::not_ready);
+        CHECK(bus.events.empty());
+    }
 }
 
 TEST_CASE("write_pixels sends RGB565 high byte first, in order") {
@@ -534,6 +550,28 @@ TEST_CASE("raw calls are refused while a sink frame is open") {
     CHECK(sink.write_rows(sink.user, 0, 2, pixels, 2));
     CHECK(sink.end_frame(sink.user));
     CHECK(tft.set_window(0, 0, 1, 1));
+}
+
+TEST_CASE("end_write during a sink frame does nothing: the frame's pixels still go out selected") {
+    const uint16_t width = 24, height = 20;
+    const std::vector<uint16_t> frame = test_pattern(size_t{width} * height);
+    FakeBus bus;
+    SpiTft tft(bus.hal(), st7789_240x240());
+    REQUIRE(tft.init());
+    const BandSink sink = tft.sink();
+    bus.clear();
+    REQUIRE(sink.begin_frame(sink.user, width, height));
+    REQUIRE(sink.write_rows(sink.user, 0, 10, frame.data(), width));
+    const uint32_t left = tft.window_pixels_left();
+    tft.end_write();
+    CHECK(tft.writing());
+    CHECK(tft.window_pixels_left() == left);
+    REQUIRE(sink.write_rows(sink.user, 10, 10, frame.data() + 10 * width, width));
+    CHECK(sink.end_frame(sink.user));
+    CHECK(bus.bytes_without_cs == 0);
+    CHECK(bus.params_of(0x2C) == big_endian(frame));
+    CHECK_FALSE(tft.writing());
+    CHECK(tft.window_pixels_left() == 0);
 }
 
 TEST_CASE("init during an open sink frame closes the frame and starts over") {

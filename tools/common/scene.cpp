@@ -1,6 +1,7 @@
 // Scene fitting: bounding box of model + eye + target into +-kFitHalfExtent world units, camera defaults
 // that frame the model, and conversion of every value to fixed point exactly once.
 #include "common/scene.hpp"
+#include "common/hypot3.hpp"
 
 #include <hider/view.hpp>
 
@@ -19,8 +20,7 @@ std::string fmt(double v) {
     return s.str();
 }
 
-// hypot, not sqrt of squares: the squares overflow above ~1e154 and underflow below ~1e-154.
-double length(const Vec3d& v) { return std::hypot(v[0], v[1], v[2]); }
+double length(const Vec3d& v) { return hypot3(v[0], v[1], v[2]); }
 Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
 /// Nearest Q16 to v; false if it does not fit int32.

@@ -1,5 +1,6 @@
 // hider-plot driver: camera defaults and checks in double, one conversion to lib/ types, the plot.
 #include "hider-plot/plot.hpp"
+#include "common/hypot3.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,7 @@ Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[
 Vec3d cross(const Vec3d& a, const Vec3d& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double length(const Vec3d& v) { return std::hypot(v[0], v[1], v[2]); }
+double length(const Vec3d& v) { return tool::hypot3(v[0], v[1], v[2]); }
 Vec3d scaled(const Vec3d& v, double s) { return {v[0] * s, v[1] * s, v[2] * s}; }
 
 std::string fmt(double v) {

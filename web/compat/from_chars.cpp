@@ -36,8 +36,20 @@ from_chars_result from_chars(const char* first, const char* last, double& value,
     if (used <= prefix) return {first, errc::invalid_argument};
     const char* ptr = first + (used - prefix);
     // musl also reports ERANGE for a subnormal result; from_chars (and the host's libstdc++) accepts
-    // those and refuses only results that underflow to zero or overflow to infinity.
-    if (errno == ERANGE && (parsed == 0 || parsed > DBL_MAX || parsed < -DBL_MAX)) return {ptr, errc::result_out_of_range};
+    // those and refuses only results that underflow to zero or overflow to infinity. musl does not set
+    // ERANGE when a hex number overflows or underflows, so the result decides there: an infinity the text
+    // does not spell ("inf" holds an 'n', no number does), or a zero from a nonzero mantissa.
+    const std::string number = text.substr(prefix, used - prefix);
+    const bool infinite = parsed > DBL_MAX || parsed < -DBL_MAX;
+    const bool spelled_inf = number.find_first_of("nN") != std::string::npos;
+    bool nonzero_mantissa = false;
+    for (const char c : number) {
+        if (c == 'e' || c == 'E' || ((fmt == chars_format::hex) && (c == 'p' || c == 'P'))) break;
+        if ((c >= '1' && c <= '9') || (fmt == chars_format::hex && ((c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'))))
+            nonzero_mantissa = true;
+    }
+    if ((errno == ERANGE && (parsed == 0 || infinite)) || (infinite && !spelled_inf) || (parsed == 0 && nonzero_mantissa))
+        return {ptr, errc::result_out_of_range};
     value = parsed;
     return {ptr, errc{}};
 }
