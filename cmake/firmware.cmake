@@ -54,6 +54,7 @@ endfunction()
 # hider_add_firmware(NAME <name> SOURCES <src>... MACHINE <big|small>
 #                    [RAM_BUDGET <ld size>] [STACK_SIZE <ld size, default 4K>] [STACK_LIMIT <bytes>]
 #                    [TIMEOUT <seconds, default 60>] [LIBRARIES <target>...] [NOT_POINTERS <object glob>...]
+#                    [RUNTIME <target>] [FLAGS <flag>...] [EMULATOR <command>...]
 #                    [NO_SYMBOL_CHECK] [NO_TEST])
 # Builds <name>.elf for the current target with the runtime (startup, mem*, bench markers,
 # semihosting) and hider::hider. After linking: the nm check (fails the build on float, heap,
@@ -64,10 +65,14 @@ endfunction()
 # <name>.stack_bound requires hider-stack's static worst-case stack (from the reset entry, every path)
 # to fit STACK_SIZE less the 32 bytes the start-up requires untouched; NOT_POINTERS names data objects whose words are not function pointers (baked
 # data that holds integers equal to code addresses).
+# RUNTIME replaces hider_fw_runtime (a variant built for other CPU flags), FLAGS are added to the
+# firmware's compile and link flags (after the toolchain's: a later -march wins, and the link picks
+# libgcc's matching multilib), EMULATOR replaces the machine's QEMU command line (ending in -kernel) for
+# the ctest run (the <name>_insncount target keeps tools/qemu-insncount/run.sh's machine).
 # Also adds the target <name>_insncount (not in ALL): prints the bench_begin..bench_end count.
 function(hider_add_firmware)
   cmake_parse_arguments(PARSE_ARGV 0 FW "NO_SYMBOL_CHECK;NO_TEST"
-    "NAME;MACHINE;RAM_BUDGET;STACK_SIZE;STACK_LIMIT;TIMEOUT" "SOURCES;LIBRARIES;NOT_POINTERS")
+    "NAME;MACHINE;RAM_BUDGET;STACK_SIZE;STACK_LIMIT;TIMEOUT;RUNTIME" "SOURCES;LIBRARIES;NOT_POINTERS;FLAGS;EMULATOR")
   if(NOT FW_NAME OR NOT FW_SOURCES)
     message(FATAL_ERROR "hider_add_firmware: NAME and SOURCES are required")
   endif()
@@ -86,6 +91,13 @@ function(hider_add_firmware)
   if(NOT FW_TIMEOUT)
     set(FW_TIMEOUT 60)
   endif()
+  if(NOT FW_RUNTIME)
+    set(FW_RUNTIME hider_fw_runtime)
+  endif()
+  string(TOUPPER ${FW_MACHINE} machine_upper)
+  if(NOT FW_EMULATOR)
+    set(FW_EMULATOR ${HIDER_QEMU_${machine_upper}})
+  endif()
   set(common ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../firmware/common)
   cmake_path(NORMAL_PATH common)
   if(HIDER_ARCH STREQUAL "arm")
@@ -95,8 +107,12 @@ function(hider_add_firmware)
   endif()
 
   add_executable(${FW_NAME} ${FW_SOURCES})
-  target_link_libraries(${FW_NAME} PRIVATE hider_fw_runtime hider::hider hider_port_display ${FW_LIBRARIES})
+  target_link_libraries(${FW_NAME} PRIVATE ${FW_RUNTIME} hider::hider hider_port_display ${FW_LIBRARIES})
   hider_target_flags(${FW_NAME})
+  if(FW_FLAGS)
+    target_compile_options(${FW_NAME} PRIVATE ${FW_FLAGS})
+    target_link_options(${FW_NAME} PRIVATE ${FW_FLAGS})
+  endif()
 
   _hider_memory_map(${FW_MACHINE} defsyms)
   list(APPEND defsyms __stack_size=${FW_STACK_SIZE})
@@ -108,7 +124,7 @@ function(hider_add_firmware)
   set_property(TARGET ${FW_NAME} APPEND PROPERTY LINK_DEPENDS ${script})
 
   set(scripts ${CMAKE_CURRENT_FUNCTION_LIST_DIR})
-  get_target_property(runtime_dir hider_fw_runtime BINARY_DIR)
+  get_target_property(runtime_dir ${FW_RUNTIME} BINARY_DIR)
   get_target_property(semihost_dir hider_port_semihost BINARY_DIR)
   set(post_build)
   if(NOT FW_NO_SYMBOL_CHECK)
@@ -117,16 +133,15 @@ function(hider_add_firmware)
   list(APPEND post_build
     COMMAND ${HIDER_SIZE} $<TARGET_FILE:${FW_NAME}>
     COMMAND sh ${scripts}/check_firmware_stack.sh ${FW_NAME} ${PROJECT_SOURCE_DIR}/lib ${FW_STACK_LIMIT}
-            ${CMAKE_CURRENT_BINARY_DIR}/CMakeFiles/${FW_NAME}.dir ${runtime_dir}/CMakeFiles/hider_fw_runtime.dir
+            ${CMAKE_CURRENT_BINARY_DIR}/CMakeFiles/${FW_NAME}.dir ${runtime_dir}/CMakeFiles/${FW_RUNTIME}.dir
             ${semihost_dir}/CMakeFiles/hider_port_semihost.dir)
   add_custom_command(TARGET ${FW_NAME} POST_BUILD ${post_build} VERBATIM)
 
-  string(TOUPPER ${FW_MACHINE} machine_upper)
   set(frames ${CMAKE_BINARY_DIR}/frames/${FW_NAME})
   file(MAKE_DIRECTORY ${frames})
   set_target_properties(${FW_NAME} PROPERTIES
     SUFFIX .elf
-    CROSSCOMPILING_EMULATOR "${HIDER_TIMEOUT};--kill-after=5;${FW_TIMEOUT};${HIDER_QEMU_${machine_upper}}"
+    CROSSCOMPILING_EMULATOR "${HIDER_TIMEOUT};--kill-after=5;${FW_TIMEOUT};${FW_EMULATOR}"
     HIDER_FRAMES_DIR ${frames}
     HIDER_MACHINE ${FW_MACHINE})
 

@@ -18,6 +18,47 @@ extern "C" void hider_assert_fail(const char* file, int line);
 #define HIDER_ASSERT(cond) ((void)0)
 #endif
 
+// HIDER_NAKED marks the assembly routines: naked (the asm is the whole body), out of line, and kept
+// free of the code a user's -fstack-protector-all, -finstrument-functions, -fprofile-arcs, -pg,
+// -fsanitize-coverage or -fzero-call-used-regs would add around a body that manages its own registers
+// and stack (a call before its push overwrites lr). firmware.naked_uninstrumented checks each routine.
+#define HIDER_ATTR_NO_STACK_PROTECTOR_
+#define HIDER_ATTR_NO_PROFILE_
+#define HIDER_ATTR_NO_COVERAGE_
+#define HIDER_ATTR_NO_ZERO_REGS_
+#if defined(__has_attribute)
+#if __has_attribute(no_stack_protector)
+#undef HIDER_ATTR_NO_STACK_PROTECTOR_
+#define HIDER_ATTR_NO_STACK_PROTECTOR_ __attribute__((no_stack_protector))
+#elif defined(__SSP_ALL__)
+#error "hider: -fstack-protector-all needs a compiler with __attribute__((no_stack_protector)) (GCC 11, clang 7) for hider's assembly routines"
+#endif
+#if __has_attribute(no_profile_instrument_function)
+#undef HIDER_ATTR_NO_PROFILE_
+#define HIDER_ATTR_NO_PROFILE_ __attribute__((no_profile_instrument_function))
+#endif
+#if __has_attribute(no_sanitize_coverage)
+#undef HIDER_ATTR_NO_COVERAGE_
+#define HIDER_ATTR_NO_COVERAGE_ __attribute__((no_sanitize_coverage))
+#endif
+#if __has_attribute(zero_call_used_regs)
+#undef HIDER_ATTR_NO_ZERO_REGS_
+#define HIDER_ATTR_NO_ZERO_REGS_ __attribute__((zero_call_used_regs("skip")))
+#endif
+#endif
+#define HIDER_NAKED                                                                                      \
+    __attribute__((naked, noinline, no_instrument_function)) HIDER_ATTR_NO_STACK_PROTECTOR_ HIDER_ATTR_NO_PROFILE_ \
+    HIDER_ATTR_NO_COVERAGE_ HIDER_ATTR_NO_ZERO_REGS_
+
+// HIDER_RV32_ASM selects the RV32 assembly routines: RV32I with multiply and divide (M; Zmmul alone has
+// no divide) and all 32 registers. RV32E and cores without M take the portable C++ paths.
+#if defined(__riscv) && defined(__riscv_xlen) && defined(__riscv_mul) && defined(__riscv_div) && \
+    !defined(__riscv_32e) && !defined(__riscv_e)
+#if __riscv_xlen == 32
+#define HIDER_RV32_ASM 1
+#endif
+#endif
+
 namespace hider {
 
 template <class T> constexpr T min(T a, T b) { return b < a ? b : a; }

@@ -121,7 +121,7 @@ using AliasWord = uint32_t __attribute__((may_alias));  // fills 16-bit buffers 
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 /// Stores `word` to [p, end), a whole number of 96-word blocks: eight 12-register store-multiples a pass.
-__attribute__((naked, noinline)) inline void fill_words_v7m(AliasWord*, AliasWord*, uint32_t) {
+HIDER_NAKED inline void fill_words_v7m(AliasWord*, AliasWord*, uint32_t) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"
@@ -139,7 +139,7 @@ __attribute__((naked, noinline)) inline void fill_words_v7m(AliasWord*, AliasWor
 }
 #elif defined(__arm__) && defined(__thumb__)
 /// Stores `word` to [p, end), a whole number of 56-word blocks: eight 7-register store-multiples a pass.
-__attribute__((naked, noinline)) inline void fill_words_v6m(AliasWord*, AliasWord*, uint32_t) {
+HIDER_NAKED inline void fill_words_v6m(AliasWord*, AliasWord*, uint32_t) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r7, lr}\n\t"

@@ -42,7 +42,7 @@ std::vector<uint8_t> png_bytes(int width, int height, const std::vector<uint8_t>
     raw.reserve(static_cast<size_t>(height) * (static_cast<size_t>(width) * 3 + 1));
     for (int y = 0; y < height; ++y) {
         raw.push_back(0);
-        const uint8_t* row = rgb.data() + static_cast<size_t>(y) * width * 3;
+        const uint8_t* row = rgb.data() + static_cast<size_t>(y) * static_cast<size_t>(width) * 3;
         raw.insert(raw.end(), row, row + static_cast<size_t>(width) * 3);
     }
     std::vector<uint8_t> z = {0x78, 0x01};  // zlib header, no compression preset

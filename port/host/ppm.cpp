@@ -127,7 +127,7 @@ bool read_ppm(const std::string& path, int& width, int& height, std::vector<uint
     if (!f || magic != "P6" || maxval != 255 || width <= 0 || height <= 0 || width > 16384 || height > 16384)
         return false;
     f.get();  // the single whitespace byte after maxval
-    rgb.assign(static_cast<size_t>(width) * height * 3, 0);
+    rgb.assign(static_cast<size_t>(width) * static_cast<size_t>(height) * 3, 0);
     f.read(reinterpret_cast<char*>(rgb.data()), static_cast<std::streamsize>(rgb.size()));
     return static_cast<size_t>(f.gcount()) == rgb.size();
 }

@@ -454,7 +454,8 @@ TEST_CASE("every blob bsp_load accepts walks safely: random field damage to comp
             const test::BspExercise r = exercise(f.bytes);
             if (r.load != Status::ok) continue;
             ++accepted;
-            INFO(name, " round ", round);
+            const std::string& seed_name = name;  // INFO cannot capture a structured binding (clang)
+            INFO(seed_name, " round ", round);
             check_walks_safe(r);
         }
         MESSAGE(name << ": " << accepted << " of " << rounds << " damaged blobs accepted and walked safely");

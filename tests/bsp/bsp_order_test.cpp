@@ -256,7 +256,8 @@ TEST_CASE("below a subtree box wholly inside the frame no box is outside it, so 
                 const detail::SubtreeBox box = detail::subtree_box<true>(view, n, bb);
                 ++checked;
                 if (under_inside) {  // what order_bsp relies on: such a subtree is never skipped by draw_bsp
-                    INFO(name, " node ", i);
+                    const uint32_t node = i;  // INFO cannot capture a structured binding (clang)
+                    INFO(name, " node ", node);
                     REQUIRE(!box.outside);
                     below_inside += 1;
                     below_inside_also += box.inside;

@@ -176,7 +176,8 @@ RoundTrip round_trip(const tool::Scene& s, const std::vector<uint8_t>& blob) {
         const V3 nv{n.n[0], n.n[1], n.n[2]};
         const long double p = perimeter(a, b, c);
         const auto it = rt.faces.find(tri.face & kBspFaceMask);
-        INFO("tree triangle ", t, " in node ", k, ", face ", (tri.face & kBspFaceMask));
+        const uint32_t tri_index = t, node_index = k;  // INFO cannot capture a structured binding (clang)
+        INFO("tree triangle ", tri_index, " in node ", node_index, ", face ", (tri.face & kBspFaceMask));
         REQUIRE_MESSAGE(it != rt.faces.end(), "a face id the input does not have");
         it->second.tree += length(x);
         it->second.tree_perimeter += p;
@@ -198,7 +199,9 @@ RoundTrip round_trip(const tool::Scene& s, const std::vector<uint8_t>& blob) {
         INFO("tree triangle ", t);
         CHECK(reached[t] == 1);
     }
-    for (const auto& [id, f] : rt.faces) {
+    for (const auto& face : rt.faces) {  // no structured binding: INFO cannot capture one (clang)
+        const auto id = face.first;
+        const auto& f = face.second;
         INFO("face ", id, ": input ", static_cast<double>(f.in / 2), " raw^2 in ", f.in_tris, " triangles, tree ",
              static_cast<double>(f.tree / 2), " in ", f.tree_tris);
         CHECK(f.tree_tris > 0);  // every input face appears

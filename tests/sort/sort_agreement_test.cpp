@@ -124,7 +124,8 @@ TEST_CASE("painter, Newell and the reverse painter render band by band exactly l
     for (const auto& [name, s] : scenes)
         for (tool::Algo algo : {tool::Algo::painter, tool::Algo::newell, tool::Algo::reverse})
             for (int band : {1, 7, 32}) {
-                INFO(name, " ", name_of(algo), " band ", band);
+                const std::string& scene_name = name;  // INFO cannot capture a structured binding (clang)
+                INFO(scene_name, " ", name_of(algo), " band ", band);
                 CHECK(run(s, algo, false, band).rgb == run(s, algo, false).rgb);
             }
 }

@@ -1070,7 +1070,8 @@ TEST_CASE("A corrupt, truncated or empty .hbsp is rejected with exit 2 and no im
         {"flipped.hbsp", flipped}, {"truncated.hbsp", good.substr(0, good.size() - 7)}, {"empty.hbsp", ""},
         {"header_only.hbsp", good.substr(0, 64)}, {"obj_text.hbsp", kTriangle}};
     for (const auto& [name, bytes] : cases) {
-        INFO("case ", name);
+        const std::string& case_name = name;  // INFO cannot capture a structured binding (clang)
+        INFO("case ", case_name);
         const std::string path = write_blob(name, bytes);
         check_error(render(path, {"--algo", "bsp"}), {path + ": ", "not a valid BSP tree (bad data)"});
     }

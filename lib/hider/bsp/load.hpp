@@ -26,6 +26,14 @@ static_assert(sizeof(Vec3q16) == sizeof(BspVertex), "BSP vertices are read as Ve
 /// Stack entries (uint32) a walk of a tree `depth` nodes deep needs (walk.hpp).
 constexpr size_t bsp_stack_entries(uint32_t depth) { return size_t{kBspStackPerLevel} * depth + 1; }
 
+namespace detail {
+/// The T at byte `offset` of a blob whose start bsp_load() checked to be 8-byte aligned (the layout
+/// keeps each part aligned), through void* since a byte pointer cast would claim no alignment.
+template <class T> const T* blob_at(const uint8_t* blob, size_t offset) {
+    return static_cast<const T*>(static_cast<const void*>(blob + offset));
+}
+}  // namespace detail
+
 /// Checks `blob` and points `out` into it. `stack` is the caller's walk stack: it must hold
 /// bsp_stack_entries(depth) entries for the tree's depth (load() uses it to measure that depth).
 /// Returns bad_data for any inconsistency (out untouched), out_of_range for a vertex outside
@@ -34,7 +42,7 @@ constexpr size_t bsp_stack_entries(uint32_t depth) { return size_t{kBspStackPerL
 inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& out) {
     if ((reinterpret_cast<uintptr_t>(blob.data()) & 7u) != 0) return Status::invalid_argument;
     if (blob.size() < sizeof(BspHeader)) return Status::bad_data;
-    const BspHeader& h = *reinterpret_cast<const BspHeader*>(blob.data());
+    const BspHeader& h = *detail::blob_at<BspHeader>(blob.data(), 0);
     if (h.magic != kBspMagic || h.version != kBspVersion || h.header_size != sizeof(BspHeader)) return Status::bad_data;
     // Sizes in 64 bits: the counts come from the blob and must not wrap a 32-bit size_t.
     const uint64_t total = uint64_t{sizeof(BspHeader)} + uint64_t{h.node_count} * sizeof(BspNode) +
@@ -42,9 +50,9 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
     if (total != h.total_size || total != blob.size() || h.node_count >= 0x40000000u) return Status::bad_data;  // walks tag indices with two bits
     if (bsp_checksum(blob.data(), blob.size()) != h.checksum) return Status::bad_data;
     const BspLayout l = bsp_layout(h.node_count, h.triangle_count, h.vertex_count);
-    const BspNode* nodes = reinterpret_cast<const BspNode*>(blob.data() + l.nodes);
-    const BspTriangle* tris = reinterpret_cast<const BspTriangle*>(blob.data() + l.triangles);
-    const Vec3q16* verts = reinterpret_cast<const Vec3q16*>(blob.data() + l.vertices);
+    const BspNode* nodes = detail::blob_at<BspNode>(blob.data(), l.nodes);
+    const BspTriangle* tris = detail::blob_at<BspTriangle>(blob.data(), l.triangles);
+    const Vec3q16* verts = detail::blob_at<Vec3q16>(blob.data(), l.vertices);
     for (uint32_t i = 0; i < h.node_count; ++i) {
         const BspNode& n = nodes[i];
         if (n.origin >= h.vertex_count || n.first > h.triangle_count || n.count > h.triangle_count - n.first) return Status::bad_data;

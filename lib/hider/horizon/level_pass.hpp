@@ -49,7 +49,7 @@ inline void level_pass_portable(const LevelPass& p) {
 #if defined(__ARM_ARCH_6M__)
 /// level_pass_portable() in Thumb-1. r0 values, r1 out, r2 u, r3 knots, r4 h, r5..r7 scratch; r8 du,
 /// r9 hu, r10 out_end, r11 s. The knot's two halves come in with two load-multiples (24 instructions a point).
-__attribute__((naked, noinline)) inline void level_pass_v6m(const LevelPass*) {
+HIDER_NAKED inline void level_pass_v6m(const LevelPass*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         HIDER_V6M_SAVE_ALL

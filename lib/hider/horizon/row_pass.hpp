@@ -87,7 +87,7 @@ inline void coordinate_pass_portable(const RowPass& p) {
 /// reciprocal_pass_portable() in Thumb-1. r0 values, r1 out, r2 w', r3..r6 scratch; r8 dw', r9 hw',
 /// r10 table, r11 out_end, r12 s0. The two table entries come in with one load-multiple, s and r go
 /// out with one store-multiple (23 instructions a point, 4 more per normalisation step).
-__attribute__((naked, noinline)) inline void reciprocal_pass_v6m(const RowPass*) {
+HIDER_NAKED inline void reciprocal_pass_v6m(const RowPass*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         HIDER_V6M_SAVE_ALL
@@ -138,7 +138,7 @@ __attribute__((naked, noinline)) inline void reciprocal_pass_v6m(const RowPass*)
 
 /// coordinate_pass_portable() in Thumb-1. r0 values, r1 out, r2 u, r3 out_end, r4..r7 scratch; r8 du,
 /// r9 hu, r10 v, r11 dv, r12 hv, lr dvu (24 instructions a point).
-__attribute__((naked, noinline)) inline void coordinate_pass_v6m(const RowPass*) {
+HIDER_NAKED inline void coordinate_pass_v6m(const RowPass*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         HIDER_V6M_SAVE_ALL

@@ -73,7 +73,7 @@ inline int walk_kernel_portable(WalkKernel& k) {
 #if defined(__ARM_ARCH_6M__)
 /// walk_kernel_portable() in Thumb-1. r0 p, r4 col, r5 ymin, r6 ymax, r1 r2 r3 r7 scratch; r8 end,
 /// r9 upper, r10 lower, r11 width, r12 slope, lr scratch; the state pointer at [sp].
-__attribute__((naked, noinline)) inline int walk_kernel_v6m(WalkKernel*) {
+HIDER_NAKED inline int walk_kernel_v6m(WalkKernel*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         HIDER_V6M_SAVE_ALL

@@ -36,7 +36,7 @@ static_assert(sizeof(Tri) == 6 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVe
 /// first triangle t with a vertex outside a clip plane (bin_triangles() bins it in C++ and goes on from
 /// t), 0 when done. Registers: r4 the triangle, r5 its Tri, r6 the vertices, r7 y_lift, r8 the last row,
 /// r9 cull_above, r10 the culled count, r11 d.
-__attribute__((naked, noinline)) inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
+HIDER_NAKED inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"

@@ -61,7 +61,7 @@ static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(Ker
 /// keeps its state on the stack and in d (the slot order pointer at sp + 12) and draws each record's
 /// rows with run_kernel_triangle_v7m()'s row loop (HIDER_V7M_ROWS) inline: every one is on the band's
 /// first row.
-__attribute__((naked, noinline)) inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
+HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"

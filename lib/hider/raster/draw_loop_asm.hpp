@@ -63,7 +63,7 @@ inline DrawLoopArm draw_loop_arm(const Tri* tris, const Mesh& mesh, Span<const S
 /// set-up) or the end; returns that triangle (d->end when none). Culled faces and kernel set-ups are
 /// counted into d. Registers: r4 the triangle, r6 d, r8 the end, r9 the vertices; on the stack the three
 /// vertex pointers and the area.
-__attribute__((naked, noinline)) inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
+HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r7, lr}\n\t"
@@ -291,7 +291,7 @@ __attribute__((naked, noinline)) inline const Tri* draw_flat_v6m(const Tri*, det
 /// The same loop in Thumb-2 around kernel_setup_v7m() and run_kernel_triangle_v7m(). Registers: r4 the
 /// triangle, r5 d, r6 the end, r7 the vertices, r8 the cull flag, r9 d->io, r10 the area, r11 the faces
 /// culled in this call; on the stack the three vertex pointers.
-__attribute__((naked, noinline)) inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
+HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"

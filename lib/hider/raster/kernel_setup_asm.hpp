@@ -7,6 +7,12 @@
 #pragma once
 #include <hider/raster/kernel_triangle.hpp>
 
+// The Cortex-M routines address their subroutines and tables absolutely (a clear stop here instead of
+// GCC's "impossible constraint in 'asm'" deep inside them).
+#if defined(__PIC__) && (defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__))
+#error "hider: the Cortex-M assembly routines are not position-independent: compile hider's code without -fPIC, -fpic, -fPIE or -fpie"
+#endif
+
 namespace hider {
 
 namespace detail {
@@ -50,7 +56,7 @@ __attribute__((always_inline)) inline KernelSetup kernel_setup(const ScreenVerte
     return static_cast<KernelSetup>(kernel_setup_v7m(&a, &b, &c, &io));
 #elif defined(__ARM_ARCH_6M__)
     return static_cast<KernelSetup>(kernel_setup_v6m(&a, &b, &c, &io));
-#elif defined(__riscv) && __riscv_xlen == 32
+#elif defined(HIDER_RV32_ASM)
     return static_cast<KernelSetup>(kernel_setup_rv32(&a, &b, &c, &io));
 #else
     return kernel_setup_portable(a, b, c, io.area, *io.band, *io.out);

@@ -5,7 +5,7 @@
 
 namespace hider {
 
-#if defined(__riscv) && __riscv_xlen == 32
+#if defined(HIDER_RV32_ASM)
 /// RV32IM: the same set-up in registers (s0 band, s1 out, s2 odd, s3 y0, s4 mid, s5 y1; after the
 /// plane t3 dzdx, t4 dzdy, t5 the plane's value at pixel (0, 0) of the frame, t6 the stride), the sorted
 /// vertices in the frame. Plane quotients with the 32-bit divide in two 16-bit digits (areas below
@@ -13,7 +13,7 @@ namespace hider {
 /// (link register t2 or t3): 80 walker (a0 xu, a1 yu, a2 xl, a3 yl, a4 row -> a0 px, a1 g - a,
 /// a2 a, a3 m, a4 q), 84/86/88 left, right and next edge stores (a5 the row), 70 the rounded
 /// plane quotient (a1:a0 -> a0, area in t0; link t3).
-__attribute__((naked, noinline)) inline uint32_t kernel_setup_rv32(const ScreenVertex*, const ScreenVertex*,
+HIDER_NAKED inline uint32_t kernel_setup_rv32(const ScreenVertex*, const ScreenVertex*,
                                                                    const ScreenVertex*, KernelSetupIo*) {
     __asm__ volatile(
         "addi   sp, sp, -112\n\t"

@@ -16,7 +16,7 @@ namespace hider {
 /// in the frame), 44/46/48 the left, right and next edge stores (r2 the row), 50 floor division
 /// (r0 n, r1 a > 0 -> r0 floor(n / a), r1 the remainder), 59 the area's shift, normalised value and
 /// estimate, 60 the rounded plane quotient (r1:r0 -> r0, or the generic exit).
-__attribute__((naked, noinline)) inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVertex*,
+HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVertex*,
                                                                   const ScreenVertex*, KernelSetupIo*) {
     __asm__ volatile(
         ".syntax unified\n\t"

@@ -14,7 +14,7 @@ namespace hider {
 /// local subroutine (label 80): in r5 xu, r7 yu, r8 xl, r9 yl, r3 row, r10 x_origin, r11 y_origin;
 /// out r0 px, r1 g - a, r2 a, r3 m, r12 q; the edge stores (84 left, 86 right) turn px and q into the
 /// kernel's bytes (2 px, 2 q + stride).
-__attribute__((naked, noinline)) inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVertex*,
+HIDER_NAKED inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVertex*,
                                                                   const ScreenVertex*, KernelSetupIo*) {
     __asm__ volatile(
         ".syntax unified\n\t"

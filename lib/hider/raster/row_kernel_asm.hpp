@@ -26,7 +26,7 @@ __attribute__((always_inline)) inline uint16_t* run_kernel_triangle(KernelTriang
     return run_kernel_triangle_v7m(&t, zrow, row_stop, &target);
 #elif defined(__ARM_ARCH_6M__)
     return run_kernel_triangle_v6m(&t, zrow, row_stop, &target);
-#elif defined(__riscv) && __riscv_xlen == 32
+#elif defined(HIDER_RV32_ASM)
     return run_kernel_triangle_rv32(&t, zrow, row_stop, &target);
 #else
     return run_kernel_triangle_portable(t, zrow, row_stop, target);

@@ -5,14 +5,14 @@
 
 namespace hider {
 
-#if defined(__riscv) && __riscv_xlen == 32
+#if defined(HIDER_RV32_ASM)
 /// RV32. In the row loop: a0 the state, a4..a7 lp lg lz rp, t0 rg, t1..t5 lm lstep ldz rm rstep, t6 dz,
 /// s0 the colour, a2 rows left in this phase, a3 the colour offset; la and ra are loaded by the
 /// corrections; on the stack the middle row's depth pointer, the rows after the switch (-1: none) and
 /// the depth row after the last. Pixel loop, two pixels a pass after an odd one: s1 walks the depth
 /// elements up to rp, s2 z, a1 and s3 scratch (8 instructions a written pixel, 5 a rejected one, one
 /// more for the odd pixel). Per row outside the pixels: 15, plus 4 and 3 for edge corrections.
-__attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_rv32(KernelTriangle*, uint16_t*, int32_t,
+HIDER_NAKED inline uint16_t* run_kernel_triangle_rv32(KernelTriangle*, uint16_t*, int32_t,
                                                                            const KernelTarget*) {
     __asm__ volatile(
         "lh     t0, %[row](a0)\n\t"

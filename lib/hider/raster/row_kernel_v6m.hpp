@@ -14,7 +14,7 @@ namespace hider {
 /// and the row count in the state with one store-multiple; its pixel loop indexes back from the span's
 /// end (r4 depth, r1 colour) with r6 = lp - rp counting up to 0, r3 z, r7 colour (9 instructions a
 /// written pixel, 7 a rejected one).
-__attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_v6m(KernelTriangle*, uint16_t*, int32_t,
+HIDER_NAKED inline uint16_t* run_kernel_triangle_v6m(KernelTriangle*, uint16_t*, int32_t,
                                                                           const KernelTarget*) {
     __asm__ volatile(
         ".syntax unified\n\t"

@@ -103,7 +103,7 @@ namespace hider {
 /// (an odd span enters at the second): r9 the depth pointer, post-incremented, ending at rp (r4), the
 /// colour at r9 + r7, lr z, r12 scratch (7 instructions a written pixel, 4 a rejected one, 2 a pair).
 /// Per row outside the pixels: 17, plus 3 and 2 for edge corrections.
-__attribute__((naked, noinline)) inline uint16_t* run_kernel_triangle_v7m(KernelTriangle*, uint16_t*, int32_t,
+HIDER_NAKED inline uint16_t* run_kernel_triangle_v7m(KernelTriangle*, uint16_t*, int32_t,
                                                                           const KernelTarget*) {
     __asm__ volatile(
         ".syntax unified\n\t"

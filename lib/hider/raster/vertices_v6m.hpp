@@ -51,7 +51,7 @@ inline VertexPrep vertex_prep(const View& v) {
 /// (reciprocal_word()'s table and Newton step): the screen coordinates from one estimate each, n 2^31 / w
 /// in two 16-bit digits, every estimate corrected against its exact remainder. Stack: the position's
 /// low halves, x y w, the guard, the shift, the normalised w and the estimate, the pointers (80 bytes).
-__attribute__((naked, noinline)) inline const Vec3q16* project_common_v6m(const detail::VertexPrep*, const Vec3q16*,
+HIDER_NAKED inline const Vec3q16* project_common_v6m(const detail::VertexPrep*, const Vec3q16*,
                                                                           ScreenVertex*, const Vec3q16*) {
     __asm__ volatile(
         ".syntax unified\n\t"

@@ -48,7 +48,7 @@ inline VertexPrepV7m vertex_prep_v7m(const View& v) {
 /// its translation, nine long multiplies), w against near and min(far, 2^30 - 1), the guard band, the
 /// screen quotients with one division each, n 2^31 / w in two 16-bit digits (ratio_q31()), the depth.
 /// Registers: r0 the constants (+48 after the transform); on the stack p (advanced), out and end.
-__attribute__((naked, noinline)) inline const Vec3q16* project_common_v7m(const detail::VertexPrepV7m*, const Vec3q16*,
+HIDER_NAKED inline const Vec3q16* project_common_v7m(const detail::VertexPrepV7m*, const Vec3q16*,
                                                                           ScreenVertex*, const Vec3q16*) {
     __asm__ volatile(
         ".syntax unified\n\t"

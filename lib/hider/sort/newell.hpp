@@ -183,7 +183,8 @@ private:
             if (made(q_cut)) take(act, qi, qc);
         }
         if (act.count != 0) {
-            if (polys_.size() + act.count <= polys_.capacity() && cuts_.size() + 2 * act.count <= cuts_.capacity()) {
+            const size_t pieces = static_cast<size_t>(act.count);
+            if (polys_.size() + pieces <= polys_.capacity() && cuts_.size() + 2 * pieces <= cuts_.capacity()) {
                 act.kind = Action::cut;
                 return true;
             }
