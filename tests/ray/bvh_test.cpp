@@ -119,6 +119,66 @@ TEST_CASE("the BVH walk finds exactly the brute-force nearest and any hit") {
     }
 }
 
+TEST_CASE("no ray slips between the boxes of a large mesh: a floor of +-8000 units at grazing angles") {
+    // The triangle test floors vertices to a grid of 2^shift raw set by the mesh's reach (2^9 here): the
+    // boxes must hold the triangles as floored, or a ray along a cell edge misses both neighbours'
+    // boxes. Independent reference: the plane y = 0, which every ray below the horizon meets inside the
+    // floor; and brute force over every triangle for the nearest one.
+    for (int cells : {40, 64}) {
+        tool::Scene s;
+        const double half = 8000.0, step = 2 * half / cells;
+        for (int j = 0; j <= cells; ++j)
+            for (int i = 0; i <= cells; ++i)
+                s.positions.push_back({Q16::from_raw(int32_t(std::lround((-half + i * step) * 65536))), Q16::from_raw(0),
+                                       Q16::from_raw(int32_t(std::lround((-half + j * step) * 65536)))});
+        for (int j = 0; j < cells; ++j)
+            for (int i = 0; i < cells; ++i) {
+                const auto v = [&](int di, int dj) { return uint16_t((j + dj) * (cells + 1) + i + di); };
+                s.tris.push_back({{v(0, 0), v(0, 1), v(1, 1)}});  // counter-clockwise seen from +y
+                s.tris.push_back({{v(0, 0), v(1, 1), v(1, 0)}});
+            }
+        const Built b = build(s);
+        const Bvh bvh = b.bvh.view();
+        Span<BvhStackEntry> stack{const_cast<BvhStackEntry*>(b.stack.data()), b.stack.size()};
+        CHECK(bvh_triangle_ray(bvh, {{Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)}, unit_of(0, -1, 0)}).shift >= 9);
+        std::mt19937 rng(31 + static_cast<uint32_t>(cells));
+        auto uni = [&](double lo, double hi) { return lo + (hi - lo) * (rng() / 4294967296.0); };
+        long rays = 0, holes = 0, differ = 0;
+        for (int k = 0; k < 3000; ++k) {
+            // From just above the floor toward a point on it (every other one on a cell edge line).
+            const double o[3] = {uni(-2, 2), uni(0.05, 3), uni(-2, 2)};
+            double aim[3] = {uni(-half, half) * 0.9, 0, uni(-half, half) * 0.9};
+            if (k % 2 == 0) aim[k % 4 == 0 ? 0 : 2] = std::round(aim[k % 4 == 0 ? 0 : 2] / step) * step;
+            const Ray ray{{Q16::from_raw(int32_t(std::lround(o[0] * 65536))), Q16::from_raw(int32_t(std::lround(o[1] * 65536))),
+                           Q16::from_raw(int32_t(std::lround(o[2] * 65536)))},
+                          unit_of(aim[0] - o[0], aim[1] - o[1], aim[2] - o[2])};
+            // Where the ray meets y = 0, in double, along the direction rounded to Q18 as the triangle
+            // test takes it (README: at grazing angles that rounding moves the hit by t 2^-18 / |cos|).
+            auto q18 = [](int32_t raw) { return std::floor((raw + 2048.0) / 4096.0) / 262144.0; };
+            const double d[3] = {q18(ray.dir.x.raw()), q18(ray.dir.y.raw()), q18(ray.dir.z.raw())};
+            if (d[1] >= 0) continue;
+            // The vertex grid may lower the floor by up to one step (2^9 raw): the hit lies between t and t_low.
+            const double oy = ray.origin.y.raw() / 65536.0, t = -oy / d[1], t_low = -(oy + 512 / 65536.0) / d[1];
+            const double px = ray.origin.x.raw() / 65536.0 + t_low * d[0], pz = ray.origin.z.raw() / 65536.0 + t_low * d[2];
+            const double qx = ray.origin.x.raw() / 65536.0 + t * d[0], qz = ray.origin.z.raw() / 65536.0 + t * d[2];
+            if (std::fmax(std::fabs(px), std::fabs(qx)) > half - 1 || std::fmax(std::fabs(pz), std::fabs(qz)) > half - 1) continue;
+            ++rays;
+            const BvhQuery q{ray, 16, INT32_MAX, false, UINT32_MAX};
+            uint32_t tri = 0, tri_ref = 0;
+            TriangleHit hit{}, ref{};
+            const bool found = bvh_walk(bvh, b.mesh(), q, stack, tri, hit);
+            const bool found_ref = brute(b, q, tri_ref, ref, false);
+            holes += !found;
+            differ += found != found_ref || (found && (tri != tri_ref || hit.t_q16 != ref.t_q16));
+        }
+        MESSAGE(cells << "x" << cells << " cells: " << rays << " rays onto the floor, " << holes << " holes, " << differ
+                      << " differ from brute force");
+        CHECK(rays > 2000);
+        CHECK(holes == 0);
+        CHECK(differ == 0);
+    }
+}
+
 TEST_CASE("rays never slip through a closed mesh: crossings come in pairs, also exactly through vertices") {
     const Built b = build(test::load_model("torus.obj"));
     const Mesh m = b.mesh();

@@ -79,6 +79,7 @@ TEST_CASE("every malformed scene line is reported with file, line and what is wr
         {c + "bounces 2.5\n", "t.txt:2: ", "bounces: 2.5 out of range"},
         {c + "bounces 17\n", "t.txt:2: ", "bounces: 17 out of range (whole number 0..16)"},
         {c + "max-distance 0\n", "t.txt:2: ", "max-distance: 0 out of range"},
+        {c + "max-distance 32767.99999999\n", "t.txt:2: ", "max-distance: 32768 out of range"},  // rounds to 2^31 raw
         {c + "size 0 10\n", "t.txt:2: ", "size: 0x10 out of range"},
         {c + "mesh\n", "t.txt:2: ", "mesh: missing file name"},
         {c + "mesh no_such.obj\n", "t.txt:2: ", "no_such.obj: cannot open file"},

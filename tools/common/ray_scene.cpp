@@ -412,7 +412,7 @@ bool read_setting(Statement& st, RayScene& s, std::string& error) {
         return st.end(error);
     }
     if (!st.number("distance", v, error)) return false;  // max-distance
-    if (!(v > 0 && v < 32768)) {
+    if (!(v > 0 && v < 32768) || std::llround(v * 65536) > INT32_MAX) {  // also what rounds to 32768
         error = "max-distance: " + fmt(v) + " out of range (0 < distance < 32768)";
         return false;
     }

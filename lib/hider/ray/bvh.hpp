@@ -114,15 +114,22 @@ inline Status validate_bvh(const Bvh& bvh, const Mesh& mesh, Span<BvhStackEntry>
     return next_node == h.node_count && next_entry == h.triangle_count ? Status::ok : Status::bad_data;
 }
 
-/// The triangle test's per-ray constants for rays against this hierarchy: the grid is set by how far
-/// the root box reaches from the origin (every walk of the same ray uses the same grid).
-inline TriangleRay bvh_triangle_ray(const Bvh& bvh, const Ray& ray) {
+/// bvh_triangle_ray() without the tie rule (complete_triangle_ray()): what the walk's box tests need.
+inline TriangleRay bvh_triangle_ray_grid(const Bvh& bvh, const Ray& ray) {
     const BvhNode& root = bvh.nodes[0];
     const int32_t o[3] = {ray.origin.x.raw(), ray.origin.y.raw(), ray.origin.z.raw()};
     uint32_t reach = 0;
     for (int i = 0; i < 3; ++i)
         reach = max(reach, static_cast<uint32_t>(max(abs_value(int64_t{root.lo[i]} - o[i]), abs_value(int64_t{root.hi[i]} - o[i]))));
-    return make_triangle_ray(ray, reach);
+    return triangle_ray_grid(ray, reach);
+}
+
+/// The triangle test's per-ray constants for rays against this hierarchy: the grid is set by how far
+/// the root box reaches from the origin (every walk of the same ray uses the same grid).
+inline TriangleRay bvh_triangle_ray(const Bvh& bvh, const Ray& ray) {
+    TriangleRay tr = bvh_triangle_ray_grid(bvh, ray);
+    complete_triangle_ray(tr);
+    return tr;
 }
 
 /// What a walk did (for benchmarks and tests).
@@ -149,7 +156,13 @@ template <bool kAnyHit = false>
 bool bvh_walk(const Bvh& bvh, const Mesh& mesh, const BvhQuery& q, Span<BvhStackEntry> stack, uint32_t& tri,
               TriangleHit& hit, BvhCounters* counters = nullptr) {
     const BvhNode* nodes = bvh.nodes.data();
-    const BoxRay br = make_box_ray(q.ray, q.t_max);
+    // The boxes are tested along the ray the triangle test sees: its Q18 direction (at grazing angles
+    // the rounding moves a hit far along the ray) and its vertex grid (a box reaches one step lower).
+    TriangleRay tr = bvh_triangle_ray_grid(bvh, q.ray);
+    Ray seen;
+    set_ray(seen, q.ray.origin, {Q30::from_raw(tr.d18[0] * 4096), Q30::from_raw(tr.d18[1] * 4096), Q30::from_raw(tr.d18[2] * 4096)});
+    BoxRay br = make_box_ray(seen, q.t_max);
+    br.grid_slack = (int32_t{1} << tr.shift) - 1;
     int32_t best_t = q.t_max, te = 0;
     uint32_t boxes = 1, tests = 0;
     bool found = false;
@@ -157,7 +170,7 @@ bool bvh_walk(const Bvh& bvh, const Mesh& mesh, const BvhQuery& q, Span<BvhStack
         if (counters != nullptr) counters->boxes += boxes;
         return false;
     }
-    const TriangleRay tr = bvh_triangle_ray(bvh, q.ray);
+    complete_triangle_ray(tr);
     uint32_t node = 0;
     size_t sp = 0;
     for (;;) {

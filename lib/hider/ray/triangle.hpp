@@ -23,14 +23,18 @@ struct TriangleRay {
     int64_t u2[3];   ///< tie rule, second: d x u
 };
 
-/// Prepares the triangle test for `ray` and vertices no farther than `reach_raw` from its origin on
-/// any axis (mesh ray casting takes the reach from the BVH's root box).
-constexpr TriangleRay make_triangle_ray(const Ray& ray, uint32_t reach_raw) {
+/// The part of make_triangle_ray() that box tests need: the direction as the test takes it and the grid.
+constexpr TriangleRay triangle_ray_grid(const Ray& ray, uint32_t reach_raw) {
     TriangleRay tr{ray.origin, {}, 0, {}, {}};
     const int32_t d[3] = {ray.dir.x.raw(), ray.dir.y.raw(), ray.dir.z.raw()};
     for (int i = 0; i < 3; ++i) tr.d18[i] = (d[i] + (1 << 11)) >> 12;
     const int bits = reach_raw == 0 ? 0 : 32 - clz32(reach_raw);  // reach < 2^bits
     tr.shift = bits > 20 ? bits - 20 : 0;                          // |(v - o) >> shift| <= 2^20
+    return tr;
+}
+
+/// Completes triangle_ray_grid()'s result with the tie rule.
+constexpr void complete_triangle_ray(TriangleRay& tr) {
     int w = 0;  // the axis least aligned with d (ties: x, then y)
     for (int i = 1; i < 3; ++i)
         if (abs_value(tr.d18[i]) < abs_value(tr.d18[w])) w = i;
@@ -41,6 +45,13 @@ constexpr TriangleRay make_triangle_ray(const Ray& ray, uint32_t reach_raw) {
     tr.u2[0] = int64_t{tr.d18[1]} * tr.u[2] - int64_t{tr.d18[2]} * tr.u[1];
     tr.u2[1] = int64_t{tr.d18[2]} * tr.u[0] - int64_t{tr.d18[0]} * tr.u[2];
     tr.u2[2] = int64_t{tr.d18[0]} * tr.u[1] - int64_t{tr.d18[1]} * tr.u[0];
+}
+
+/// Prepares the triangle test for `ray` and vertices no farther than `reach_raw` from its origin on
+/// any axis (mesh ray casting takes the reach from the BVH's root box).
+constexpr TriangleRay make_triangle_ray(const Ray& ray, uint32_t reach_raw) {
+    TriangleRay tr = triangle_ray_grid(ray, reach_raw);
+    complete_triangle_ray(tr);
     return tr;
 }
 
@@ -132,11 +143,15 @@ struct BoxRay {
     int32_t origin[3];
     int64_t inv[3];     ///< 1 / d in Q16 (|d| >= 2^-15); 0 on an axis the ray (nearly) parallels
     int32_t reach[3];   ///< on such an axis, how far the ray can drift within t_max, raw, rounded up
+    /// How far below its raw value the triangle test may see a vertex (its grid floors v - origin to
+    /// 2^shift raw: 2^shift - 1); each box reaches this much lower so that it holds its triangles as
+    /// tested (else a ray slips between two neighbours' boxes). 0 for boxes of exact geometry.
+    int32_t grid_slack;
 };
 
 /// Prepares the slab test for `ray` up to distance t_max (Q16, > 0).
 constexpr BoxRay make_box_ray(const Ray& ray, int32_t t_max) {
-    BoxRay br{{ray.origin.x.raw(), ray.origin.y.raw(), ray.origin.z.raw()}, {}, {}};
+    BoxRay br{{ray.origin.x.raw(), ray.origin.y.raw(), ray.origin.z.raw()}, {}, {}, 0};
     const int32_t d[3] = {ray.dir.x.raw(), ray.dir.y.raw(), ray.dir.z.raw()};
     for (int i = 0; i < 3; ++i) {
         if (abs_value(d[i]) >= (int32_t{1} << 15)) {
@@ -149,18 +164,19 @@ constexpr BoxRay make_box_ray(const Ray& ray, int32_t t_max) {
     return br;
 }
 
-/// Whether the ray may meet box [lo, hi] (raw Q16) between t_min and t_max; on true, t_enter is a
-/// lower bound of where it enters (Q16). Conservative: t is widened by |t| 2^-16 + 2 LSB on each axis.
+/// Whether the ray may meet box [lo - grid_slack, hi] (raw Q16) between t_min and t_max; on true, t_enter
+/// is a lower bound of where it enters (Q16). Conservative: t is widened by |t| 2^-16 + 2 LSB on each axis.
 constexpr bool intersect_box(const BoxRay& r, const int32_t (&lo)[3], const int32_t (&hi)[3], int32_t t_min,
                              int32_t t_max, int32_t& t_enter) {
     int64_t enter = t_min, exit = t_max;
     for (int i = 0; i < 3; ++i) {
+        const int64_t low = int64_t{lo[i]} - r.grid_slack;
         if (r.inv[i] == 0) {
-            if (int64_t{lo[i]} > int64_t{r.origin[i]} + r.reach[i] || int64_t{hi[i]} < int64_t{r.origin[i]} - r.reach[i])
+            if (low > int64_t{r.origin[i]} + r.reach[i] || int64_t{hi[i]} < int64_t{r.origin[i]} - r.reach[i])
                 return false;
             continue;
         }
-        int64_t t0 = ((int64_t{lo[i]} - r.origin[i]) * r.inv[i]) >> 16;
+        int64_t t0 = ((low - r.origin[i]) * r.inv[i]) >> 16;
         int64_t t1 = ((int64_t{hi[i]} - r.origin[i]) * r.inv[i]) >> 16;
         if (t0 > t1) swap_values(t0, t1);
         t0 -= (abs_value(t0) >> 16) + 2;
