@@ -115,6 +115,26 @@ struct Fn {
 
 }  // namespace
 
+TEST_CASE("A mesh step past the last sample draws the first and last lines, up to INT32_MAX") {
+    // The sums of the step with the sample index must not overflow (UBSan in the host-asan build).
+    const Surface s = surface(-q(0.35).raw(), q(0.35).raw(), 1);
+    const std::vector<int32_t> g = grid_of(s);
+    for (const Camera& cam : {camera(0.4, 1.6, 2.6), camera(3.0, 1.2, 0.3)}) {
+        SurfaceProjection p;
+        REQUIRE(p.prepare(cam, 160, 120, s) == Status::ok);
+        PlotStyle st = palette_style(true);
+        st.mesh_step = kSamples - 1;
+        const std::vector<Rgb888> ref = render(p, GridSource<int32_t>{g.data(), kSamples, kCurves, 0}, st);
+        for (int32_t step : {kSamples, 1000, INT32_MAX - 30, INT32_MAX}) {
+            CAPTURE(step);
+            st.mesh_step = step;
+            CHECK(same(render(p, GridSource<int32_t>{g.data(), kSamples, kCurves, 0}, st), ref));
+        }
+        st.mesh_step = kSamples - 2;  // a line more: the check can tell them apart
+        CHECK_FALSE(same(render(p, GridSource<int32_t>{g.data(), kSamples, kCurves, 0}, st), ref));
+    }
+}
+
 TEST_CASE("A function source draws exactly what the same heights in a grid draw") {
     const Surface s = surface(-q(0.35).raw(), q(0.35).raw(), 1);
     const std::vector<int32_t> g = grid_of(s);

@@ -226,6 +226,16 @@ TEST_CASE("hider-plot: --mesh adds constant-x lines; PNG output; a clamped view 
     CHECK(read_file(png).rfind("\x89PNG\r\n\x1a\n", 0) == 0);
 }
 
+TEST_CASE("hider-plot: a grid whose Q16 steps shrink the surface by over 1% warns") {
+    // 2 / 52429 is 2.49999 raw, rounded to 2: x spans [-0.8, 0.8].
+    const Run fine = plot({"--function", "saddle", "--curves", "20", "--samples", "52430", "--size", "64x48"});
+    CHECK(fine.code == 0);
+    CHECK(contains(fine.err, "hider-plot: warning: the grid's steps round to 1/65536: the surface spans x in [-0.8, 0.8]"));
+    const Run usual = plot({"--function", "saddle", "--curves", "20", "--samples", "2000", "--size", "64x48"});  // 0.6%
+    CHECK(usual.code == 0);
+    CHECK(usual.err.empty());
+}
+
 TEST_CASE("hider-plot: a view whose projection may be a pixel off warns, with the bound") {
     // One peak of 500 units among zeros, the eye 6 units from the surface: the surface's box reaches far
     // beyond the frame, and the far curve (all heights 0) was drawn 2.7 pixels off without a word.

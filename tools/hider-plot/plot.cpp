@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "host/ppm.hpp"
@@ -228,6 +229,16 @@ bool render(const HeightGrid& g, const CameraD& cam, const Options& opt, Result&
     if (out.stats.points_clamped != 0)
         out.warning = std::to_string(out.stats.points_clamped) +
                       " projected points lay too far outside the frame and were clamped (segments near them may shift)";
+    // The steps are Q16: with thousands of samples their rounding adds up to a visibly narrower or
+    // wider surface than [-1, 1].
+    const double span_x = (g.cols - 1) * (fixed.surface.dx.raw() / 65536.0), span_z = (g.rows - 1) * (fixed.surface.dz.raw() / 65536.0);
+    if (std::fabs(span_x - 2) > 0.02 || std::fabs(span_z - 2) > 0.02) {
+        std::ostringstream o;
+        o << std::setprecision(3) << (out.warning.empty() ? "" : "; ") << "the grid's steps round to 1/65536: the surface spans x in [-"
+          << span_x / 2 << ", " << span_x / 2 << "] and z in [-" << span_z / 2 << ", " << span_z / 2
+          << "] instead of [-1, 1] (use fewer samples or curves)";
+        out.warning += o.str();
+    }
     out.error_subpixels = proj.error_bound_subpixels();
     if (out.error_subpixels > 16) {
         std::ostringstream o;

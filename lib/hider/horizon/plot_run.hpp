@@ -26,7 +26,10 @@ public:
         : proj_(p), s_(p.surface()), src_(src), buf_(b), style_(st), drawer_(h, t) {
         if constexpr (kByValue) drawer_.set_ramp(make_ramp(st.colours, s_.value_min, s_.value_max));
         drawer_.set_compact(p.compact());
-        last_x_line_ = (s_.samples - 1 + st.mesh_step - 1) / st.mesh_step;
+        // A step past the last sample draws what samples - 1 draws (the first and last lines) and keeps
+        // the sums below from overflowing.
+        step_ = min(st.mesh_step, max(s_.samples - 1, int32_t{1}));
+        last_x_line_ = (s_.samples - 1 + step_ - 1) / step_;
         points_ = kCurves ? s_.samples : s_.curves;
         whole_previous_ = !kCurves || st.mesh;
         batches_ = whole_previous_;  // plain curves: the side edges alone need no batch
@@ -125,7 +128,7 @@ private:
     bool x_line_drawn(int32_t i) const {
         const int32_t last = s_.samples - 1;
         if (i == 0 || i == last) return style_.mesh || style_.side_edges;
-        return style_.mesh && i % style_.mesh_step == 0;
+        return style_.mesh && i % step_ == 0;
     }
 
     /// Sets the drawer up for constant-x line j (at sample i); `drawn`: part of the picture (else it
@@ -140,7 +143,7 @@ private:
     }
 
     /// Index j of the constant-x line at sample i (i a multiple of mesh_step, or the last sample).
-    int32_t x_line_index(int32_t i) const { return i == s_.samples - 1 ? last_x_line_ : i / style_.mesh_step; }
+    int32_t x_line_index(int32_t i) const { return i == s_.samples - 1 ? last_x_line_ : i / step_; }
 
     /// Draws line a (points pts, heights row), clipped at the near plane.
     void draw_line(int32_t a, const PlotPoint* pts, const Value* row) {
@@ -214,7 +217,7 @@ private:
                 }
                 return;
             }
-            for (int32_t j = 0, i = 0; j <= last_x_line_; ++j, i = min(i + style_.mesh_step, last)) {
+            for (int32_t j = 0, i = 0; j <= last_x_line_; ++j, i = min(i + step_, last)) {
                 x_line_style(j, true);
                 piece(a, i, split, buf_.previous[static_cast<size_t>(i)], static_cast<int32_t>(prev_row_[i]));
             }
@@ -270,7 +273,7 @@ private:
     const Value* prev_row_ = nullptr;
     PlotPoint ends_[2] = {{0, 0}, {0, 0}};
     int32_t end_values_[2] = {0, 0};
-    int32_t prev_a_ = 0, last_x_line_ = 0, points_ = 0;
+    int32_t prev_a_ = 0, step_ = 1, last_x_line_ = 0, points_ = 0;  // step_: mesh_step, at most samples - 1
     bool have_prev_ = false, whole_previous_ = false, batches_ = false;
     bool all_in_front_ = false;  ///< the current buffer has no point behind the near plane
 };

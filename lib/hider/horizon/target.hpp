@@ -49,7 +49,7 @@ struct MonoFrame {
     /// Bytes of the band: width per page.
     size_t bytes() const { return static_cast<size_t>(width) * static_cast<size_t>(page1 - page0); }
     /// Whether pixel (x, y) of the band is lit. Precondition: inside the band.
-    bool lit(int32_t x, int32_t y) const { return (pages[(y / 8 - page0) * width + x] >> (y & 7) & 1u) != 0; }
+    bool lit(int32_t x, int32_t y) const { return (pages[(y / 8 - page0) * width + x] >> (y & 7) & 1) != 0; }
 };
 
 /// Unlights every pixel of the band.
