@@ -92,6 +92,13 @@ TEST_CASE("every malformed scene line is reported with file, line and what is wr
         {"camera eye 0 0 5 target 0 0 0 fov 180\n", "t.txt:1: ", "camera: fov 180 outside [0.5, 179.5] degrees"},
         {"camera eye 0 0 5 target 0 0 0 zoom 2\n", "t.txt:1: ", "camera: unknown field 'zoom'"},
         {"camera eye 0 0 9000 target 0 0 0\n", "t.txt:1: ", "camera: eye z 9000 is outside the world cube"},
+        // A field given twice is refused, not overridden (like a second camera line).
+        {"camera eye 0 0 5 eye 0 0 6 target 0 0 0\n", "t.txt:1: ", "camera: eye given twice"},
+        {"camera eye 0 0 5 target 0 0 0 fov 40 fov 50\n", "t.txt:1: ", "camera: fov given twice"},
+        {c + "sphere 0 0 0 1 color 1 0 0 color 0 1 0\n", "t.txt:2: ", "sphere: color given twice"},
+        {c + "plane 0 1 0 0 reflect 0.5 checker 1 0 0 0 reflect 0.2\n", "t.txt:2: ", "plane: reflect given twice"},
+        {c + "light point 0 1 0 color 1 1 1 color 0 0 0\n", "t.txt:2: ", "light: color given twice"},
+        {c + "mesh m.obj scale 2 scale 3\n", "t.txt:2: ", "mesh: scale given twice"},
         {c + "sphere 0 0 0 1 " + std::string(5000, ' ') + "\n", "t.txt:2: ", "line longer than 4096 bytes"},
         {c + "#" + std::string(4096, 'x'), "t.txt:2: ", "line longer than 4096 bytes"},  // 4,097 bytes, no newline
         {c + "#" + std::string(4095, 'x') + "\n" + std::string(10000, '\0'), "t.txt:3: ", "line longer than 4096 bytes"},

@@ -82,6 +82,17 @@ public:
             if (!number(field + kAxis[i], v[i], error)) return false;
         return true;
     }
+    /// False with `error` set when `field` was already given in this statement (else records it): a
+    /// repeated attribute is a mistake, not an override.
+    bool first_time(const std::string& field, std::string& error) {
+        for (const std::string& f : seen_)
+            if (f == field) {
+                error = keyword() + ": " + field + " given twice";
+                return false;
+            }
+        seen_.push_back(field);
+        return true;
+    }
     bool end(std::string& error) const {
         if (done()) return true;
         error = keyword() + ": unexpected '" + t_[pos_] + "'";
@@ -91,6 +102,7 @@ public:
 private:
     std::vector<std::string> t_;
     size_t pos_ = 1;
+    std::vector<std::string> seen_;  // fields given so far (first_time())
 };
 
 bool world_point(const std::string& what, const double (&v)[3], Vec3q16& out, std::string& error) {
@@ -141,6 +153,7 @@ bool surface(Statement& st, RayScene& scene, uint16_t& index, std::string& error
     ray::Surface f;
     while (!st.done()) {
         const std::string a = st.next();
+        if ((a == "color" || a == "checker" || a == "reflect") && !st.first_time(a, error)) return false;
         if (a == "color") {
             if (!colour(st, "color", f.color, error)) return false;
         } else if (a == "checker") {
@@ -193,6 +206,7 @@ bool read_camera(Statement& st, CameraLine& cam, std::string& error) {
     bool eye = false, target = false;
     while (!st.done()) {
         const std::string k = st.next();
+        if ((k == "eye" || k == "target" || k == "up" || k == "fov") && !st.first_time(k, error)) return false;
         if (k == "eye") { if (!st.vec("eye", cam.eye, error)) return false; eye = true; }
         else if (k == "target") { if (!st.vec("target", cam.target, error)) return false; target = true; }
         else if (k == "up") { if (!st.vec("up", cam.up, error)) return false; }
@@ -315,6 +329,7 @@ bool read_mesh(Statement& st, const std::string& base_dir, RayScene& s, std::str
     double scale = 1, rot[3] = {0, 0, 0}, move[3] = {0, 0, 0};
     while (!st.done() && (st.peek() == "scale" || st.peek() == "rotate" || st.peek() == "translate")) {
         const std::string k = st.next();
+        if (!st.first_time(k, error)) return false;
         if (k == "scale") {
             if (!st.number("scale", scale, error)) return false;
             if (!(scale > 0)) {
@@ -381,6 +396,7 @@ bool read_light(Statement& st, RayScene& s, std::string& error) {
             error = "light: unknown attribute '" + k + "' (expected color)";
             return false;
         }
+        if (!st.first_time(k, error)) return false;
         if (!colour(st, "color", l.color, error)) return false;
     }
     s.lights.push_back(l);
