@@ -23,6 +23,7 @@
 #include <hider/bsp/format.hpp>
 #include <hider/screen.hpp>
 
+#include "bsp/bsp_blobs.hpp"
 #include "common/gen_scenes.hpp"
 
 namespace {
@@ -1077,6 +1078,10 @@ TEST_CASE("A corrupt, truncated or empty .hbsp is rejected with exit 2 and no im
     }
     const std::string missing = scratch_path("missing.hbsp");
     check_error(render(missing, {"--algo", "bsp-front"}), {missing + ": cannot open"});
+    // A valid tree deeper than the tool's walk stack: its own message, not "not a valid BSP tree".
+    const std::vector<uint8_t> chain = hider::test::chain_blob(hider::tool::kToolMaxBspDepth + 1);
+    const std::string deep = write_blob("deep.hbsp", std::string(chain.begin(), chain.end()));
+    check_error(render(deep, {"--algo", "bsp"}), {deep + ": the tree is deeper than the 65536 levels hider-render walks"});
 }
 
 TEST_CASE("A .hbsp whose world transform is out of range (checksum intact) is refused, not misread") {

@@ -575,7 +575,8 @@ private:
                 out.nodes[id].box_max[k] = static_cast<int16_t>(-((-box[id][3 + k]) >> kBspBoxShift));  // ceil
             }
         }
-        if (verts_.size() >= 0x80000000u || out.triangles.size() >= 0x80000000u || nodes >= 0x80000000u) {
+        // bsp_load() takes fewer than 2^30 nodes (walks tag indices with two bits).
+        if (verts_.size() >= 0x80000000u || out.triangles.size() >= 0x80000000u || nodes >= 0x40000000u) {
             error = "the tree is too large for the format";
             return false;
         }

@@ -45,6 +45,9 @@ enum class BspCells : uint8_t {
 /// narrower than 1/256 rad could hold a point of another winding number that far from every surface.
 constexpr double kBspCellStrayRaw = 16;
 
+/// The deepest tree hider-bsp and hider-render walk (their load stack: bsp_stack_entries() of it).
+constexpr uint32_t kToolMaxBspDepth = 1u << 16;
+
 struct BspStats {
     std::vector<int> badly_fanned;  ///< bsp_from_obj(): `f` lines badly_fanned_faces() names (for a warning)
     size_t input_triangles = 0;

@@ -89,7 +89,10 @@ int main(int argc, char** argv) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // Everything is checked before the output is opened: a failure leaves an existing file as it was.
     const AlignedBlob aligned(blob);
-    std::vector<uint32_t> stack(bsp_stack_entries(1u << 16));
+    if (st.max_depth > kToolMaxBspDepth)
+        fail(model_path + ": the tree is " + std::to_string(st.max_depth) + " levels deep, more than the " +
+             std::to_string(kToolMaxBspDepth) + " hider-bsp and hider-render walk: build it with --max-chain (e.g. 256)");
+    std::vector<uint32_t> stack(bsp_stack_entries(kToolMaxBspDepth));
     BspTree tree;
     const Status loaded = bsp_load(aligned.span(), {stack.data(), stack.size()}, tree);
     if (loaded != Status::ok) fail(model_path + ": internal: the built tree does not load (" + status_name(loaded) + ")");
