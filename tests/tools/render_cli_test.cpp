@@ -1012,6 +1012,30 @@ TEST_CASE("A tool that runs out of memory says so and exits 2, without an output
 }
 #endif
 
+TEST_CASE("A face too small for the model's extent to keep an area on the grid is a warning naming its line") {
+    // A 1e-3 triangle beside one of 1e6: fitted into +-512 world units it has no area left and drew
+    // nothing, silently (a red-team pass). Its big neighbour and a face degenerate in the model itself
+    // (three points on a line, line 9) are not named.
+    const std::string m = write_model("tiny.obj", "v -1e6 -1e6 0\nv 1e6 -1e6 0\nv 0 1e6 0\nv 0 0 1\nv 0.001 0 1\nv 0 0.001 1\n"
+                                                  "v 0 -1e6 0\nf 1 2 3\nf 1 7 2\nf 4 5 6\n");
+    const Run r = render(m, {"--size", "32x32"});
+    CHECK(r.code == 0);
+    CHECK(r.output_created);
+    CHECK(r.err == "hider-render: warning: " + m + ":10: face has an area in the model but none on the fixed-point grid: it is too "
+                   "small for the model's extent and draws nothing\n");
+    const Run tree = bsp_tool(m, scratch_path("tiny.hbsp"));
+    CHECK(tree.code == 0);
+    CHECK(contains(tree.err, "hider-bsp: warning: " + m + ":10: face has an area in the model but none on the fixed-point grid"));
+    const Run from_obj = render(m, {"--size", "32x32", "--algo", "bsp"});
+    CHECK(from_obj.code == 0);
+    CHECK(contains(from_obj.err, "hider-render: warning: " + m + ":10: face has an area"));
+    // The same small face in a model of its own size keeps its area: no warning.
+    const std::string alone = write_model("alone.obj", "v 0 0 1\nv 0.001 0 1\nv 0 0.001 1\nf 1 2 3\n");
+    const Run quiet = render(alone, {"--size", "32x32"});
+    CHECK(quiet.code == 0);
+    CHECK(quiet.err.empty());
+}
+
 TEST_CASE("A concave face whose fan from its first vertex paints outside it is a warning naming its line") {
     // Every tool fans an OBJ polygon from its first vertex. A V (notch at vertex 4) fanned from vertex 1
     // filled the notch, silently (a red-team pass). An L fanned from its inner corner is exact: no warning.

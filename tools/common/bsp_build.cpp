@@ -987,6 +987,7 @@ bool bsp_from_obj(const std::string& path, const BspOptions& opt, std::vector<ui
         error = path + ": " + error;
         return false;
     }
+    const std::vector<int> collapsed = collapsed_faces(model, scene);
     // The blob keeps the centre to 30 bits: for a model far from the origin for its size, the rounding
     // times the scale moves it off the tree's world (whose node boxes must hold every vertex).
     const int32_t limit = kBspWorldLimitRaw - (int32_t{1} << kBspBoxShift);
@@ -1010,6 +1011,7 @@ bool bsp_from_obj(const std::string& path, const BspOptions& opt, std::vector<ui
     blob = bsp_blob(tree, fit);
     stats.bytes = blob.size();
     stats.badly_fanned = badly_fanned;  // build_bsp() starts the statistics afresh
+    stats.collapsed = collapsed;
     return true;
 }
 

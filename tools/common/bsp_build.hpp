@@ -50,6 +50,7 @@ constexpr uint32_t kToolMaxBspDepth = 1u << 16;
 
 struct BspStats {
     std::vector<int> badly_fanned;  ///< bsp_from_obj(): `f` lines badly_fanned_faces() names (for a warning)
+    std::vector<int> collapsed;     ///< bsp_from_obj(): `f` lines collapsed_faces() names (for a warning)
     size_t input_triangles = 0;
     size_t degenerate = 0;        ///< input triangles of zero area, dropped
     size_t cuts = 0;              ///< polygons cut in two

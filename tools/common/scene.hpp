@@ -52,6 +52,14 @@ struct Scene {
 bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std::string& error,
                  size_t max_vertices = kMaxMeshVertices);
 
+/// `f` lines of faces that have an area in the model but whose every fan triangle has none on the
+/// scene's Q16 grid (build_scene() of that model): they draw nothing. A model fitted into +-512 world
+/// units keeps detail down to about its extent / 2^26; finer faces collapse.
+std::vector<int> collapsed_faces(const ObjModel& model, const Scene& scene);
+
+/// Warnings for collapsed_faces(): the first five by line, then how many more.
+std::vector<std::string> collapse_warnings(const std::string& path, const std::vector<int>& lines);
+
 /// Exact double value of a Q16 world coordinate (for references that must see hider's own scene).
 inline double to_double(Q16 v) { return v.raw() / 65536.0; }
 

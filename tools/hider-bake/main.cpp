@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
     for (const std::string& w : fan_warnings(model_path, badly_fanned_faces(model))) std::cerr << "hider-bake: warning: " << w << "\n";
     Scene scene;
     if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
+    for (const std::string& w : collapse_warnings(model_path, collapsed_faces(model, scene))) std::cerr << "hider-bake: warning: " << w << "\n";
     const Status ms = validate(scene.mesh());
     if (ms != Status::ok) fail(model_path + ": mesh rejected: " + status_name(ms));
 

@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
     BspStats st;
     if (!bsp_from_obj(model_path, opt, blob, st, why)) fail(why);
     for (const std::string& w : fan_warnings(model_path, st.badly_fanned)) std::cerr << "hider-bsp: warning: " << w << "\n";
+    for (const std::string& w : collapse_warnings(model_path, st.collapsed)) std::cerr << "hider-bsp: warning: " << w << "\n";
     if (st.triangles == 0)
         fail(model_path + ": no face with an area (" + std::to_string(st.degenerate) + " of " +
              std::to_string(st.input_triangles) + " triangles degenerate on the grid): the tree would be empty");

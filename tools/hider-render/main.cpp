@@ -260,6 +260,7 @@ int main(int argc, char** argv) {
             BspStats bs;
             if (!bsp_from_obj(model_path, BspOptions{}, blob, bs, why)) fail(why);
             for (const std::string& w : fan_warnings(model_path, bs.badly_fanned)) std::cerr << "hider-render: warning: " << w << "\n";
+            for (const std::string& w : collapse_warnings(model_path, bs.collapsed)) std::cerr << "hider-render: warning: " << w << "\n";
         }
         const AlignedBlob aligned(blob);
         std::vector<uint32_t> probe(bsp_stack_entries(kToolMaxBspDepth));
@@ -277,6 +278,8 @@ int main(int argc, char** argv) {
         if (!load_obj(model_path, model, err)) fail(format(err));
         for (const std::string& w : fan_warnings(model_path, badly_fanned_faces(model))) std::cerr << "hider-render: warning: " << w << "\n";
         if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
+        for (const std::string& w : collapse_warnings(model_path, collapsed_faces(model, scene)))
+            std::cerr << "hider-render: warning: " << w << "\n";
         if (!render(scene, opt, result, why)) fail(why);
     }
     // --strict: an incomplete frame is an error, and an error leaves no image behind.

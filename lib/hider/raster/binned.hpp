@@ -105,7 +105,8 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
 /// every triangle's rows in it and calls done(band), a FrameView of the band's rows; done() returns
 /// false to stop the frame. Same
 /// bytes as clear() + draw_zbuffer() on the whole frame; statistics as the whole frame's. `bs`, if
-/// given, receives the carried-slot figures. Errors: invalid_argument (unusable buffers, a mesh of more
+/// given, receives the carried-slot figures. Errors: invalid_argument (unusable buffers: among them a
+/// band taller than the frame, y1 > height, which is refused rather than clamped; a mesh of more
 /// than 65,535 triangles, scratch too small: next < triangles, head < bands, slots < 3 x carried, more
 /// than 255 carried slots, or done() returned false). Borrows everything for the call.
 template <class Format, class Depth, class BandDone>
