@@ -1012,6 +1012,17 @@ TEST_CASE("A tool that runs out of memory says so and exits 2, without an output
 }
 #endif
 
+TEST_CASE("hider-bsp warns when the planes cut the model into many times its triangles") {
+    // 60 crossing triangles become 15,991 in the tree (a red-team model): written, with a warning.
+    const std::string model = std::string(HIDER_TEST_DATA) + "/obj/crossing_triangles.obj";
+    const Run r = bsp_tool(model, scratch_path("crossing.hbsp"));
+    CHECK(r.code == 0);
+    CHECK(contains(r.err, "hider-bsp: warning: " + model + ": the tree holds 15991 triangles for 60 in the model (split ratio 111.5, "));
+    const Run torus = bsp_tool(kTorus, scratch_path("torus_quiet.hbsp"));  // split ratio 1.8
+    CHECK(torus.code == 0);
+    CHECK(torus.err.empty());
+}
+
 TEST_CASE("A face too small for the model's extent to keep an area on the grid is a warning naming its line") {
     // A 1e-3 triangle beside one of 1e6: fitted into +-512 world units it has no area left and drew
     // nothing, silently (a red-team pass). Its big neighbour and a face degenerate in the model itself
