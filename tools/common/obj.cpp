@@ -371,32 +371,35 @@ std::string format(const ObjError& e) {
     return e.file + ":" + std::to_string(e.line) + ": " + e.what;
 }
 
+bool scaled_face(const ObjModel& model, const ObjFace& f, std::vector<std::array<double, 3>>& p, std::array<double, 3>& n) {
+    const auto& o = model.vertices[static_cast<size_t>(f.v[0])];
+    double scale = 0;
+    p.clear();
+    for (const int32_t i : f.v) {
+        const auto& v = model.vertices[static_cast<size_t>(i)];
+        p.push_back({v[0] - o[0], v[1] - o[1], v[2] - o[2]});
+        for (const double c : p.back()) scale = std::max(scale, std::fabs(c));
+    }
+    if (!(scale > 0) || !std::isfinite(scale)) return false;
+    for (auto& q : p)
+        for (double& c : q) c /= scale;
+    n = {0, 0, 0};
+    for (size_t i = 0; i < p.size(); ++i) {
+        const auto& a = p[i];
+        const auto& b = p[(i + 1) % p.size()];
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    return true;
+}
+
 std::vector<int> badly_fanned_faces(const ObjModel& model) {
     std::vector<int> lines;
     std::vector<std::array<double, 3>> p;
+    std::array<double, 3> n{};
     for (const ObjFace& f : model.faces) {
-        if (f.v.size() <= 3) continue;
-        // Relative to the first vertex, scaled by the face's largest offset: no overflow or underflow at
-        // any model size, and rounding is relative to the face.
-        const auto& o = model.vertices[static_cast<size_t>(f.v[0])];
-        double scale = 0;
-        p.clear();
-        for (const int32_t i : f.v) {
-            const auto& v = model.vertices[static_cast<size_t>(i)];
-            p.push_back({v[0] - o[0], v[1] - o[1], v[2] - o[2]});
-            for (const double c : p.back()) scale = std::max(scale, std::fabs(c));
-        }
-        if (!(scale > 0) || !std::isfinite(scale)) continue;
-        for (auto& q : p)
-            for (double& c : q) c /= scale;
-        double n[3] = {0, 0, 0};  // Newell's normal: twice the polygon's vector area
-        for (size_t i = 0; i < p.size(); ++i) {
-            const auto& a = p[i];
-            const auto& b = p[(i + 1) % p.size()];
-            n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-            n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-            n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-        }
+        if (f.v.size() <= 3 || !scaled_face(model, f, p, n)) continue;
         const double n_len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         bool against = false;
         for (size_t i = 1; i + 1 < p.size() && !against; ++i) {
@@ -414,13 +417,15 @@ std::vector<int> badly_fanned_faces(const ObjModel& model) {
     return lines;
 }
 
-std::vector<std::string> fan_warnings(const std::string& path, const std::vector<int>& lines) {
+std::vector<std::string> face_warnings(const std::string& path, const std::vector<int>& lines, const std::string& what) {
     std::vector<std::string> out;
-    for (size_t i = 0; i < lines.size() && i < 5; ++i)
-        out.push_back(path + ":" + std::to_string(lines[i]) +
-                      ": face is not convex from its first vertex: its fan covers area outside it (triangulate it)");
+    for (size_t i = 0; i < lines.size() && i < 5; ++i) out.push_back(path + ":" + std::to_string(lines[i]) + ": " + what);
     if (lines.size() > 5) out.push_back(path + ": " + std::to_string(lines.size() - 5) + " more such faces");
     return out;
+}
+
+std::vector<std::string> fan_warnings(const std::string& path, const std::vector<int>& lines) {
+    return face_warnings(path, lines, "face is not convex from its first vertex: its fan covers area outside it (triangulate it)");
 }
 
 }  // namespace hider::tool

@@ -53,12 +53,20 @@ struct ObjError {
 /// Reads the OBJ file at `path` into `out`; on failure fills `err`, leaves `out` empty and returns false.
 bool load_obj(const std::string& path, ObjModel& out, ObjError& err);
 
+/// Face f's vertices relative to its first, scaled by their largest offset (no overflow or underflow at any
+/// model size; rounding relative to the face), into p, and their Newell normal (twice the polygon's vector
+/// area) into n. False, p and n unspecified, when the vertices coincide or the offsets do not fit a double.
+bool scaled_face(const ObjModel& model, const ObjFace& f, std::vector<std::array<double, 3>>& p, std::array<double, 3>& n);
+
 /// Faces of more than 3 vertices whose fan from the first vertex (how every tool triangulates) does not
 /// cover the polygon: a fan triangle turns against the polygon's (Newell) normal, so the fan paints outside
 /// a concave face. Their `f` line numbers, in file order, for a warning.
 std::vector<int> badly_fanned_faces(const ObjModel& model);
 
-/// One warning line per such face (at most 5, then a count): "path:line: face ... (triangulate it)".
+/// One warning line per face line (at most 5, then a count): "path:line: what".
+std::vector<std::string> face_warnings(const std::string& path, const std::vector<int>& lines, const std::string& what);
+
+/// face_warnings() for badly_fanned_faces(): "path:line: face ... (triangulate it)".
 std::vector<std::string> fan_warnings(const std::string& path, const std::vector<int>& lines);
 
 /// Reads OBJ text from `in` (named `name` in errors) into `out`; on failure fills `err`, leaves `out`

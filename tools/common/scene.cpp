@@ -225,6 +225,8 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
 
 std::vector<int> collapsed_faces(const ObjModel& model, const Scene& scene) {
     std::vector<int> lines;
+    std::vector<std::array<double, 3>> p;
+    std::array<double, 3> n{};
     for (const ObjFace& f : model.faces) {
         bool area_on_grid = false;  // some fan triangle keeps an area
         for (size_t i = 1; i + 1 < f.v.size() && !area_on_grid; ++i) {
@@ -236,37 +238,16 @@ std::vector<int> collapsed_faces(const ObjModel& model, const Scene& scene) {
             area_on_grid = uy * vz - uz * vy != 0 || uz * vx - ux * vz != 0 || ux * vy - uy * vx != 0;  // |u|, |v| < 2^31
         }
         if (area_on_grid) continue;
-        // In the model: Newell's normal of the face relative to its first vertex, scaled by its extent.
-        const auto& o = model.vertices[static_cast<size_t>(f.v[0])];
-        std::vector<std::array<double, 3>> p;
-        double extent = 0;
-        for (const int32_t i : f.v) {
-            const auto& v = model.vertices[static_cast<size_t>(i)];
-            p.push_back({v[0] - o[0], v[1] - o[1], v[2] - o[2]});
-            for (const double c : p.back()) extent = std::max(extent, std::fabs(c));
-        }
-        if (!(extent > 0) || !std::isfinite(extent)) continue;  // a point: no area anywhere
-        double n[3] = {0, 0, 0};
-        for (size_t i = 0; i < p.size(); ++i) {
-            const auto& a = p[i];
-            const auto& b = p[(i + 1) % p.size()];
-            n[0] += (a[1] - b[1]) / extent * ((a[2] + b[2]) / extent);
-            n[1] += (a[2] - b[2]) / extent * ((a[0] + b[0]) / extent);
-            n[2] += (a[0] - b[0]) / extent * ((a[1] + b[1]) / extent);
-        }
-        if (std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]) > 1e-9) lines.push_back(f.line);
+        // An area in the model: a Newell normal clearly above the rounding of a face on a line.
+        if (scaled_face(model, f, p, n) && std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]) > 1e-9) lines.push_back(f.line);
     }
     return lines;
 }
 
 std::vector<std::string> collapse_warnings(const std::string& path, const std::vector<int>& lines) {
-    std::vector<std::string> out;
-    for (size_t i = 0; i < lines.size() && i < 5; ++i)
-        out.push_back(path + ":" + std::to_string(lines[i]) +
-                      ": face has an area in the model but none on the fixed-point grid: it is too small for the "
-                      "model's extent and draws nothing");
-    if (lines.size() > 5) out.push_back(path + ": " + std::to_string(lines.size() - 5) + " more such faces");
-    return out;
+    return face_warnings(path, lines,
+                         "face has an area in the model but none on the fixed-point grid: it is too small for the "
+                         "model's extent and draws nothing");
 }
 
 }  // namespace hider::tool
