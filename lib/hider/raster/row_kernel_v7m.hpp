@@ -7,12 +7,26 @@
 namespace hider {
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+/// HIDER_V7M_PIXEL(entry, skip): one pixel of HIDER_V7M_ROWS's four-pixel turn, entered at local label
+/// `entry`: the depth at r9 (post-incremented) against z = lr's top half, on a pass both stores (colour at
+/// r9 + r7, r10), then z += dzdx (r8); r12 scratch.
+#define HIDER_V7M_PIXEL(entry, skip) \
+    #entry ":\n\t" \
+    "ldrh   r12, [r9], #2\n\t" \
+    "cmp    r12, lr, lsr #16\n\t" \
+    "bls    " #skip "f\n\t"                 /* stored depth <= ours: keep it */ \
+    "lsr    r12, lr, #16\n\t" \
+    "strh   r12, [r9, #-2]\n\t" \
+    "strh   r10, [r9, r7]\n" \
+    #skip ":\n\t" \
+    "add    lr, lr, r8\n"
+
 /// HIDER_V7M_ROWS: the row loop of run_kernel_triangle_v7m(), shared with draw_band_v7m()'s resumes
 /// (band_loop_asm.hpp). Entry: r0 the record + ra, r1..r5 lp lg lz rp rg, r6 rows before a switch, r7
 /// the colour offset less 2, r8 dzdx, r10 the colour; at sp the middle row's depth pointer, the rows after the
 /// switch (-1: none) and the depth row after the last. Exit: the record (r0) holds the next row's edges
 /// and depth, r12 that row's depth pointer (every other register clobbered). r6 must be at least 1 (the
-/// row loop tests after its first row). Uses local labels 69..79 and the operands ra, n_left, n_x, n_g,
+/// row loop tests after its first row). Uses local labels 71..88 and the operands ra, n_left, n_x, n_g,
 /// n_a, n_z, n_dz.
 #define HIDER_V7M_ROWS \
     "72:\n\t"                                /* row */ \
@@ -20,28 +34,16 @@ namespace hider {
     "ble    74f\n\t"                         /* empty span */ \
     "mov    r9, r1\n\t"                      /* p = lp */ \
     "mov    lr, r3\n\t"                      /* z = lz */ \
-    "lsls   r11, r11, #31\n\t"               /* C: an odd number of pixels */ \
-    "bcs    70f\n"                           /* the first one alone */ \
-    "73:\n\t"                                /* two pixels */ \
-    "ldrh   r12, [r9], #2\n\t" \
-    "cmp    r12, lr, lsr #16\n\t" \
-    "bls    75f\n\t"                         /* stored depth <= ours: keep it */ \
-    "lsr    r12, lr, #16\n\t" \
-    "strh   r12, [r9, #-2]\n\t" \
-    "strh   r10, [r9, r7]\n" \
-    "75:\n\t" \
-    "add    lr, lr, r8\n" \
-    "70:\n\t" \
-    "ldrh   r12, [r9], #2\n\t" \
-    "cmp    r12, lr, lsr #16\n\t" \
-    "bls    69f\n\t" \
-    "lsr    r12, lr, #16\n\t" \
-    "strh   r12, [r9, #-2]\n\t" \
-    "strh   r10, [r9, r7]\n" \
-    "69:\n\t" \
-    "add    lr, lr, r8\n\t" \
-    "cmp    r9, r4\n\t" \
-    "bne    73b\n" \
+    "ubfx   r11, r11, #1, #2\n\t"            /* pixels mod 4: where to enter the four-pixel turn */ \
+    "tbb    [pc, r11]\n"                      \
+    "88:\n\t"                                \
+    ".byte  (80f - 88b) / 2, (83f - 88b) / 2, (82f - 88b) / 2, (81f - 88b) / 2\n" \
+    HIDER_V7M_PIXEL(80, 84)                  \
+    HIDER_V7M_PIXEL(81, 85)                  \
+    HIDER_V7M_PIXEL(82, 86)                  \
+    HIDER_V7M_PIXEL(83, 87)                  \
+    "cmp    r9, r4\n\t"                      \
+    "bne    80b\n"                            \
     "74:\n\t"                                /* left edge: g += m, p += step, z += dz_row, then correct */ \
     "ldmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
     "adds   r2, r2, r11\n\t" \
@@ -99,10 +101,10 @@ namespace hider {
 /// Thumb-2. In the row loop: r0 the right edge's constants (offset 36) with the left edge's just below
 /// (load-multiple decrement-before) and `next` above, r1..r5 lp lg lz rp rg, r6 rows left in this
 /// phase, r7 colour offset less 2, r8 dz, r10 colour; on the stack the middle row's depth pointer, the
-/// rows after the switch (-1: none) and the depth row after the last. Pixel loop, two pixels a turn
-/// (an odd span enters at the second): r9 the depth pointer, post-incremented, ending at rp (r4), the
-/// colour at r9 + r7, lr z, r12 scratch (7 instructions a written pixel, 4 a rejected one, 2 a pair).
-/// Per row outside the pixels: 17, plus 3 and 2 for edge corrections.
+/// rows after the switch (-1: none) and the depth row after the last. Pixel loop, four pixels a turn
+/// (a table branch enters a span of 4k + j pixels at the (4 - j)-th, Duff-style, so short spans pay one
+/// loop test a row rather than one a pair): r9 the depth pointer, post-incremented, ending at rp (r4),
+/// the colour at r9 + r7, lr z, r12 scratch.
 HIDER_NAKED inline uint16_t* run_kernel_triangle_v7m(KernelTriangle*, uint16_t*, int32_t,
                                                                           const KernelTarget*) {
     __asm__ volatile(
