@@ -235,6 +235,15 @@ TEST_CASE("binned bands carry set-ups across bands, and set them up again when t
     CHECK(few.carried_high_water == 8);
     CHECK(few.carried + few.set_up_again == continuations);
     CHECK(few.set_up_again > plenty.set_up_again);
+    // The figures are the frame's: a struct kept across frames (to size the slots) is not added to.
+    BinnedStats kept = few;
+    (void)binned<Rgb565Format, uint16_t>(s, p, 4, 8, st, kept);
+    CHECK(kept.carried == few.carried);
+    CHECK(kept.set_up_again == few.set_up_again);
+    CHECK(kept.carried_high_water == few.carried_high_water);
+    kept = plenty;
+    (void)binned<Rgb565Format, uint16_t>(s, p, 4, 0, st, kept);
+    CHECK(kept.carried_high_water == 0);
 }
 
 TEST_CASE("draw_zbuffer_binned refuses scratch too small, big meshes and a sink that stops") {

@@ -64,6 +64,7 @@ template <bool kAsmLoop, class Format, class Depth, class BandDone>
 FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, const FrameView<Format, Depth>& buffers,
                        const DrawOptions& opt, Rgb background, const BinnedScratch& scratch, BandDone& done, BinnedStats* bs) {
     FrameStats st;
+    if (bs != nullptr) *bs = BinnedStats{};  // this frame's figures, also in a struct kept across frames
     const int32_t rows = buffers.y1, height = buffers.height;
     const size_t tri_count = mesh.tris.size();
     const size_t bands = buffers.valid() ? static_cast<size_t>((height + rows - 1) / rows) : 0;
@@ -105,7 +106,7 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
 /// every triangle's rows in it and calls done(band), a FrameView of the band's rows; done() returns
 /// false to stop the frame. Same
 /// bytes as clear() + draw_zbuffer() on the whole frame; statistics as the whole frame's. `bs`, if
-/// given, receives the carried-slot figures. Errors: invalid_argument (unusable buffers: among them a
+/// given, receives this frame's carried-slot figures (it is reset, not added to). Errors: invalid_argument (unusable buffers: among them a
 /// band taller than the frame, y1 > height, which is refused rather than clamped; a mesh of more
 /// than 65,535 triangles, scratch too small: next < triangles, head < bands, slots < 3 x carried, more
 /// than 255 carried slots, or done() returned false). Borrows everything for the call.
