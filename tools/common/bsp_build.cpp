@@ -158,23 +158,31 @@ private:
         return (I128(pl.n[0] < 0 ? -pl.n[0] : pl.n[0]) + (pl.n[1] < 0 ? -pl.n[1] : pl.n[1]) + (pl.n[2] < 0 ? -pl.n[2] : pl.n[2])) / 2;
     }
 
-    /// -1 back, +1 front, 0 coplanar, 2 straddles. Pieces of triangles of the plane's group are coplanar.
+    /// -1 back, +1 front, 0 coplanar, 2 straddles. Coplanar means a piece of a triangle of the plane's
+    /// group, and nothing else: a node's triangles take their facing from its plane. A piece of another
+    /// plane with every corner within rounding of this one (a sliver along the planes' intersection)
+    /// goes to the side of its farthest corner (front when all lie exactly on it), not into the node:
+    /// there the walk would cull or keep it by a plane that is not its own.
     int classify(uint32_t plane, const Poly& p) const {
         if (groups_[p.tri] == groups_[plane]) return 0;
         const Plane& pl = planes_[plane];
+        const I128 slack = half_l1(pl);
         bool pos = false, neg = false;
-        for (uint32_t v : p.v) {
-            const int s = side_of(pl, v);
-            pos = pos || s > 0;
-            neg = neg || s < 0;
+        I128 farthest = 0;
+        for (uint32_t v : p.v) {  // side_of() of each corner
+            const I128 d = side(pl, verts_[v]);
+            pos = pos || d > slack;
+            neg = neg || d < -slack;
+            if ((d < 0 ? -d : d) > (farthest < 0 ? -farthest : farthest)) farthest = d;
         }
-        return pos && neg ? 2 : (pos ? 1 : (neg ? -1 : 0));
+        return pos && neg ? 2 : (pos ? 1 : (neg ? -1 : (farthest < 0 ? -1 : 1)));
     }
 
     /// The splitter among evenly spaced candidates of `list` (the cost is measured on at most 4096 of its
     /// polygons, evenly spaced, so large nodes stay fast). The sampled polygons' distinct corners are
     /// gathered first, so each candidate computes the side of a corner once however many polygons share
-    /// it, in a contiguous array (the same decisions as classify()).
+    /// it, in a contiguous array (the same decisions as classify(), except that a piece of another plane
+    /// within rounding of this one counts on neither side).
     uint32_t choose(const std::vector<uint32_t>& list) {
         const size_t n = list.size(), tries = std::min<size_t>(n, static_cast<size_t>(std::max(1, opt_.candidates)));
         const size_t sample = std::min<size_t>(n, 4096);
@@ -803,35 +811,34 @@ private:
     }
 
     /// The winding number of node n's empty child c, by rays from the centre of its largest triangle
-    /// into the child's side (tilted at random; cast again when one passes through an edge).
+    /// into the child's side (tilted at random; cast again when one passes through an edge). Every
+    /// triangle of the node borders the child's cell, so when another surface lies within the margin of
+    /// that centre (a sliver along two faces' line), the next largest one starts the rays.
     bool winding_of(const BspNode& n, int c, int& w) {
-        if (n.count == 0) return false;
-        size_t best = n.first;  // the largest triangle: its centre lies farthest from other surfaces
-        I128 best_area = -1;
+        std::vector<std::pair<I128, uint32_t>> by_area;  // largest first: its centre lies farthest from other surfaces
         for (uint32_t k = n.first; k < n.first + n.count; ++k) {
             const auto& u = tri3_[k];
             const V3 a = sub3(u[1], u[0]), b = sub3(u[2], u[0]);
             const I128 x = I128(a[1]) * b[2] - I128(a[2]) * b[1], y = I128(a[2]) * b[0] - I128(a[0]) * b[2],
                        z = I128(a[0]) * b[1] - I128(a[1]) * b[0];
-            const I128 area2 = x * x + y * y + z * z;  // below 2^126 for x3 coordinates below 2^31
-            if (area2 > best_area) {
-                best_area = area2;
-                best = k;
-            }
+            by_area.push_back({x * x + y * y + z * z, k});  // below 2^126 for x3 coordinates below 2^31
         }
-        const auto& u = tri3_[best];
-        const V3 q = {u[0][0] + u[1][0] + u[2][0], u[0][1] + u[1][1] + u[2][1], u[0][2] + u[1][2] + u[2][2]};
-        const V3 centre = {q[0] / 3, q[1] / 3, q[2] / 3};  // exact: the sum of three x3 coordinates
-        const double len = norm(n), s = c == 0 ? 1.0 : -1.0;
-        for (int attempt = 0; attempt < 16; ++attempt) {
-            V3 r;  // far beyond the world (|x3 coordinates| < 2^29) on the child's side, slightly tilted
-            for (int i = 0; i < 3; ++i)
-                r[i] = centre[i] + static_cast<int64_t>(std::llround(s * static_cast<double>(n.n[i]) / len * 0x1p33)) + jitter_(rng_);
-            const I128 along = I128(n.n[0]) * (r[0] - centre[0]) + I128(n.n[1]) * (r[1] - centre[1]) + I128(n.n[2]) * (r[2] - centre[2]);
-            if (sgn(along) != (c == 0 ? 1 : -1)) continue;  // the ray must leave into the child's side
-            const Cast result = cast(best, centre, r, w);
-            if (result == Cast::known) return true;
-            if (result == Cast::unknown) return false;
+        std::stable_sort(by_area.begin(), by_area.end(), [](const auto& l, const auto& r) { return l.first > r.first; });
+        for (const auto& [area, start] : by_area) {
+            const auto& u = tri3_[start];
+            const V3 q = {u[0][0] + u[1][0] + u[2][0], u[0][1] + u[1][1] + u[2][1], u[0][2] + u[1][2] + u[2][2]};
+            const V3 centre = {q[0] / 3, q[1] / 3, q[2] / 3};  // exact: the sum of three x3 coordinates
+            const double len = norm(n), s = c == 0 ? 1.0 : -1.0;
+            for (int attempt = 0; attempt < 16; ++attempt) {
+                V3 r;  // far beyond the world (|x3 coordinates| < 2^29) on the child's side, slightly tilted
+                for (int i = 0; i < 3; ++i)
+                    r[i] = centre[i] + static_cast<int64_t>(std::llround(s * static_cast<double>(n.n[i]) / len * 0x1p33)) + jitter_(rng_);
+                const I128 along = I128(n.n[0]) * (r[0] - centre[0]) + I128(n.n[1]) * (r[1] - centre[1]) + I128(n.n[2]) * (r[2] - centre[2]);
+                if (sgn(along) != (c == 0 ? 1 : -1)) continue;  // the ray must leave into the child's side
+                const Cast result = cast(start, centre, r, w);
+                if (result == Cast::known) return true;
+                if (result == Cast::unknown) break;  // another surface at this start: try the next triangle
+            }
         }
         return false;
     }
