@@ -30,6 +30,13 @@ std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>
 
 namespace {
 
+/// unsigned -> mode_t: the same type on Linux, 16 bits on macOS. A cast in a template, so that neither
+/// -Wconversion (macOS) nor a user's -Wuseless-cast (Linux) has anything to say.
+template <class Mode>
+Mode narrow_mode(unsigned bits) {
+    return static_cast<Mode>(bits);
+}
+
 /// In place, as ofstream writes: a device, a pipe, a symlink, a file with other hard links, the web build.
 bool write_in_place(const std::string& path, const char* data, size_t size, bool existed, std::string& error) {
     std::ofstream f(path, std::ios::binary);
@@ -74,9 +81,9 @@ bool write_bytes(const std::string& path, const char* data, size_t size, std::st
     }
     mode_t mode = st.st_mode & 07777;
     if (!exists) {
-        mode = ::umask(0);
-        ::umask(mode);
-        mode = static_cast<mode_t>(0666 & ~mode);
+        const unsigned umask_bits = ::umask(0);
+        ::umask(narrow_mode<mode_t>(umask_bits));
+        mode = narrow_mode<mode_t>(0666u & ~umask_bits);
     }
     bool ok = ::fchmod(fd, mode) == 0;
     for (size_t done = 0; ok && done < size;) {
