@@ -61,6 +61,55 @@ NewellStats check_ids(const tool::Scene& s, const std::string& name, bool cull) 
     return newell;
 }
 
+/// Pixels where `ids` shows a face farther than the nearest one, judged on the snapped screen triangles
+/// every algorithm draws (exact planes through the projected, clipped vertices, in long double) at the
+/// pixel centres strictly inside every triangle that covers them (centres on an edge are skipped).
+long wrong_on_snapped_planes(const tool::Scene& s, bool cull, const std::vector<uint32_t>& ids) {
+    View view;
+    REQUIRE(make_view(s.camera, s.width, s.height, view) == Status::ok);
+    const Mesh mesh = s.mesh();
+    std::vector<ScreenVertex> verts(mesh.positions.size());
+    project_vertices(view, mesh.positions, {verts.data(), verts.size()});
+    struct T {
+        ScreenVertex a, b, c;
+        uint32_t id;
+    };
+    std::vector<T> tris;
+    FrameStats st;
+    for (size_t t = 0; t < mesh.tris.size(); ++t)
+        for_each_clipped(view, mesh, {verts.data(), verts.size()}, t, st, [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+            const int32_t area = TriangleRaster::signed_area(a, b, c);
+            if (area != 0 && !(cull && area > 0)) tris.push_back({a, b, c, s.ids[t]});
+        });
+    auto edge = [](const ScreenVertex& p, const ScreenVertex& q, double x, double y) {
+        return (double(q.x) - p.x) * (y - p.y) - (double(q.y) - p.y) * (x - p.x);
+    };
+    auto depth = [](const T& t, double x, double y) {
+        const long double x1 = t.b.x - t.a.x, y1 = t.b.y - t.a.y, z1 = static_cast<long double>(t.b.z) - t.a.z;
+        const long double x2 = t.c.x - t.a.x, y2 = t.c.y - t.a.y, z2 = static_cast<long double>(t.c.z) - t.a.z;
+        const long double nx = y1 * z2 - z1 * y2, ny = z1 * x2 - x1 * z2, nz = x1 * y2 - y1 * x2;
+        return static_cast<long double>(t.a.z) - (nx * (x - t.a.x) + ny * (y - t.a.y)) / nz;
+    };
+    long wrong = 0;
+    for (int py = 0; py < s.height; ++py)
+        for (int px = 0; px < s.width; ++px) {
+            const double x = (px + 0.5 - s.width / 2.0) * 16, y = (py + 0.5 - s.height / 2.0) * 16;
+            bool on_edge = false;
+            long double best = 1e30L, shown = 1e30L;
+            const uint32_t id = ids[static_cast<size_t>(py) * static_cast<size_t>(s.width) + static_cast<size_t>(px)];
+            for (const T& t : tris) {
+                const double e0 = edge(t.a, t.b, x, y), e1 = edge(t.b, t.c, x, y), e2 = edge(t.c, t.a, x, y);
+                on_edge = on_edge || e0 == 0 || e1 == 0 || e2 == 0;
+                if (!((e0 > 0 && e1 > 0 && e2 > 0) || (e0 < 0 && e1 < 0 && e2 < 0))) continue;
+                const long double d = depth(t, x, y);
+                best = d < best ? d : best;
+                if (t.id == id) shown = d < shown ? d : shown;
+            }
+            if (!on_edge && best < 1e30L && shown > best && shown < 1e30L) ++wrong;
+        }
+    return wrong;
+}
+
 void check_scene(const std::string& name) {
     const tool::Scene s = test::generated_scene(name);
     for (bool cull : {true, false}) check_ids(s, name, cull);
@@ -70,6 +119,68 @@ void check_scene(const std::string& name) {
 
 TEST_CASE("Newell and the reverse painter match the z-buffer on random interpenetrating soups") {
     for (const char* name : {"dense-1-150", "dense-2-150", "dense-3-50", "dense-4-300", "soup-5-500"}) check_scene(name);
+}
+
+TEST_CASE("Newell and the reverse painter match the z-buffer on stacks of nearly parallel triangles") {
+    // 2 to 11 random triangles 2 units wide on one tilted plane, lifted 1e-4, 3e-4 or 1e-3 units apart
+    // (gap x layer), seen from 4 units. Once a third triangle has cut one of a pair, the pair's pieces
+    // lie within the rounding slack of each other's plane at every corner; taken for "wholly farther",
+    // a piece went before a nearer one (a red team's stacks: 37 of 400 frames at 160x120, up to 128
+    // off-edge pixels, status ok). Against the 32-bit z-buffer: no off-edge difference, hole or crack.
+    std::mt19937 rng(20261204u);
+    auto u = [&rng](double a, double b) { return a + (b - a) * (static_cast<double>(rng()) / 4294967296.0); };
+    long z_wrong = 0, flagged = 0;
+    for (int seed = 0; seed < 60; ++seed) {
+        tool::ObjModel m;
+        const int n = 2 + seed % 10;
+        const double gap = seed % 3 == 0 ? 1e-4 : (seed % 3 == 1 ? 3e-4 : 1e-3);
+        const double nx = u(-0.5, 0.5), ny = u(-0.5, 0.5);
+        for (int i = 0; i < n; ++i) {
+            tool::ObjFace f;
+            for (int k = 0; k < 3; ++k) {
+                const double x = u(-1, 1), y = u(-1, 1);
+                f.v.push_back(static_cast<int32_t>(m.vertices.size()));
+                m.vertices.push_back({x, y, -(nx * x + ny * y) * 0.5 + gap * i});
+            }
+            f.id = static_cast<uint32_t>(i + 1);
+            m.faces.push_back(f);
+        }
+        tool::CameraArgs args;
+        args.width = 160;
+        args.height = 120;
+        args.eye = tool::Vec3d{u(-1, 1), u(-1, 1), 4};
+        args.target = tool::Vec3d{0, 0, 0};
+        tool::Scene s;
+        std::string why;
+        REQUIRE_MESSAGE(tool::build_scene(m, args, s, why), why);
+        for (const bool cull : {false, true}) {
+            const std::vector<uint32_t> zi = tool::decode_ids(render_ids(s, tool::Algo::zbuffer, cull));
+            z_wrong += wrong_on_snapped_planes(s, cull, zi);
+            for (tool::Algo algo : {tool::Algo::newell, tool::Algo::reverse}) {
+                const tool::RenderResult r = render_ids(s, algo, cull);
+                const std::vector<uint32_t> ids = tool::decode_ids(r);
+                const ref::Agreement a = ref::compare_ids(ids, zi, s.width, s.height);
+                const test::Defects d = test::count_defects(ids, zi, s.width, s.height);
+                INFO("seed " << seed << std::string(algo == tool::Algo::newell ? " newell" : " reverse") << std::string(cull ? " cull" : " no-cull"));
+                const long wrong = wrong_on_snapped_planes(s, cull, ids);
+                if (r.stats.status == Status::ok) {  // never silently wrong
+                    CHECK(wrong == 0);
+                    CHECK(a.off_edge_mismatch == 0);
+                    CHECK(d.holes == 0);
+                    CHECK(d.cracks == 0);
+                } else {
+                    MESSAGE("status " << std::string(status_name(r.stats.status)) << ": " << wrong << " pixels from a farther layer, "
+                                      << a.off_edge_mismatch << " off edges, " << d.cracks << " cracks");
+                    ++flagged;
+                }
+            }
+        }
+    }
+    CHECK(z_wrong == 0);  // the referee agrees with the z-buffer
+    // A stack whose order the cuts cannot settle says so (unresolved pairs: capacity_exceeded); the old
+    // side test drew 10 of these 60 stacks wrong with status ok. Now 2 (4 frames, without culling) say so.
+    MESSAGE(flagged << " of 240 frames returned a status other than ok");
+    CHECK(flagged <= 4);
 }
 
 TEST_CASE("Newell and the reverse painter match the z-buffer on sticks, stacked boxes, a ground grid and a city") {
@@ -227,10 +338,10 @@ TEST_CASE("Newell's cycle search skips pairs a search of the chain tried in vain
         CHECK(d.cracks == 0);
         CHECK(r.stats.status == Status::ok);
         CHECK(r.newell.unresolved == 0);
-        CHECK(r.newell.cycles == 1638);
-        CHECK(r.newell.moves == 6083);
-        CHECK(r.newell.splits == 431);
-        CHECK(r.newell.pixel_ordered == 1441);
+        CHECK(r.newell.cycles == 1078);
+        CHECK(r.newell.moves == 5297);
+        CHECK(r.newell.splits == 446);
+        CHECK(r.newell.pixel_ordered == 886);
         CHECK(r.newell.pair_tests < 300000);  // 1,041,204 with the full search, 458,298 with the memo alone
         if (algo == tool::Algo::newell) newell_rgb = r.rgb;
         else CHECK(r.rgb == newell_rgb);

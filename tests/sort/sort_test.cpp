@@ -81,8 +81,16 @@ TEST_CASE("a plane classifies its own vertices as on it and cuts a straddling tr
     outline_of(under, {}, near_outline);
     CHECK(!near_outline.rounded);
     CHECK(side_of(pl, near_outline) == -1);
-    near_outline.rounded = true;  // the same points in a piece's outline: within the slack, on the plane (+1)
-    CHECK(side_of(pl, near_outline) == 1);
+    // The same points in a piece's outline: within the rounding slack but off the plane, so the side is
+    // uncertain (0: Newell's trial cut decides). Taken as on the plane (+1, "wholly farther"), a piece of
+    // a nearly parallel stack that straddles the plane went first, and Newell drew it over a nearer one
+    // (a red team's stacks of 3 to 11 triangles 1e-4 apart). Points exactly on it still count as on it.
+    near_outline.rounded = true;
+    CHECK(side_of(pl, near_outline) == 0);
+    Outline on_outline;
+    outline_of(wall, {}, on_outline);
+    on_outline.rounded = true;
+    CHECK(side_of(pl, on_outline) == 1);
     ScreenPoly stick{{sv(-400, 0, 1u << 29), sv(400, 0, 3u << 29), sv(0, 300, 3u << 29)}, 0, 0, 0, 0, 0, 0, 7, kNotMoved, kNoCut, kPolyFront, 0};
     update_extents(stick);
     Outline whole;

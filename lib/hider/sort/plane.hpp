@@ -71,19 +71,41 @@ inline int64_t shift_down(const Int128& v, int s) {
 }  // namespace detail
 
 /// Side of an outline: -1 if every vertex is nearer than the plane or on it, +1 if every one is farther
-/// or on it (a polygon in the plane gives +1), 0 if it straddles the plane. A piece's outline, with cut
-/// points rounded to the grid, is classified within the rounding slack; a whole triangle exactly: its
-/// vertices are where the rasterizer draws them, and a surface closer to a parallel one than half a
-/// subpixel's depth slope must not be taken for coplanar (the later one would be drawn on top).
+/// or on it (a polygon in the plane gives +1), 0 if it straddles the plane or the side is not certain.
+/// A whole triangle is classified exactly: its vertices are where the rasterizer draws them, and a
+/// surface closer to a parallel one than half a subpixel's depth slope must not be taken for coplanar
+/// (the later one would be drawn on top). A piece's outline has cut points rounded to the grid: a
+/// vertex beyond the rounding slack has its side, one exactly on the plane is on it, and one within the
+/// slack but off the plane makes the side uncertain (0: the caller's trial cut decides). Taken for "on
+/// the plane", such vertices put a piece of a nearly parallel stack wholly behind a plane it crosses.
 inline int side_of(const ScreenPlane& pl, const Outline& o) {
-    const Int128 slack = o.rounded ? rounding_slack(pl) : Int128{};
-    bool near = false, far = false;
-    for (int i = 0; i < o.count; ++i) {
-        const int s = classify(pl, slack, o.v[i]);
-        near = near || s < 0;
-        far = far || s > 0;
+    bool near = false, far = false, unsure = false;
+    if (!o.rounded) {
+        for (int i = 0; i < o.count; ++i) {
+            const int s = classify(pl, Int128{}, o.v[i]);
+            near = near || s < 0;
+            far = far || s > 0;
+        }
+    } else if (pl.narrow) {  // as classify(): 64 bits, the same result
+        const int64_t slack = static_cast<int64_t>(rounding_slack(pl).lo);
+        for (int i = 0; i < o.count; ++i) {
+            const OutlinePoint& v = o.v[i];
+            const int64_t d = pl.a * (v.x - pl.origin.x) + pl.b * (v.y - pl.origin.y) + pl.c * (int64_t{v.z} - pl.origin.z);
+            far = far || d > slack;
+            near = near || d < -slack;
+            unsure = unsure || (d != 0 && d <= slack && d >= -slack);
+        }
+    } else {
+        const Int128 slack = rounding_slack(pl);
+        for (int i = 0; i < o.count; ++i) {
+            const Int128 d = side(pl, o.v[i]);
+            const bool beyond_far = (d - slack).sign() > 0, beyond_near = (d + slack).sign() < 0;
+            far = far || beyond_far;
+            near = near || beyond_near;
+            unsure = unsure || (!beyond_far && !beyond_near && d.sign() != 0);
+        }
     }
-    if (near && far) return 0;
+    if ((near && far) || unsure) return 0;
     return near ? -1 : 1;
 }
 
