@@ -1,7 +1,7 @@
 #!/bin/sh
 # Fails (exit 1) when a firmware ELF links soft-float, half-float or complex helpers, the heap,
-# operator new/delete, exceptions or RTTI, and names each offending symbol (docs/targets.md s.7:
-# the ERE there was checked against every libgcc symbol for v6-M, v7-M and rv32imac).
+# operator new/delete, exceptions or RTTI, and names each offending symbol;
+# the pattern was checked against every libgcc symbol for v6-M, v7-M and rv32imac.
 # Usage: check_firmware_symbols.sh <nm> <firmware.elf> [--delete-on-failure]
 # The POST_BUILD step passes --delete-on-failure so no rejected ELF is left for ctest to run
 # (Ninja, unlike Make, keeps the outputs of a failed step).
@@ -21,7 +21,7 @@ bad=$(printf '%s\n' "$symbols" | awk 'NF { print $NF }' | grep -E "$pattern" | g
 if [ -n "$bad" ]; then
     echo "$elf: forbidden symbols (soft-float, heap, exceptions or RTTI):" >&2
     printf '%s\n' "$bad" | sed 's/^/  /' >&2
-    echo "Keep float/double, new/malloc and exceptions out of firmware and lib/ (STYLE.md s.12)." >&2
+    echo "Keep float/double, new/malloc and exceptions out of firmware and lib/." >&2
     if [ -n "$delete" ]; then
         rm -f "$elf"
         echo "$elf deleted" >&2

@@ -1,4 +1,4 @@
-# Cross-build helpers for firmware/ (docs/targets.md s.4-8). Needs a toolchain file from toolchain/.
+# Cross-build helpers for firmware/. Needs a toolchain file from toolchain/.
 #   hider_add_firmware()        builds <name>.elf, checks symbols/size/stack, runs it under QEMU (ctest)
 #   hider_add_host_program()    builds a host program with the host C++ compiler (reference outputs)
 #   hider_compare_with_host()   ctest: the firmware's semihosted files == the host program's, byte for byte
@@ -23,7 +23,7 @@ if(NOT CMAKE_NM)
   message(FATAL_ERROR "CMAKE_NM not found for ${HIDER_TRIPLE}")
 endif()
 
-# The insncount TCG plugin is a host shared object (docs/targets.md s.6).
+# The insncount TCG plugin is a host shared object.
 set(HIDER_INSNCOUNT_DIR ${PROJECT_SOURCE_DIR}/tools/qemu-insncount CACHE INTERNAL "")
 set(HIDER_INSNCOUNT_PLUGIN ${CMAKE_BINARY_DIR}/tools/qemu-insncount/libinsncount.so CACHE INTERNAL "")
 add_custom_command(OUTPUT ${HIDER_INSNCOUNT_PLUGIN}

@@ -1,4 +1,4 @@
-# Compile flags of hider's own code (STYLE.md s.12), kept PRIVATE to hider's own targets: the
+# Compile flags of hider's own code, kept PRIVATE to hider's own targets: the
 # INTERFACE of hider::hider carries only the include directory and C++17, never these.
 #
 #   hider_target_flags(<target>...)   every hider target (library checks, ports, tools, tests,

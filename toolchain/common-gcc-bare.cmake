@@ -1,4 +1,4 @@
-# Shared part of the bare-metal GCC toolchain files (docs/targets.md s.8). The per-CPU file sets:
+# Shared part of the bare-metal GCC toolchain files. The per-CPU file sets:
 #   HIDER_TRIPLE        compiler prefix (arm-none-eabi, riscv64-unknown-elf)
 #   HIDER_ARCH          arm | riscv (selects startup code and linker script in firmware/)
 #   HIDER_TARGET        preset name: cm0plus | cm3 | rv32imac
@@ -17,7 +17,10 @@ list(APPEND CMAKE_TRY_COMPILE_PLATFORM_VARIABLES MCU_CPU HIDER_TRIPLE HIDER_ARCH
 
 set(_hider_common "${MCU_CPU} -ffreestanding -ffunction-sections -fdata-sections -fstack-usage")
 set(CMAKE_C_FLAGS_INIT "${_hider_common}")
-set(CMAKE_CXX_FLAGS_INIT "${_hider_common} -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit")
+# No -fno-exceptions/-fno-rtti here: hider's targets get them from hider_target_flags()
+# (cmake/hider_flags.cmake), and a project that borrows this file keeps its own choice. The two below
+# only spare bare metal the guard and atexit helpers that -nostdlib leaves undefined.
+set(CMAKE_CXX_FLAGS_INIT "${_hider_common} -fno-threadsafe-statics -fno-use-cxa-atexit")
 set(CMAKE_ASM_FLAGS_INIT "${MCU_CPU}")
 # The driver adds no start files and no libraries; libgcc (integer division, 64-bit helpers) goes last.
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-nostdlib -nostartfiles -Wl,--gc-sections")

@@ -1,4 +1,4 @@
-# RV32IMAC, ilp32 soft-float ABI (keep -march=rv32imac: "_zicsr" selects the rv64 multilib, targets.md s.3).
+# RV32IMAC, ilp32 soft-float ABI (keep -march=rv32imac: "_zicsr" selects the rv64 multilib).
 # big = virt (no F/D, no firmware: -bios none), small = sifive_e (E31, 16 KB DTIM at 0x80000000).
 set(CMAKE_SYSTEM_PROCESSOR riscv32)
 set(HIDER_TRIPLE riscv64-unknown-elf)

@@ -1,4 +1,4 @@
-// Benchmark markers (docs/targets.md s.6). noinline keeps the calls; no_icf and the distinct asm
+// Benchmark markers. noinline keeps the calls; no_icf and the distinct asm
 // comments stop GCC from folding the two identical bodies into one address.
 #include "common/bench.hpp"
 

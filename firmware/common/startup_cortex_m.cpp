@@ -1,5 +1,5 @@
 // Cortex-M (v6-M and v7-M) vector table. QEMU takes the initial SP and the reset PC from words 0
-// and 1 at address 0 and ignores the ELF entry (docs/targets.md s.4). Every other exception reports
+// and 1 at address 0 and ignores the ELF entry. Every other exception reports
 // its number (IPSR) and stacked PC through hider_fault() and exits with status 3.
 #include "common/runtime.hpp"
 

@@ -1,5 +1,5 @@
 // RISC-V (machine mode) entry. virt -bios none jumps to the ELF entry, sifive_e to 0x20400000:
-// the linker script puts .text.start first in ROM for both (docs/targets.md s.4). Traps report
+// the linker script puts .text.start first in ROM for both. Traps report
 // mcause and mepc through hider_fault() and exit with status 3.
 #include "common/runtime.hpp"
 

@@ -1,5 +1,5 @@
 // hider-bench targets: instruction counts (and, on the Cortex-M targets, the insncount plugin's cycle
-// estimates) on the cross targets (docs/targets.md s.6). For each preset build tree that exists
+// estimates) on the cross targets. For each preset build tree that exists
 // (DIR/cm0plus, DIR/cm3, DIR/rv32imac) it runs the spin, bands, teapot and spanbench firmware under QEMU
 // with the insncount plugin through tools/qemu-insncount/run.sh (which picks the machine per target and
 // turns the cycle model on for cm0plus and cm3), reads the bench_begin..bench_end regions (and each

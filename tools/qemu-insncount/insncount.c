@@ -1,4 +1,4 @@
-/* QEMU TCG plugin: exact guest instruction counts (docs/targets.md s.6) and, with model=, estimated
+/* QEMU TCG plugin: exact guest instruction counts and, with model=, estimated
  * cycles of a Cortex-M0+ or Cortex-M3 (arm_cycles.h). Counts the whole run and the region from the first
  * instruction at start= up to the first instruction at end=, summed over all pairs. Options:
  *   start=0x.. end=0x..   region bounds (Thumb bit ignored)

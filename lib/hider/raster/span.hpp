@@ -1,5 +1,5 @@
 // Inner loops over one row span [x0, x1). Setup happens outside; the body is a load, a compare,
-// two stores and adds (STYLE.md s.6). Depth is a uint32 stepped by dz per pixel (wrapping add);
+// two stores and adds. Depth is a uint32 stepped by dz per pixel (wrapping add);
 // the buffer stores its top bits (DepthTraits). Smaller = nearer; ties keep what is there.
 #pragma once
 #include <hider/frame.hpp>
