@@ -50,3 +50,19 @@ for want in 0.1 0.3 1.0 0.2; do
     fi
 done
 echo "find_package: 0.2 accepted; 0.1, 0.3, 1.0 refused"
+
+# Components: the ports this host install holds are accepted, one it lacks and an unknown name refused
+# with CMake's message naming the component.
+for comps in "hider port_host port_display" "port_semihost" "port_hsot"; do
+    dir=$work/components_${comps// /_}
+    mkdir -p "$dir"
+    printf 'cmake_minimum_required(VERSION 3.25)\nproject(c LANGUAGES CXX)\nfind_package(hider 0.2 CONFIG REQUIRED COMPONENTS %s)\n' "$comps" \
+        >"$dir/CMakeLists.txt"
+    if cmake -S "$dir" -B "$dir/build" -DCMAKE_PREFIX_PATH="$prefix" >"$dir/log" 2>&1; then
+        [ "$comps" = "hider port_host port_display" ] || { echo "FAIL: COMPONENTS $comps accepted" >&2; exit 1; }
+    else
+        [ "$comps" != "hider port_host port_display" ] || { cat "$dir/log" >&2; echo "FAIL: COMPONENTS $comps refused" >&2; exit 1; }
+        grep -q "$comps" "$dir/log" || { cat "$dir/log" >&2; echo "FAIL: the message does not name $comps" >&2; exit 1; }
+    fi
+done
+echo "find_package COMPONENTS: port_host, port_display accepted; port_semihost (not on a host), port_hsot refused"
