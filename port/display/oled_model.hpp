@@ -1,0 +1,157 @@
+// A simulated SSD1306 / SH1106 OLED module for PC simulation and tests: it takes the bytes an OledHal's
+// write() sends (control byte, then commands or display data), keeps the controller's RAM (8 pages of
+// 128 or 132 columns) and its addressing state as the datasheets describe them, and shows the pixel the
+// module lights at (x, y). What it does not know (an unknown command, a data byte past the RAM, display
+// data before any command) it counts in errors(). Freestanding, no heap, 1,080 bytes.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <display/ssd1306.hpp>
+
+namespace hider::port {
+
+class OledModel {
+public:
+    /// A module of `width` x `height` pixels whose first column is RAM column `column_offset`.
+    OledModel(OledController controller, uint8_t width, uint8_t height, uint8_t column_offset)
+        : controller_(controller), width_(width), height_(height), offset_(column_offset) {}
+
+    /// An OledHal whose write() feeds this model (no reset line, delays ignored); `fail_after` refuses every
+    /// transfer after that many (a lost I2C acknowledge), -1 never.
+    OledHal hal(int32_t fail_after = -1) {
+        fail_after_ = fail_after;
+        return OledHal{this, &bus_write, nullptr, [](void*, uint32_t) {}};
+    }
+
+    /// The bytes of one transfer: control 0x00 commands, 0x40 data (anything else counts as an error).
+    bool receive(uint8_t control, const uint8_t* bytes, size_t len) {
+        if (fail_after_ == 0) return false;
+        if (fail_after_ > 0) --fail_after_;
+        ++transfers_;
+        for (size_t i = 0; i < len; ++i) {
+            if (control == oled::kCommands) command_byte(bytes[i]);
+            else if (control == oled::kData) data_byte(bytes[i]);
+            else ++errors_;
+        }
+        return true;
+    }
+
+    /// Whether the module lights pixel (x, y) of its glass (x < width, y < height): the RAM bit the segment
+    /// and COM scan order put there. Off while the display is off.
+    bool pixel(uint32_t x, uint32_t y) const {
+        if (!on_ || x >= width_ || y >= height_) return false;
+        const uint32_t row = com_down_ ? y : height_ - 1 - y;           // C8: row 0 at the top
+        const uint32_t column = seg_remap_ ? x : width_ - 1 - x;        // A1: column 0 at the left
+        const uint32_t ram_row = (row + start_line_) % 64;
+        return ((ram_[ram_row / 8][offset_ + column] >> (ram_row % 8)) & 1u) != 0;
+    }
+
+    bool display_on() const { return on_; }
+    uint8_t multiplex() const { return multiplex_; }
+    uint8_t contrast() const { return contrast_; }
+    uint8_t com_pins() const { return com_pins_; }
+    bool pump_on() const { return pump_on_; }
+    uint32_t errors() const { return errors_; }
+    uint32_t transfers() const { return transfers_; }
+
+private:
+    static bool bus_write(void* user, uint8_t control, const uint8_t* bytes, size_t len) {
+        return static_cast<OledModel*>(user)->receive(control, bytes, len);
+    }
+    bool sh1106() const { return controller_ == OledController::sh1106; }
+    uint32_t ram_columns() const { return sh1106() ? 132u : 128u; }
+
+    // Parameter bytes a command takes (SSD1306 s.9 table 9-1; SH1106 s.9), -1 for a code it does not have.
+    int parameters(uint8_t c) const {
+        if (c <= 0x1F || (c >= 0x40 && c <= 0x7F) || (c >= 0xB0 && c <= 0xB7)) return 0;
+        switch (c) {
+        case 0xA0: case 0xA1: case 0xA4: case 0xA5: case 0xA6: case 0xA7: case 0xAE: case 0xAF: case 0xC0: case 0xC8:
+            return 0;
+        case 0x81: case 0xA8: case 0xD3: case 0xD5: case 0xD9: case 0xDA: case 0xDB: return 1;
+        case 0x2E: case 0x20: case 0x21: case 0x22: case 0x8D:
+            return sh1106() ? -1 : (c == 0x2E ? 0 : (c == 0x20 || c == 0x8D ? 1 : 2));
+        case 0xAD: return sh1106() ? 1 : -1;
+        default: return -1;
+        }
+    }
+
+    void command_byte(uint8_t b) {
+        if (pending_ != 0) {  // a parameter of pending_
+            params_[got_++] = b;
+            if (got_ == want_) apply(pending_);
+            return;
+        }
+        const int n = parameters(b);
+        if (n < 0) {
+            ++errors_;
+            return;
+        }
+        if (n == 0) {
+            apply(b);
+            return;
+        }
+        pending_ = b;
+        want_ = static_cast<uint8_t>(n);
+        got_ = 0;
+    }
+
+    void apply(uint8_t c) {
+        pending_ = 0;
+        const uint8_t p0 = params_[0], p1 = params_[1];
+        if (c <= 0x0F) column_ = static_cast<uint8_t>((column_ & 0xF0) | c);
+        else if (c <= 0x1F) column_ = static_cast<uint8_t>((column_ & 0x0F) | ((c & 0x0F) << 4));
+        else if (c >= 0x40 && c <= 0x7F) start_line_ = static_cast<uint8_t>(c - 0x40);
+        else if (c >= 0xB0 && c <= 0xB7) page_ = static_cast<uint8_t>(c - 0xB0);
+        else if (c == 0xA0 || c == 0xA1) seg_remap_ = c == 0xA1;
+        else if (c == 0xC0 || c == 0xC8) com_down_ = c == 0xC8;
+        else if (c == 0xAE || c == 0xAF) on_ = c == 0xAF;
+        else if (c == 0x81) contrast_ = p0;
+        else if (c == 0xA8) multiplex_ = static_cast<uint8_t>(p0 + 1);
+        else if (c == 0xDA) com_pins_ = p0;
+        else if (c == 0x8D) pump_on_ = (p0 & 0x04) != 0;
+        else if (c == 0xAD) pump_on_ = (p0 & 0x01) != 0;
+        else if (c == 0x20) mode_ = static_cast<uint8_t>(p0 & 3);
+        else if (c == 0x21) {
+            column_first_ = column_ = static_cast<uint8_t>(p0 & 0x7F);
+            column_last_ = static_cast<uint8_t>(p1 & 0x7F);
+        } else if (c == 0x22) {
+            page_first_ = page_ = static_cast<uint8_t>(p0 & 7);
+            page_last_ = static_cast<uint8_t>(p1 & 7);
+        }
+        // D3, D5, D9, DB, A4-A7, 2E: timing, offset and inversion settings the image here does not use
+    }
+
+    void data_byte(uint8_t b) {
+        if (column_ >= ram_columns()) {
+            ++errors_;
+            return;
+        }
+        ram_[page_][column_] = b;
+        if (!sh1106() && mode_ == 0) {  // SSD1306 horizontal addressing: wrap within the ranges
+            if (column_ == column_last_) {
+                column_ = column_first_;
+                page_ = page_ == page_last_ ? page_first_ : static_cast<uint8_t>((page_ + 1) & 7);
+            } else {
+                column_ = static_cast<uint8_t>(column_ + 1);
+            }
+        } else {
+            column_ = static_cast<uint8_t>(column_ + 1);  // page addressing: the page stays
+        }
+    }
+
+    OledController controller_;
+    uint8_t width_, height_, offset_;
+    uint8_t ram_[8][132] = {};
+    uint8_t params_[2] = {};
+    uint8_t pending_ = 0, want_ = 0, got_ = 0;
+    uint8_t mode_ = 2;  // reset state: page addressing
+    uint8_t column_ = 0, page_ = 0, column_first_ = 0, column_last_ = 127, page_first_ = 0, page_last_ = 7;
+    uint8_t start_line_ = 0, contrast_ = 0x7F, multiplex_ = 64, com_pins_ = 0x12;
+    bool seg_remap_ = false, com_down_ = false, on_ = false, pump_on_ = false;
+    int32_t fail_after_ = -1;
+    uint32_t errors_ = 0, transfers_ = 0;
+};
+
+}  // namespace hider::port

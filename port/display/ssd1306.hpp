@@ -1,0 +1,229 @@
+// Driver for 1-bit OLED controllers SSD1306 and SH1106 (128x64 and 128x32 modules) over a one-function
+// HAL, and a BandSink that turns any band renderer's RGB565 rows into lit pixels by an 8x8 ordered
+// dither of their luma. A byte of controller RAM holds 8 rows of one column (a page); the sink collects
+// each page in a width-byte buffer, so bands of any height work. Commands and init sequences: Solomon
+// Systech SSD1306 datasheet rev 1.1 s.9-10 and its software initialisation flow; Sino Wealth SH1106
+// datasheet v2.3 s.9 (page addressing only, 132-column RAM, DC-DC control 0xAD).
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <display/sink.hpp>
+#include <hider/frame.hpp>
+
+namespace hider::port {
+
+/// The bus. `write` sends `len` bytes as one transfer after the control byte `control`: 0x00 for a
+/// command stream, 0x40 for display data (on I2C the control byte goes out after the address, exactly
+/// these values; an SPI board drives D/C low for 0x00 and high for 0x40 and sends only the bytes). It
+/// returns false when the transfer failed (no I2C acknowledge); the driver then stops and reports it.
+/// set_reset may be null when RES is not wired (most I2C modules); delay_ms is required.
+struct OledHal {
+    void* user;
+    bool (*write)(void* user, uint8_t control, const uint8_t* bytes, size_t len);
+    void (*set_reset)(void* user, bool high);
+    void (*delay_ms)(void* user, uint32_t ms);
+};
+
+enum class OledController : uint8_t { ssd1306, sh1106 };
+
+/// Panel geometry: width <= 128 (SSD1306) or <= 132 (SH1106) columns starting at RAM column `column_offset`
+/// (SH1106 modules of 128 columns: 2), height 64 or 32 rows. `flip` rotates the image by 180 degrees
+/// (segment and COM scan order); `external_vcc` leaves the charge pump off.
+struct OledConfig {
+    OledController controller;
+    uint8_t width;
+    uint8_t height;
+    uint8_t column_offset;
+    uint8_t contrast;
+    bool flip;
+    bool external_vcc;
+};
+
+namespace oled {
+constexpr uint8_t kCommands = 0x00;  // control byte: command stream
+constexpr uint8_t kData = 0x40;      // control byte: display data stream
+constexpr uint8_t kDisplayOff = 0xAE;
+constexpr uint8_t kDisplayOn = 0xAF;
+constexpr uint8_t kContrast = 0x81;
+constexpr uint8_t kMemoryMode = 0x20;   // SSD1306: 0 horizontal, 1 vertical, 2 page addressing
+constexpr uint8_t kColumnRange = 0x21;  // SSD1306, horizontal mode: first and last column
+constexpr uint8_t kPageRange = 0x22;    // SSD1306, horizontal mode: first and last page
+constexpr uint8_t kPageStart = 0xB0;    // page addressing: | page
+constexpr uint8_t kColumnLow = 0x00;    // page addressing: | low nibble of the column
+constexpr uint8_t kColumnHigh = 0x10;   // page addressing: | high nibble of the column
+constexpr uint8_t kStartLine = 0x40;
+constexpr uint8_t kSegmentRemap = 0xA1;  // column 0 on the right edge's segment (A0: left)
+constexpr uint8_t kComScanDown = 0xC8;   // COM scan from the last row (C0: from row 0)
+constexpr uint8_t kMultiplex = 0xA8;
+constexpr uint8_t kDisplayOffset = 0xD3;
+constexpr uint8_t kClock = 0xD5;
+constexpr uint8_t kPrecharge = 0xD9;
+constexpr uint8_t kComPins = 0xDA;
+constexpr uint8_t kVcomDeselect = 0xDB;
+constexpr uint8_t kChargePump = 0x8D;   // SSD1306: 0x14 on, 0x10 off
+constexpr uint8_t kDcDc = 0xAD;         // SH1106: 0x8B on, 0x8A off
+constexpr uint8_t kFollowRam = 0xA4;
+constexpr uint8_t kNormal = 0xA6;
+constexpr uint8_t kScrollOff = 0x2E;
+constexpr uint32_t kResetLowMs = 2;     // RES# low >= 3 us
+constexpr uint32_t kPowerOnMs = 100;    // VCC / DC-DC settle before display on (SSD1306 s.8.9: 100 ms)
+
+/// Threshold of the 8x8 ordered dither at (x, y): the Bayer index times 4 plus 2, so luma 0 lights
+/// nothing, 255 everything, and luma v lights about v/256 of a flat area.
+constexpr uint8_t dither_threshold(uint32_t x, uint32_t y) {
+    // Bayer index from the bit-reversed interleave of (x ^ y) and y.
+    const uint32_t a = x ^ y, b = y;
+    const uint32_t index = ((a & 1u) << 5) | ((b & 1u) << 4) | ((a & 2u) << 2) | ((b & 2u) << 1) |
+                           ((a & 4u) >> 1) | ((b & 4u) >> 2);
+    return static_cast<uint8_t>(index * 4u + 2u);
+}
+
+/// Whether an RGB565 pixel at (x, y) is lit: Grey8Format's luma of its RGB888 expansion above the threshold.
+constexpr bool lit(uint16_t rgb565, uint32_t x, uint32_t y) {
+    return Grey8Format::pack(Rgb565Format::unpack(rgb565)) > dither_threshold(x, y);
+}
+}  // namespace oled
+
+/// One panel. Usage: init(), then hand sink() to a band renderer (or write_page() yourself). Every
+/// function returns false and stops at the first transfer the HAL refuses; init() must run again after
+/// that. 16 bytes plus the page buffer (width bytes, at most 132).
+class Oled {
+public:
+    /// Copies the HAL and config; sends nothing until init().
+    Oled(const OledHal& hal, const OledConfig& config) : hal_(hal), config_(config), band_(config.width, config.height) {}
+
+    /// Pulses RES if wired and sends the controller's init sequence, display on at the end; false for an
+    /// incomplete HAL, a geometry the controller does not have, or a refused transfer.
+    [[nodiscard]] bool init() {
+        initialized_ = false;
+        if (band_.in_frame()) (void)band_.end_frame();
+        if (hal_.write == nullptr || hal_.delay_ms == nullptr || !geometry_ok()) return false;
+        if (hal_.set_reset != nullptr) {
+            hal_.set_reset(hal_.user, false);
+            hal_.delay_ms(hal_.user, oled::kResetLowMs);
+            hal_.set_reset(hal_.user, true);
+            hal_.delay_ms(hal_.user, oled::kResetLowMs);
+        }
+        const bool sh = config_.controller == OledController::sh1106;
+        const uint8_t seg = config_.flip ? 0xA0 : oled::kSegmentRemap, com = config_.flip ? 0xC0 : oled::kComScanDown;
+        const uint8_t pins = config_.height == 64 ? 0x12 : 0x02;  // alternative COM pins for 64 rows, sequential for 32
+        const uint8_t pump0 = sh ? oled::kDcDc : oled::kChargePump;
+        const uint8_t pump1 = sh ? (config_.external_vcc ? 0x8A : 0x8B) : (config_.external_vcc ? 0x10 : 0x14);
+        const uint8_t sequence[] = {oled::kDisplayOff, oled::kClock, 0x80, oled::kMultiplex,
+                                    static_cast<uint8_t>(config_.height - 1), oled::kDisplayOffset, 0x00,
+                                    oled::kStartLine, pump0, pump1, seg, com, oled::kComPins, pins, oled::kContrast,
+                                    config_.contrast, oled::kPrecharge, static_cast<uint8_t>(config_.external_vcc ? 0x22 : 0xF1),
+                                    oled::kVcomDeselect, 0x40, oled::kFollowRam, oled::kNormal};
+        if (!hal_.write(hal_.user, oled::kCommands, sequence, sizeof sequence)) return false;
+        if (!sh) {  // SSD1306: horizontal addressing (SH1106 has only page addressing), no scrolling
+            const uint8_t mode[] = {oled::kMemoryMode, 0x00, oled::kScrollOff};
+            if (!hal_.write(hal_.user, oled::kCommands, mode, sizeof mode)) return false;
+        }
+        hal_.delay_ms(hal_.user, oled::kPowerOnMs);
+        const uint8_t on = oled::kDisplayOn;
+        if (!hal_.write(hal_.user, oled::kCommands, &on, 1)) return false;
+        initialized_ = true;
+        return true;
+    }
+
+    /// Whether init() succeeded and no transfer failed since.
+    bool initialized() const { return initialized_; }
+    /// The panel configuration.
+    const OledConfig& config() const { return config_; }
+
+    /// Writes `bits` (width bytes: bit k of byte x lights row 8 page + k of column x) to page `page` at the
+    /// panel's left edge; refused before init or past the panel's pages.
+    [[nodiscard]] bool write_page(uint8_t page, const uint8_t* bits) {
+        if (!initialized_ || bits == nullptr || page >= config_.height / 8) return false;
+        const uint8_t c = config_.column_offset;
+        bool sent;
+        if (config_.controller == OledController::sh1106) {
+            const uint8_t address[] = {static_cast<uint8_t>(oled::kPageStart | page),
+                                       static_cast<uint8_t>(oled::kColumnLow | (c & 0x0F)),
+                                       static_cast<uint8_t>(oled::kColumnHigh | (c >> 4))};
+            sent = hal_.write(hal_.user, oled::kCommands, address, sizeof address);
+        } else {
+            const uint8_t address[] = {oled::kColumnRange, c, static_cast<uint8_t>(c + config_.width - 1), oled::kPageRange,
+                                       page, page};
+            sent = hal_.write(hal_.user, oled::kCommands, address, sizeof address);
+        }
+        sent = sent && hal_.write(hal_.user, oled::kData, bits, config_.width);
+        if (!sent) initialized_ = false;
+        return sent;
+    }
+
+    /// A BandSink for frames of exactly the panel's size, rows dithered as oled::lit() says; it borrows
+    /// this object, which must stay at one address and outlive the sink. begin_frame refuses before init
+    /// and other sizes; write_rows refuses a call out of order or a failed transfer (then init() again), and
+    /// end_frame then fails too.
+    BandSink sink() { return BandSink{this, &sink_begin_frame, &sink_write_rows, &sink_end_frame}; }
+    /// Why the sink last refused a call (BandStatus::ok after an accepted one; not_ready for a failed
+    /// transfer or before init).
+    BandStatus last_band_status() const { return last_band_status_; }
+
+private:
+    bool geometry_ok() const {
+        const bool sh = config_.controller == OledController::sh1106;
+        if (!sh && config_.controller != OledController::ssd1306) return false;
+        if (config_.height != 64 && config_.height != 32) return false;
+        return config_.width > 0 && uint32_t{config_.column_offset} + config_.width <= (sh ? 132u : 128u);
+    }
+
+    static bool sink_begin_frame(void* user, uint16_t width, uint16_t height) {
+        Oled& o = *static_cast<Oled*>(user);
+        if (!o.initialized_) {
+            o.last_band_status_ = BandStatus::not_ready;
+            return false;
+        }
+        if (width != o.config_.width || height != o.config_.height) {
+            o.last_band_status_ = BandStatus::bad_size;
+            return false;
+        }
+        o.last_band_status_ = o.band_.begin_frame(width, height);
+        o.frame_failed_ = false;
+        for (uint8_t& b : o.page_) b = 0;
+        return o.last_band_status_ == BandStatus::ok;
+    }
+
+    static bool sink_write_rows(void* user, uint16_t y0, uint16_t rows, const uint16_t* rgb565, uint32_t stride_px) {
+        Oled& o = *static_cast<Oled*>(user);
+        o.last_band_status_ = o.band_.write_rows(y0, rows, rgb565, stride_px);
+        if (o.last_band_status_ != BandStatus::ok) return false;
+        const uint32_t width = o.config_.width;
+        for (uint32_t r = 0; r < rows; ++r) {
+            const uint32_t y = uint32_t{y0} + r;
+            const uint16_t* row = rgb565 + size_t{r} * stride_px;
+            const uint8_t bit = static_cast<uint8_t>(1u << (y & 7u));
+            for (uint32_t x = 0; x < width; ++x)
+                if (oled::lit(row[x], x, y)) o.page_[x] = static_cast<uint8_t>(o.page_[x] | bit);
+            if ((y & 7u) == 7u) {  // the page is complete (heights are multiples of 8)
+                if (!o.write_page(static_cast<uint8_t>(y >> 3), o.page_)) {
+                    o.frame_failed_ = true;
+                    o.last_band_status_ = BandStatus::not_ready;
+                    return false;
+                }
+                for (uint32_t x = 0; x < width; ++x) o.page_[x] = 0;
+            }
+        }
+        return true;
+    }
+
+    static bool sink_end_frame(void* user) {
+        Oled& o = *static_cast<Oled*>(user);
+        o.last_band_status_ = o.band_.end_frame();
+        if (o.frame_failed_) o.last_band_status_ = BandStatus::not_ready;  // a page never reached the panel
+        return o.last_band_status_ == BandStatus::ok;
+    }
+
+    OledHal hal_;
+    OledConfig config_;
+    BandSequenceChecker band_;
+    BandStatus last_band_status_ = BandStatus::ok;
+    bool initialized_ = false;
+    bool frame_failed_ = false;
+    uint8_t page_[132] = {};
+};
+
+}  // namespace hider::port

@@ -1,0 +1,229 @@
+// Tests for port/display/ssd1306.hpp (the OLED driver and its dithering sink) against the simulated
+// module of port/display/oled_model.hpp, and of that model against byte sequences written out by hand
+// from the datasheets. Expected images come from this file's own dither (the published 8x8 Bayer matrix
+// and BT.601 luma), not from the driver's.
+#include <display/oled_model.hpp>
+#include <display/ssd1306.hpp>
+
+#include <doctest/doctest.h>
+
+#include <random>
+#include <vector>
+
+using hider::port::BandSink;
+using hider::port::BandStatus;
+using hider::port::Oled;
+using hider::port::OledConfig;
+using hider::port::OledController;
+using hider::port::OledModel;
+
+namespace {
+
+// The 8x8 Bayer index matrix as printed (row y, column x).
+constexpr int kBayer[8][8] = {{0, 32, 8, 40, 2, 34, 10, 42},  {48, 16, 56, 24, 50, 18, 58, 26},
+                              {12, 44, 4, 36, 14, 46, 6, 38}, {60, 28, 52, 20, 62, 30, 54, 22},
+                              {3, 35, 11, 43, 1, 33, 9, 41},  {51, 19, 59, 27, 49, 17, 57, 25},
+                              {15, 47, 7, 39, 13, 45, 5, 37}, {63, 31, 55, 23, 61, 29, 53, 21}};
+
+bool expected_lit(uint16_t p, int x, int y) {
+    const int r5 = p >> 11, g6 = (p >> 5) & 63, b5 = p & 31;
+    const int r = (r5 << 3) | (r5 >> 2), g = (g6 << 2) | (g6 >> 4), b = (b5 << 3) | (b5 >> 2);
+    const int luma = (77 * r + 150 * g + 29 * b) >> 8;
+    return luma > kBayer[y & 7][x & 7] * 4 + 2;
+}
+
+OledConfig config(OledController c, uint8_t width, uint8_t height, uint8_t offset, bool flip = false) {
+    return OledConfig{c, width, height, offset, 0xCF, flip, false};
+}
+
+// Sends `frame` (width x height RGB565) through the sink in bands of `rows`.
+bool send(BandSink sink, const std::vector<uint16_t>& frame, int width, int height, int rows) {
+    if (!sink.begin_frame(sink.user, static_cast<uint16_t>(width), static_cast<uint16_t>(height))) return false;
+    bool ok = true;
+    for (int y = 0; y < height && ok; y += rows) {
+        const int n = rows < height - y ? rows : height - y;
+        ok = sink.write_rows(sink.user, static_cast<uint16_t>(y), static_cast<uint16_t>(n), frame.data() + y * width,
+                             static_cast<uint32_t>(width));
+    }
+    return sink.end_frame(sink.user) && ok;
+}
+
+}  // namespace
+
+TEST_CASE("the OLED dither threshold is the 8x8 Bayer matrix, 4 levels a step, centred") {
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x)
+            CHECK(int{hider::port::oled::dither_threshold(static_cast<uint32_t>(x), static_cast<uint32_t>(y))} ==
+                  kBayer[y & 7][x & 7] * 4 + 2);
+    // Flat greys light their share of an 8x8 tile: luma 0 none, 255 all, 128 half.
+    for (const int grey : {0, 1, 64, 128, 200, 255}) {
+        const uint16_t p = hider::Rgb565Format::pack({static_cast<uint8_t>(grey), static_cast<uint8_t>(grey), static_cast<uint8_t>(grey)});
+        const int luma = hider::Grey8Format::pack(hider::Rgb565Format::unpack(p));
+        int n = 0;
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 8; ++x) n += hider::port::oled::lit(p, static_cast<uint32_t>(x), static_cast<uint32_t>(y));
+        CHECK(n == (luma + 1) / 4);  // thresholds 2, 6, .., 254: luma v exceeds (v + 1) / 4 of them
+    }
+}
+
+TEST_CASE("the OLED model follows hand-written datasheet sequences") {
+    SUBCASE("SSD1306: horizontal addressing wraps within the column and page ranges") {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        const uint8_t cmds[] = {0xA8, 0x3F, 0xA1, 0xC8, 0x20, 0x00, 0x21, 10, 11, 0x22, 2, 3, 0xAF};
+        REQUIRE(m.receive(0x00, cmds, sizeof cmds));
+        const uint8_t data[] = {0x01, 0x80, 0xFF, 0x00, 0x02};  // (10,p2) (11,p2) (10,p3) (11,p3) (10,p2) again
+        REQUIRE(m.receive(0x40, data, sizeof data));
+        CHECK(m.errors() == 0);
+        CHECK(m.display_on());
+        CHECK(m.pixel(10, 17));   // 0x02 replaced 0x01 at column 10 page 2: bit 1 = row 17
+        CHECK(!m.pixel(10, 16));
+        CHECK(m.pixel(11, 23));   // 0x80 at column 11 page 2: row 23
+        for (int y = 24; y < 32; ++y) CHECK(m.pixel(10, static_cast<uint32_t>(y)));
+        CHECK(!m.pixel(11, 24));
+    }
+    SUBCASE("SSD1306: A0/C0 show the RAM rotated by 180 degrees") {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        const uint8_t cmds[] = {0xA0, 0xC0, 0x20, 0x00, 0x21, 0, 127, 0x22, 0, 7, 0xAF};
+        REQUIRE(m.receive(0x00, cmds, sizeof cmds));
+        const uint8_t one = 0x01;  // RAM column 0, row 0
+        REQUIRE(m.receive(0x40, &one, 1));
+        CHECK(m.pixel(127, 63));
+        CHECK(!m.pixel(0, 0));
+    }
+    SUBCASE("SH1106: page addressing from the column nibbles, 132 RAM columns") {
+        OledModel m(OledController::sh1106, 128, 64, 2);
+        const uint8_t cmds[] = {0xA1, 0xC8, 0xB5, 0x02, 0x10, 0xAF};
+        REQUIRE(m.receive(0x00, cmds, sizeof cmds));
+        const uint8_t data[] = {0x10, 0x20};
+        REQUIRE(m.receive(0x40, data, sizeof data));
+        CHECK(m.pixel(0, 44));  // RAM column 2 = glass column 0; page 5 bit 4 = row 44
+        CHECK(m.pixel(1, 45));
+        CHECK(m.errors() == 0);
+        const uint8_t horizontal[] = {0x20, 0x00};  // SSD1306 only
+        REQUIRE(m.receive(0x00, horizontal, sizeof horizontal));
+        CHECK(m.errors() >= 1);
+    }
+    SUBCASE("unknown control bytes, unknown commands and data past the RAM count as errors") {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        const uint8_t x = 0xFF;
+        REQUIRE(m.receive(0x80, &x, 1));
+        REQUIRE(m.receive(0x00, &x, 1));
+        CHECK(m.errors() == 2);
+    }
+}
+
+TEST_CASE("the OLED driver's init sequence sets up each controller and geometry") {
+    struct Case {
+        OledController c;
+        uint8_t w, h, offset;
+        bool external;
+    };
+    for (const Case k : {Case{OledController::ssd1306, 128, 64, 0, false}, Case{OledController::ssd1306, 128, 32, 0, false},
+                         Case{OledController::ssd1306, 96, 64, 16, true}, Case{OledController::sh1106, 128, 64, 2, false},
+                         Case{OledController::sh1106, 132, 32, 0, true}}) {
+        OledModel m(k.c, k.w, k.h, k.offset);
+        OledConfig cfg = config(k.c, k.w, k.h, k.offset);
+        cfg.external_vcc = k.external;
+        Oled oled(m.hal(), cfg);
+        REQUIRE(oled.init());
+        CHECK(oled.initialized());
+        CHECK(m.errors() == 0);
+        CHECK(m.display_on());
+        CHECK(int{m.multiplex()} == k.h);
+        CHECK(int{m.com_pins()} == (k.h == 64 ? 0x12 : 0x02));
+        CHECK(int{m.contrast()} == 0xCF);
+        CHECK(m.pump_on() == !k.external);
+    }
+    // Geometries the controllers do not have: refused before any byte.
+    for (const OledConfig bad : {config(OledController::ssd1306, 128, 48, 0), config(OledController::ssd1306, 129, 64, 0),
+                                 config(OledController::ssd1306, 128, 64, 1), config(OledController::sh1106, 128, 64, 5),
+                                 config(OledController::ssd1306, 0, 64, 0), config(static_cast<OledController>(7), 128, 64, 0)}) {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        Oled oled(m.hal(), bad);
+        CHECK(!oled.init());
+        CHECK(m.transfers() == 0);
+    }
+    hider::port::OledHal no_write{nullptr, nullptr, nullptr, [](void*, uint32_t) {}};
+    Oled oled(no_write, config(OledController::ssd1306, 128, 64, 0));
+    CHECK(!oled.init());
+}
+
+TEST_CASE("the OLED sink lights exactly the dithered pixels, for any band height, on every geometry") {
+    std::mt19937 rng(0x0135u);
+    struct Case {
+        OledController c;
+        uint8_t w, h, offset;
+        bool flip;
+    };
+    long compared = 0;
+    for (const Case k : {Case{OledController::ssd1306, 128, 64, 0, false}, Case{OledController::ssd1306, 128, 64, 0, true},
+                         Case{OledController::ssd1306, 128, 32, 0, false}, Case{OledController::ssd1306, 64, 32, 32, false},
+                         Case{OledController::sh1106, 128, 64, 2, false}, Case{OledController::sh1106, 128, 64, 2, true}}) {
+        std::vector<uint16_t> frame(size_t{k.w} * k.h);
+        for (int trial = 0; trial < 3; ++trial) {
+            // random pixels, then smooth gradients (where the dither pattern shows)
+            for (size_t i = 0; i < frame.size(); ++i) {
+                const int x = static_cast<int>(i % k.w), y = static_cast<int>(i / k.w);
+                frame[i] = trial == 0 ? static_cast<uint16_t>(rng())
+                                      : hider::Rgb565Format::pack({static_cast<uint8_t>(x * 2), static_cast<uint8_t>(y * 4),
+                                                                   static_cast<uint8_t>(trial == 1 ? 0 : 255 - x)});
+            }
+            for (const int rows : {1, 3, 6, 8, 13, int{k.h}}) {
+                OledModel m(k.c, k.w, k.h, k.offset);
+                Oled oled(m.hal(), config(k.c, k.w, k.h, k.offset, k.flip));
+                REQUIRE(oled.init());
+                REQUIRE(send(oled.sink(), frame, k.w, k.h, rows));
+                CHECK(oled.last_band_status() == BandStatus::ok);
+                CHECK(m.errors() == 0);
+                long wrong = 0;
+                for (int y = 0; y < k.h; ++y)
+                    for (int x = 0; x < k.w; ++x) {
+                        // a flipped module shows the frame turned by 180 degrees on its glass
+                        const int gx = k.flip ? k.w - 1 - x : x, gy = k.flip ? k.h - 1 - y : y;
+                        wrong += m.pixel(static_cast<uint32_t>(gx), static_cast<uint32_t>(gy)) !=
+                                 expected_lit(frame[static_cast<size_t>(y * k.w + x)], x, y);
+                        ++compared;
+                    }
+                INFO("controller " << int(k.c) << " " << int(k.w) << "x" << int(k.h) << " flip " << k.flip << " rows " << rows);
+                CHECK(wrong == 0);
+            }
+        }
+    }
+    CHECK(compared == 3 * 6 * (128 * 64 * 4 + 128 * 32 + 64 * 32));
+}
+
+TEST_CASE("the OLED driver stops at a refused transfer and refuses frames it cannot show") {
+    const std::vector<uint16_t> white(128 * 64, 0xFFFF);
+    // init sends 3 transfers on the SSD1306; a frame 2 per page
+    for (int fail_after = 0; fail_after < 3 + 16; ++fail_after) {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        Oled oled(m.hal(fail_after), config(OledController::ssd1306, 128, 64, 0));
+        if (fail_after < 3) {
+            CHECK(!oled.init());
+            CHECK(!oled.initialized());
+            continue;
+        }
+        REQUIRE(oled.init());
+        CHECK(!send(oled.sink(), white, 128, 64, 8));
+        CHECK(oled.last_band_status() == BandStatus::not_ready);
+        CHECK(!oled.initialized());  // init() again before the next frame
+        const uint8_t page[128] = {};
+        CHECK(!oled.write_page(0, page));
+    }
+    OledModel m(OledController::ssd1306, 128, 64, 0);
+    Oled oled(m.hal(), config(OledController::ssd1306, 128, 64, 0));
+    BandSink sink = oled.sink();
+    CHECK(!sink.begin_frame(sink.user, 128, 64));  // before init
+    CHECK(oled.last_band_status() == BandStatus::not_ready);
+    REQUIRE(oled.init());
+    CHECK(!sink.begin_frame(sink.user, 128, 32));  // not the panel's size
+    CHECK(oled.last_band_status() == BandStatus::bad_size);
+    REQUIRE(sink.begin_frame(sink.user, 128, 64));
+    CHECK(!sink.write_rows(sink.user, 8, 8, white.data(), 128));  // out of order
+    CHECK(oled.last_band_status() == BandStatus::out_of_order);
+    CHECK(!sink.end_frame(sink.user));  // incomplete
+    CHECK(oled.last_band_status() == BandStatus::incomplete);
+    const uint8_t page[128] = {};
+    CHECK(!oled.write_page(8, page));  // past the 8 pages
+    CHECK(oled.write_page(7, page));
+}
