@@ -86,7 +86,8 @@ constexpr bool lit(uint16_t rgb565, uint32_t x, uint32_t y) {
 }
 }  // namespace oled
 
-/// One panel. Usage: init(), then hand sink() to a band renderer (or write_page() yourself). Every
+/// One panel. Usage: init(), then begin_frame(), write_rows() per band and end_frame() (or hand sink() to
+/// a band renderer, or write_page() yourself). Every
 /// function returns false and stops at the first transfer the HAL refuses; init() must run again after
 /// that. 16 bytes plus the page buffer (width bytes, at most 132).
 class Oled {
@@ -154,13 +155,54 @@ public:
         return sent;
     }
 
-    /// A BandSink for frames of exactly the panel's size, rows dithered as oled::lit() says; it borrows
-    /// this object, which must stay at one address and outlive the sink. begin_frame refuses before init
-    /// and other sizes; write_rows refuses a call out of order or a failed transfer (then init() again), and
-    /// end_frame then fails too.
+    /// Opens a frame of exactly the panel's size, whose rows write_rows() dithers as oled::lit() says and
+    /// sends page by page; refused (last_band_status() says why) before init, for another size or while a
+    /// frame is open.
+    [[nodiscard]] bool begin_frame(uint16_t width, uint16_t height) {
+        if (!initialized_) return refuse(BandStatus::not_ready);
+        if (width != config_.width || height != config_.height) return refuse(BandStatus::bad_size);
+        last_band_status_ = band_.begin_frame(width, height);
+        frame_failed_ = false;
+        for (uint8_t& b : page_) b = 0;
+        return last_band_status_ == BandStatus::ok;
+    }
+
+    /// Takes rows [y0, y0 + rows) of RGB565 pixels (row r at rgb565 + r * stride_px), which must follow the
+    /// previous call's rows; sends each page as its last row arrives. Refused out of order, and for a
+    /// failed transfer (then init() again; end_frame() fails too).
+    [[nodiscard]] bool write_rows(uint16_t y0, uint16_t rows, const uint16_t* rgb565, uint32_t stride_px) {
+        last_band_status_ = band_.write_rows(y0, rows, rgb565, stride_px);
+        if (last_band_status_ != BandStatus::ok) return false;
+        const uint32_t width = config_.width;
+        for (uint32_t r = 0; r < rows; ++r) {
+            const uint32_t y = uint32_t{y0} + r;
+            const uint16_t* row = rgb565 + size_t{r} * stride_px;
+            const uint8_t bit = static_cast<uint8_t>(1u << (y & 7u));
+            for (uint32_t x = 0; x < width; ++x)
+                if (oled::lit(row[x], x, y)) page_[x] = static_cast<uint8_t>(page_[x] | bit);
+            if ((y & 7u) == 7u) {  // the page is complete (heights are multiples of 8)
+                if (!write_page(static_cast<uint8_t>(y >> 3), page_)) {
+                    frame_failed_ = true;
+                    return refuse(BandStatus::not_ready);
+                }
+                for (uint32_t x = 0; x < width; ++x) page_[x] = 0;
+            }
+        }
+        return true;
+    }
+
+    /// Closes the frame; false when a row is missing (incomplete) or a page never reached the panel (not_ready).
+    [[nodiscard]] bool end_frame() {
+        last_band_status_ = band_.end_frame();
+        if (frame_failed_) last_band_status_ = BandStatus::not_ready;
+        return last_band_status_ == BandStatus::ok;
+    }
+
+    /// The three calls above as a BandSink for band renderers; it borrows this object, which must stay at one
+    /// address and outlive the sink.
     BandSink sink() { return BandSink{this, &sink_begin_frame, &sink_write_rows, &sink_end_frame}; }
-    /// Why the sink last refused a call (BandStatus::ok after an accepted one; not_ready for a failed
-    /// transfer or before init).
+    /// Why the frame calls last refused (BandStatus::ok after an accepted one; not_ready for a failed transfer
+    /// or before init).
     BandStatus last_band_status() const { return last_band_status_; }
 
 private:
@@ -171,51 +213,17 @@ private:
         return config_.width > 0 && uint32_t{config_.column_offset} + config_.width <= (sh ? 132u : 128u);
     }
 
+    bool refuse(BandStatus why) {
+        last_band_status_ = why;
+        return false;
+    }
     static bool sink_begin_frame(void* user, uint16_t width, uint16_t height) {
-        Oled& o = *static_cast<Oled*>(user);
-        if (!o.initialized_) {
-            o.last_band_status_ = BandStatus::not_ready;
-            return false;
-        }
-        if (width != o.config_.width || height != o.config_.height) {
-            o.last_band_status_ = BandStatus::bad_size;
-            return false;
-        }
-        o.last_band_status_ = o.band_.begin_frame(width, height);
-        o.frame_failed_ = false;
-        for (uint8_t& b : o.page_) b = 0;
-        return o.last_band_status_ == BandStatus::ok;
+        return static_cast<Oled*>(user)->begin_frame(width, height);
     }
-
     static bool sink_write_rows(void* user, uint16_t y0, uint16_t rows, const uint16_t* rgb565, uint32_t stride_px) {
-        Oled& o = *static_cast<Oled*>(user);
-        o.last_band_status_ = o.band_.write_rows(y0, rows, rgb565, stride_px);
-        if (o.last_band_status_ != BandStatus::ok) return false;
-        const uint32_t width = o.config_.width;
-        for (uint32_t r = 0; r < rows; ++r) {
-            const uint32_t y = uint32_t{y0} + r;
-            const uint16_t* row = rgb565 + size_t{r} * stride_px;
-            const uint8_t bit = static_cast<uint8_t>(1u << (y & 7u));
-            for (uint32_t x = 0; x < width; ++x)
-                if (oled::lit(row[x], x, y)) o.page_[x] = static_cast<uint8_t>(o.page_[x] | bit);
-            if ((y & 7u) == 7u) {  // the page is complete (heights are multiples of 8)
-                if (!o.write_page(static_cast<uint8_t>(y >> 3), o.page_)) {
-                    o.frame_failed_ = true;
-                    o.last_band_status_ = BandStatus::not_ready;
-                    return false;
-                }
-                for (uint32_t x = 0; x < width; ++x) o.page_[x] = 0;
-            }
-        }
-        return true;
+        return static_cast<Oled*>(user)->write_rows(y0, rows, rgb565, stride_px);
     }
-
-    static bool sink_end_frame(void* user) {
-        Oled& o = *static_cast<Oled*>(user);
-        o.last_band_status_ = o.band_.end_frame();
-        if (o.frame_failed_) o.last_band_status_ = BandStatus::not_ready;  // a page never reached the panel
-        return o.last_band_status_ == BandStatus::ok;
-    }
+    static bool sink_end_frame(void* user) { return static_cast<Oled*>(user)->end_frame(); }
 
     OledHal hal_;
     OledConfig config_;
