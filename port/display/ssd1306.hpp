@@ -84,6 +84,36 @@ constexpr uint8_t dither_threshold(uint32_t x, uint32_t y) {
 constexpr bool lit(uint16_t rgb565, uint32_t x, uint32_t y) {
     return Grey8Format::pack(Rgb565Format::unpack(rgb565)) > dither_threshold(x, y);
 }
+
+/// lit() in table form, as the sink uses it: 256 x luma is the sum of three per-field terms, and a pixel
+/// is lit when that sum reaches (threshold + 1) x 256 (390 bytes of constants).
+struct DitherTables {
+    uint16_t red[32], green[64], blue[32];  ///< 77, 150 and 29 times each field's 8-bit expansion
+    uint16_t lit_from[8][8];                ///< [y & 7][x & 7]: the smallest sum that is lit there
+};
+constexpr DitherTables make_dither_tables() {
+    DitherTables t{};
+    for (uint32_t v = 0; v < 32; ++v) {
+        t.red[v] = static_cast<uint16_t>(77u * ((v << 3) | (v >> 2)));
+        t.blue[v] = static_cast<uint16_t>(29u * ((v << 3) | (v >> 2)));
+    }
+    for (uint32_t v = 0; v < 64; ++v) t.green[v] = static_cast<uint16_t>(150u * ((v << 2) | (v >> 4)));
+    for (uint32_t y = 0; y < 8; ++y)
+        for (uint32_t x = 0; x < 8; ++x) t.lit_from[y][x] = static_cast<uint16_t>((dither_threshold(x, y) + 1u) << 8);
+    return t;
+}
+inline constexpr DitherTables kDither = make_dither_tables();
+
+/// Ors `bit` into pages[x] for each lit pixel x of one row of `width` RGB565 pixels at row y.
+inline void dither_row(const uint16_t* row, uint32_t width, uint32_t y, uint8_t bit, uint8_t* pages) {
+    const uint16_t* lit_from = kDither.lit_from[y & 7u];
+    for (uint32_t x = 0; x < width; ++x) {
+        const uint32_t p = row[x];
+        if (p == 0) continue;  // black: never lit (a dark background costs a test a pixel)
+        const uint32_t sum = uint32_t{kDither.red[p >> 11]} + kDither.green[(p >> 5) & 63u] + kDither.blue[p & 31u];
+        if (sum >= lit_from[x & 7u]) pages[x] = static_cast<uint8_t>(pages[x] | bit);
+    }
+}
 }  // namespace oled
 
 /// One panel. Usage: init(), then begin_frame(), write_rows() per band and end_frame() (or hand sink() to
@@ -176,10 +206,7 @@ public:
         const uint32_t width = config_.width;
         for (uint32_t r = 0; r < rows; ++r) {
             const uint32_t y = uint32_t{y0} + r;
-            const uint16_t* row = rgb565 + size_t{r} * stride_px;
-            const uint8_t bit = static_cast<uint8_t>(1u << (y & 7u));
-            for (uint32_t x = 0; x < width; ++x)
-                if (oled::lit(row[x], x, y)) page_[x] = static_cast<uint8_t>(page_[x] | bit);
+            oled::dither_row(rgb565 + size_t{r} * stride_px, width, y, static_cast<uint8_t>(1u << (y & 7u)), page_);
             if ((y & 7u) == 7u) {  // the page is complete (heights are multiples of 8)
                 if (!write_page(static_cast<uint8_t>(y >> 3), page_)) {
                     frame_failed_ = true;

@@ -66,6 +66,24 @@ TEST_CASE("the OLED dither threshold is the 8x8 Bayer matrix, 4 levels a step, c
     }
 }
 
+TEST_CASE("the OLED sink's dither tables light exactly the pixels oled::lit() lights") {
+    long n = 0, lit = 0;
+    for (uint32_t p = 0; p < 65536; ++p)
+        for (uint32_t y = 0; y < 8; ++y) {
+            uint8_t pages[8] = {};
+            uint16_t row[8];
+            for (uint16_t& v : row) v = static_cast<uint16_t>(p);
+            hider::port::oled::dither_row(row, 8, y, 0x10, pages);
+            for (uint32_t x = 0; x < 8; ++x) {
+                const bool want = hider::port::oled::lit(static_cast<uint16_t>(p), x, y);
+                n += ((pages[x] == 0x10) != want);
+                lit += want;
+            }
+        }
+    CHECK(n == 0);
+    CHECK(lit > 65536L * 64 / 4);
+}
+
 TEST_CASE("the OLED model follows hand-written datasheet sequences") {
     SUBCASE("SSD1306: horizontal addressing wraps within the column and page ranges") {
         OledModel m(OledController::ssd1306, 128, 64, 0);
