@@ -1,6 +1,6 @@
 // oled firmware (small machine, 16 KB RAM budget for data + bss + stack): the torus at 128x64 drawn in
 // 8-row bands into an SSD1306 (oled/oled.hpp) whose bus feeds a simulated module; writes oled.pbm
-// through semihosting. RAM: the band renderer's (README.md "Bands") plus the module's 1,080 bytes.
+// through semihosting. RAM: the band renderer's (README.md "Bands") plus the module's 1,100 bytes.
 #include "bands/sizes.hpp"
 #include "common/scenes/torus_160x128.hpp"
 #include "oled/oled.hpp"

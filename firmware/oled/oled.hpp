@@ -11,12 +11,13 @@ namespace oled {
 
 constexpr uint8_t kWidth = 128, kHeight = 64;
 /// A 0.96" 128x64 I2C module: SSD1306, internal charge pump, upright.
-constexpr hider::port::OledConfig kConfig{hider::port::OledController::ssd1306, kWidth, kHeight, 0, 0xCF, false, false};
+constexpr hider::port::OledConfig kConfig{hider::port::OledController::ssd1306, kWidth, kHeight, 0, 0xCF, false, false, 0};
 
 /// Writes the module's glass as a binary PBM (P4: rows of bits, first pixel in the top bit; 1 is black,
 /// so lit pixels come out white as on the panel).
 template <class Io>
 bool write_pbm(Io& io, const hider::port::OledModel& module) {
+    static_assert(kWidth == 128 && kHeight == 64, "the header below");
     const char header[] = "P4\n128 64\n";
     if (!io.write(header, sizeof header - 1)) return false;
     for (uint32_t y = 0; y < kHeight; ++y) {

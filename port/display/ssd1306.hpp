@@ -1,5 +1,5 @@
-// Driver for 1-bit OLED controllers SSD1306 and SH1106 (128x64 and 128x32 modules) over a one-function
-// HAL, and a BandSink that turns any band renderer's RGB565 rows into lit pixels by an 8x8 ordered
+// Driver for 1-bit OLED controllers SSD1306 and SH1106 (128x64, 128x32 and smaller modules) over a HAL
+// of one write function (plus a delay and an optional reset pin), and a BandSink that turns any band renderer's RGB565 rows into lit pixels by an 8x8 ordered
 // dither of their luma. A byte of controller RAM holds 8 rows of one column (a page); the sink collects
 // each page in a width-byte buffer, so bands of any height work. Commands and init sequences: Solomon
 // Systech SSD1306 datasheet rev 1.1 s.9-10 and its software initialisation flow; Sino Wealth SH1106
@@ -17,8 +17,10 @@ namespace hider::port {
 /// The bus. `write` sends `len` bytes as one transfer after the control byte `control`: 0x00 for a
 /// command stream, 0x40 for display data (on I2C the control byte goes out after the address, exactly
 /// these values; an SPI board drives D/C low for 0x00 and high for 0x40 and sends only the bytes). It
-/// returns false when the transfer failed (no I2C acknowledge); the driver then stops and reports it.
-/// set_reset may be null when RES is not wired (most I2C modules); delay_ms is required.
+/// returns false when the transfer failed (no I2C acknowledge); the driver then stops and reports it. A
+/// HAL whose I2C buffer is smaller than `len` may split the bytes into several transactions, each
+/// starting again with the same control byte. set_reset may be null when RES is not wired (most I2C
+/// modules); write and delay_ms are required.
 struct OledHal {
     void* user;
     bool (*write)(void* user, uint8_t control, const uint8_t* bytes, size_t len);
@@ -29,8 +31,11 @@ struct OledHal {
 enum class OledController : uint8_t { ssd1306, sh1106 };
 
 /// Panel geometry: width <= 128 (SSD1306) or <= 132 (SH1106) columns starting at RAM column `column_offset`
-/// (SH1106 modules of 128 columns: 2), height 64 or 32 rows. `flip` rotates the image by 180 degrees
-/// (segment and COM scan order); `external_vcc` leaves the charge pump off.
+/// (SH1106 modules of 128 columns: 2; SSD1306 64x32 and 64x48 modules: 32), height 16, 32, 48 or 64 rows.
+/// `flip` rotates the image by 180 degrees (segment and COM scan order; the glass must sit centred in the
+/// controller's RAM columns, as on the modules named here). `external_vcc` leaves the charge pump off.
+/// `com_pins` is the COM pins configuration (command 0xDA) the module is wired for; 0 takes the usual
+/// one, 0x12 for 64 rows and 0x02 otherwise (128x32, 96x16), but 64x32 and 64x48 modules need 0x12.
 struct OledConfig {
     OledController controller;
     uint8_t width;
@@ -39,6 +44,7 @@ struct OledConfig {
     uint8_t contrast;
     bool flip;
     bool external_vcc;
+    uint8_t com_pins;
 };
 
 namespace oled {
@@ -68,7 +74,7 @@ constexpr uint8_t kFollowRam = 0xA4;
 constexpr uint8_t kNormal = 0xA6;
 constexpr uint8_t kScrollOff = 0x2E;
 constexpr uint32_t kResetLowMs = 2;     // RES# low >= 3 us
-constexpr uint32_t kPowerOnMs = 100;    // VCC / DC-DC settle before display on (SSD1306 s.8.9: 100 ms)
+constexpr uint32_t kPowerOnMs = 100;    // charge pump / DC-DC settling before display on, as common drivers wait
 
 /// Threshold of the 8x8 ordered dither at (x, y): the Bayer index times 4 plus 2, so luma 0 lights
 /// nothing, 255 everything, and luma v lights about v/256 of a flat area.
@@ -80,13 +86,16 @@ constexpr uint8_t dither_threshold(uint32_t x, uint32_t y) {
     return static_cast<uint8_t>(index * 4u + 2u);
 }
 
+/// The COM pins configuration `c` sends: its own, or the usual one for its height.
+constexpr uint8_t com_pins(const OledConfig& c) { return c.com_pins != 0 ? c.com_pins : (c.height == 64 ? 0x12 : 0x02); }
+
 /// Whether an RGB565 pixel at (x, y) is lit: Grey8Format's luma of its RGB888 expansion above the threshold.
 constexpr bool lit(uint16_t rgb565, uint32_t x, uint32_t y) {
     return Grey8Format::pack(Rgb565Format::unpack(rgb565)) > dither_threshold(x, y);
 }
 
 /// lit() in table form, as the sink uses it: 256 x luma is the sum of three per-field terms, and a pixel
-/// is lit when that sum reaches (threshold + 1) x 256 (390 bytes of constants).
+/// is lit when that sum reaches (threshold + 1) x 256 (384 bytes of constants).
 struct DitherTables {
     uint16_t red[32], green[64], blue[32];  ///< 77, 150 and 29 times each field's 8-bit expansion
     uint16_t lit_from[8][8];                ///< [y & 7][x & 7]: the smallest sum that is lit there
@@ -117,16 +126,17 @@ inline void dither_row(const uint16_t* row, uint32_t width, uint32_t y, uint8_t 
 }  // namespace oled
 
 /// One panel. Usage: init(), then begin_frame(), write_rows() per band and end_frame() (or hand sink() to
-/// a band renderer, or write_page() yourself). Every
-/// function returns false and stops at the first transfer the HAL refuses; init() must run again after
-/// that. 16 bytes plus the page buffer (width bytes, at most 132).
+/// a band renderer, or write_page() yourself). Every function returns false and stops at the first
+/// transfer the HAL refuses; init() must run again after that. 172 bytes on 32-bit targets, 132 of them
+/// the page buffer.
 class Oled {
 public:
     /// Copies the HAL and config; sends nothing until init().
     Oled(const OledHal& hal, const OledConfig& config) : hal_(hal), config_(config), band_(config.width, config.height) {}
 
-    /// Pulses RES if wired and sends the controller's init sequence, display on at the end; false for an
-    /// incomplete HAL, a geometry the controller does not have, or a refused transfer.
+    /// Pulses RES if wired, sends the controller's init sequence, clears its whole RAM (no random pixels
+    /// before the first frame) and turns the display on; false for an incomplete HAL, a geometry the
+    /// controller does not have, or a refused transfer.
     [[nodiscard]] bool init() {
         initialized_ = false;
         if (band_.in_frame()) (void)band_.end_frame();
@@ -139,23 +149,37 @@ public:
         }
         const bool sh = config_.controller == OledController::sh1106;
         const uint8_t seg = config_.flip ? 0xA0 : oled::kSegmentRemap, com = config_.flip ? 0xC0 : oled::kComScanDown;
-        const uint8_t pins = config_.height == 64 ? 0x12 : 0x02;  // alternative COM pins for 64 rows, sequential for 32
+        const uint8_t pins = oled::com_pins(config_);
         const uint8_t pump0 = sh ? oled::kDcDc : oled::kChargePump;
         const uint8_t pump1 = sh ? (config_.external_vcc ? 0x8A : 0x8B) : (config_.external_vcc ? 0x10 : 0x14);
         const uint8_t sequence[] = {oled::kDisplayOff, oled::kClock, 0x80, oled::kMultiplex,
                                     static_cast<uint8_t>(config_.height - 1), oled::kDisplayOffset, 0x00,
                                     oled::kStartLine, pump0, pump1, seg, com, oled::kComPins, pins, oled::kContrast,
                                     config_.contrast, oled::kPrecharge, static_cast<uint8_t>(config_.external_vcc ? 0x22 : 0xF1),
+                                    // VCOMH 0x40: above the table's 0.83 Vcc, as Adafruit's and u8g2's drivers send
                                     oled::kVcomDeselect, 0x40, oled::kFollowRam, oled::kNormal};
         if (!hal_.write(hal_.user, oled::kCommands, sequence, sizeof sequence)) return false;
         if (!sh) {  // SSD1306: horizontal addressing (SH1106 has only page addressing), no scrolling
             const uint8_t mode[] = {oled::kMemoryMode, 0x00, oled::kScrollOff};
             if (!hal_.write(hal_.user, oled::kCommands, mode, sizeof mode)) return false;
         }
+        if (!clear_ram()) return false;
         hal_.delay_ms(hal_.user, oled::kPowerOnMs);
         const uint8_t on = oled::kDisplayOn;
         if (!hal_.write(hal_.user, oled::kCommands, &on, 1)) return false;
         initialized_ = true;
+        return true;
+    }
+
+    /// Sends `len` command bytes (with their parameters) as one command transfer, for settings this driver
+    /// does not make (contrast, display off, inverse, scrolling); refused before init, during a frame or for
+    /// null bytes. Commands that change addressing break the next frame: the driver sets its own per page.
+    [[nodiscard]] bool send_commands(const uint8_t* bytes, size_t len) {
+        if (!initialized_ || band_.in_frame() || (bytes == nullptr && len > 0)) return false;
+        if (!hal_.write(hal_.user, oled::kCommands, bytes, len)) {
+            initialized_ = false;
+            return false;
+        }
         return true;
     }
 
@@ -192,9 +216,10 @@ public:
         if (!initialized_) return refuse(BandStatus::not_ready);
         if (width != config_.width || height != config_.height) return refuse(BandStatus::bad_size);
         last_band_status_ = band_.begin_frame(width, height);
+        if (last_band_status_ != BandStatus::ok) return false;  // an open frame keeps its rows
         frame_failed_ = false;
         for (uint8_t& b : page_) b = 0;
-        return last_band_status_ == BandStatus::ok;
+        return true;
     }
 
     /// Takes rows [y0, y0 + rows) of RGB565 pixels (row r at rgb565 + r * stride_px), which must follow the
@@ -236,8 +261,28 @@ private:
     bool geometry_ok() const {
         const bool sh = config_.controller == OledController::sh1106;
         if (!sh && config_.controller != OledController::ssd1306) return false;
-        if (config_.height != 64 && config_.height != 32) return false;
+        if (config_.height < 16 || config_.height > 64 || config_.height % 8 != 0) return false;
         return config_.width > 0 && uint32_t{config_.column_offset} + config_.width <= (sh ? 132u : 128u);
+    }
+
+    // Zeroes every page across the controller's whole RAM width (the glass's offset columns included).
+    bool clear_ram() {
+        for (uint8_t& b : page_) b = 0;
+        const bool sh = config_.controller == OledController::sh1106;
+        for (uint8_t page = 0; page < 8; ++page) {
+            bool sent;
+            if (sh) {
+                const uint8_t address[] = {static_cast<uint8_t>(oled::kPageStart | page), oled::kColumnLow, oled::kColumnHigh};
+                sent = hal_.write(hal_.user, oled::kCommands, address, sizeof address) &&
+                       hal_.write(hal_.user, oled::kData, page_, 132);
+            } else {
+                const uint8_t address[] = {oled::kColumnRange, 0, 127, oled::kPageRange, page, page};
+                sent = hal_.write(hal_.user, oled::kCommands, address, sizeof address) &&
+                       hal_.write(hal_.user, oled::kData, page_, 128);
+            }
+            if (!sent) return false;
+        }
+        return true;
     }
 
     bool refuse(BandStatus why) {

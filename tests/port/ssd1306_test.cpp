@@ -7,7 +7,9 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdio>
 #include <random>
+#include <string>
 #include <vector>
 
 using hider::port::BandSink;
@@ -32,8 +34,47 @@ bool expected_lit(uint16_t p, int x, int y) {
     return luma > kBayer[y & 7][x & 7] * 4 + 2;
 }
 
-OledConfig config(OledController c, uint8_t width, uint8_t height, uint8_t offset, bool flip = false) {
-    return OledConfig{c, width, height, offset, 0xCF, flip, false};
+OledConfig config(OledController c, uint8_t width, uint8_t height, uint8_t offset, bool flip = false, uint8_t com = 0) {
+    return OledConfig{c, width, height, offset, 0xCF, flip, false, com};
+}
+
+// A HAL that writes down everything: R0/R1 reset level, W<ms> delay, C[..] a command transfer's bytes in
+// hex, D<n> a data transfer of n bytes.
+struct Recorder {
+    std::string trace;
+    hider::port::OledHal hal() {
+        return {this,
+                [](void* u, uint8_t control, const uint8_t* bytes, size_t len) {
+                    auto& r = *static_cast<Recorder*>(u);
+                    if (control == 0x40) {
+                        r.trace += "D" + std::to_string(len) + " ";
+                        return true;
+                    }
+                    r.trace += "C[";
+                    for (size_t i = 0; i < len; ++i) {
+                        char hex[4];
+                        std::snprintf(hex, sizeof hex, i + 1 < len ? "%02X " : "%02X", bytes[i]);
+                        r.trace += hex;
+                    }
+                    r.trace += "] ";
+                    return true;
+                },
+                [](void* u, bool high) { static_cast<Recorder*>(u)->trace += high ? "R1 " : "R0 "; },
+                [](void* u, uint32_t ms) { static_cast<Recorder*>(u)->trace += "W" + std::to_string(ms) + " "; }};
+    }
+};
+
+std::string repeat_pages(const char* ssd_or_sh) {
+    std::string out;
+    for (int p = 0; p < 8; ++p) {
+        char buf[64];
+        if (ssd_or_sh[0] == 's' && ssd_or_sh[1] == 's')
+            std::snprintf(buf, sizeof buf, "C[21 00 7F 22 %02X %02X] D128 ", p, p);
+        else
+            std::snprintf(buf, sizeof buf, "C[%02X 00 10] D132 ", 0xB0 + p);
+        out += buf;
+    }
+    return out;
 }
 
 // Sends `frame` (width x height RGB565) through the sink in bands of `rows`.
@@ -130,17 +171,64 @@ TEST_CASE("the OLED model follows hand-written datasheet sequences") {
     }
 }
 
+TEST_CASE("the OLED driver sends the datasheets' bytes, in order") {
+    {  // SSD1306 128x64: reset pulse, init, horizontal addressing, RAM cleared, display on
+        Recorder r;
+        Oled oled(r.hal(), config(OledController::ssd1306, 128, 64, 0));
+        REQUIRE(oled.init());
+        CHECK(r.trace == "R0 W2 R1 W2 C[AE D5 80 A8 3F D3 00 40 8D 14 A1 C8 DA 12 81 CF D9 F1 DB 40 A4 A6] C[20 00 2E] " +
+                             repeat_pages("ssd") + "W100 C[AF] ");
+        r.trace.clear();
+        const uint8_t page[128] = {};
+        REQUIRE(oled.write_page(5, page));
+        CHECK(r.trace == "C[21 00 7F 22 05 05] D128 ");
+    }
+    {  // SSD1306 128x32, external VCC, turned: 32 rows, sequential COM pins, pump off, A0/C0
+        Recorder r;
+        OledConfig c = config(OledController::ssd1306, 128, 32, 0, true);
+        c.external_vcc = true;
+        Oled oled(r.hal(), c);
+        REQUIRE(oled.init());
+        CHECK(r.trace == "R0 W2 R1 W2 C[AE D5 80 A8 1F D3 00 40 8D 10 A0 C0 DA 02 81 CF D9 22 DB 40 A4 A6] C[20 00 2E] " +
+                             repeat_pages("ssd") + "W100 C[AF] ");
+    }
+    {  // SH1106 128x64 at column 2: DC-DC on, page addressing, all 132 columns cleared
+        Recorder r;
+        Oled oled(r.hal(), config(OledController::sh1106, 128, 64, 2));
+        REQUIRE(oled.init());
+        CHECK(r.trace == "R0 W2 R1 W2 C[AE D5 80 A8 3F D3 00 40 AD 8B A1 C8 DA 12 81 CF D9 F1 DB 40 A4 A6] " +
+                             repeat_pages("sh") + "W100 C[AF] ");
+        r.trace.clear();
+        const uint8_t page[128] = {};
+        REQUIRE(oled.write_page(3, page));
+        CHECK(r.trace == "C[B3 02 10] D128 ");
+        r.trace.clear();
+        const uint8_t contrast[] = {0x81, 0x10};
+        REQUIRE(oled.send_commands(contrast, sizeof contrast));
+        CHECK(r.trace == "C[81 10] ");
+    }
+    {  // a 64x32 module wired for alternative COM pins says so in its config
+        Recorder r;
+        Oled oled(r.hal(), config(OledController::ssd1306, 64, 32, 32, false, 0x12));
+        REQUIRE(oled.init());
+        CHECK(r.trace.find("A8 1F") != std::string::npos);
+        CHECK(r.trace.find("DA 12") != std::string::npos);
+    }
+}
+
 TEST_CASE("the OLED driver's init sequence sets up each controller and geometry") {
     struct Case {
         OledController c;
         uint8_t w, h, offset;
         bool external;
+        uint8_t com;
     };
-    for (const Case k : {Case{OledController::ssd1306, 128, 64, 0, false}, Case{OledController::ssd1306, 128, 32, 0, false},
-                         Case{OledController::ssd1306, 96, 64, 16, true}, Case{OledController::sh1106, 128, 64, 2, false},
-                         Case{OledController::sh1106, 132, 32, 0, true}}) {
-        OledModel m(k.c, k.w, k.h, k.offset);
-        OledConfig cfg = config(k.c, k.w, k.h, k.offset);
+    for (const Case k : {Case{OledController::ssd1306, 128, 64, 0, false, 0}, Case{OledController::ssd1306, 128, 32, 0, false, 0},
+                         Case{OledController::ssd1306, 96, 16, 0, true, 0}, Case{OledController::ssd1306, 64, 48, 32, false, 0x12},
+                         Case{OledController::ssd1306, 64, 32, 32, false, 0x12}, Case{OledController::sh1106, 128, 64, 2, false, 0},
+                         Case{OledController::sh1106, 132, 32, 0, true, 0}}) {
+        OledModel m(k.c, k.w, k.h, k.offset, k.com);
+        OledConfig cfg = config(k.c, k.w, k.h, k.offset, false, k.com);
         cfg.external_vcc = k.external;
         Oled oled(m.hal(), cfg);
         REQUIRE(oled.init());
@@ -148,18 +236,32 @@ TEST_CASE("the OLED driver's init sequence sets up each controller and geometry"
         CHECK(m.errors() == 0);
         CHECK(m.display_on());
         CHECK(int{m.multiplex()} == k.h);
-        CHECK(int{m.com_pins()} == (k.h == 64 ? 0x12 : 0x02));
+        CHECK(int{m.com_pins()} == (k.com != 0 ? k.com : (k.h == 64 ? 0x12 : 0x02)));
         CHECK(int{m.contrast()} == 0xCF);
         CHECK(m.pump_on() == !k.external);
     }
     // Geometries the controllers do not have: refused before any byte.
-    for (const OledConfig bad : {config(OledController::ssd1306, 128, 48, 0), config(OledController::ssd1306, 129, 64, 0),
+    for (const OledConfig bad : {config(OledController::ssd1306, 128, 36, 0), config(OledController::ssd1306, 128, 8, 0),
+                                 config(OledController::ssd1306, 128, 72, 0), config(OledController::ssd1306, 129, 64, 0),
                                  config(OledController::ssd1306, 128, 64, 1), config(OledController::sh1106, 128, 64, 5),
                                  config(OledController::ssd1306, 0, 64, 0), config(static_cast<OledController>(7), 128, 64, 0)}) {
         OledModel m(OledController::ssd1306, 128, 64, 0);
         Oled oled(m.hal(), bad);
         CHECK(!oled.init());
         CHECK(m.transfers() == 0);
+    }
+    // A module set up for another one's COM pins or multiplex shows its rows shuffled or missing, and says so.
+    {
+        OledModel m(OledController::ssd1306, 64, 32, 32, 0x12);
+        Oled oled(m.hal(), config(OledController::ssd1306, 64, 32, 32));  // sends 0x02
+        REQUIRE(oled.init());
+        CHECK(m.errors() == 1);
+    }
+    // A geometry the model cannot have: an error, nothing shown, no read past its RAM.
+    {
+        OledModel m(OledController::ssd1306, 200, 64, 200);
+        CHECK(m.errors() == 1);
+        for (uint32_t x = 0; x < 200; ++x) CHECK(!m.pixel(x, 0));
     }
     hider::port::OledHal no_write{nullptr, nullptr, nullptr, [](void*, uint32_t) {}};
     Oled oled(no_write, config(OledController::ssd1306, 128, 64, 0));
@@ -172,11 +274,13 @@ TEST_CASE("the OLED sink lights exactly the dithered pixels, for any band height
         OledController c;
         uint8_t w, h, offset;
         bool flip;
+        uint8_t com;
     };
     long compared = 0;
-    for (const Case k : {Case{OledController::ssd1306, 128, 64, 0, false}, Case{OledController::ssd1306, 128, 64, 0, true},
-                         Case{OledController::ssd1306, 128, 32, 0, false}, Case{OledController::ssd1306, 64, 32, 32, false},
-                         Case{OledController::sh1106, 128, 64, 2, false}, Case{OledController::sh1106, 128, 64, 2, true}}) {
+    for (const Case k : {Case{OledController::ssd1306, 128, 64, 0, false, 0}, Case{OledController::ssd1306, 128, 64, 0, true, 0},
+                         Case{OledController::ssd1306, 128, 32, 0, false, 0}, Case{OledController::ssd1306, 64, 32, 32, false, 0x12},
+                         Case{OledController::ssd1306, 64, 48, 32, true, 0x12}, Case{OledController::sh1106, 128, 64, 2, false, 0},
+                         Case{OledController::sh1106, 128, 64, 2, true, 0}}) {
         std::vector<uint16_t> frame(size_t{k.w} * k.h);
         for (int trial = 0; trial < 3; ++trial) {
             // random pixels, then smooth gradients (where the dither pattern shows)
@@ -187,8 +291,8 @@ TEST_CASE("the OLED sink lights exactly the dithered pixels, for any band height
                                                                    static_cast<uint8_t>(trial == 1 ? 0 : 255 - x)});
             }
             for (const int rows : {1, 3, 6, 8, 13, int{k.h}}) {
-                OledModel m(k.c, k.w, k.h, k.offset);
-                Oled oled(m.hal(), config(k.c, k.w, k.h, k.offset, k.flip));
+                OledModel m(k.c, k.w, k.h, k.offset, k.com);
+                Oled oled(m.hal(), config(k.c, k.w, k.h, k.offset, k.flip, k.com));
                 REQUIRE(oled.init());
                 REQUIRE(send(oled.sink(), frame, k.w, k.h, rows));
                 CHECK(oled.last_band_status() == BandStatus::ok);
@@ -207,26 +311,36 @@ TEST_CASE("the OLED sink lights exactly the dithered pixels, for any band height
             }
         }
     }
-    CHECK(compared == 3 * 6 * (128 * 64 * 4 + 128 * 32 + 64 * 32));
+    CHECK(compared == 3 * 6 * (128 * 64 * 4 + 128 * 32 + 64 * 32 + 64 * 48));
 }
 
 TEST_CASE("the OLED driver stops at a refused transfer and refuses frames it cannot show") {
     const std::vector<uint16_t> white(128 * 64, 0xFFFF);
-    // init sends 3 transfers on the SSD1306; a frame 2 per page
-    for (int fail_after = 0; fail_after < 3 + 16; ++fail_after) {
-        OledModel m(OledController::ssd1306, 128, 64, 0);
-        Oled oled(m.hal(fail_after), config(OledController::ssd1306, 128, 64, 0));
-        if (fail_after < 3) {
-            CHECK(!oled.init());
-            CHECK(!oled.initialized());
-            continue;
+    // init: 19 transfers on the SSD1306 (sequence, addressing mode, 8 cleared pages of 2, display on), 18 on
+    // the SH1106; a frame 2 per page. Every refusal stops the driver: no transfer follows it.
+    for (const OledController c : {OledController::ssd1306, OledController::sh1106}) {
+        const int init_transfers = c == OledController::ssd1306 ? 19 : 18;
+        const uint8_t offset = c == OledController::ssd1306 ? 0 : 2;
+        for (int fail_after = 0; fail_after < init_transfers + 16; ++fail_after) {
+            OledModel m(c, 128, 64, offset);
+            Oled oled(m.hal(fail_after), config(c, 128, 64, offset));
+            INFO("controller " << int(c) << " fail after " << fail_after);
+            if (fail_after < init_transfers) {
+                CHECK(!oled.init());
+                CHECK(!oled.initialized());
+                CHECK(int(m.transfers()) == fail_after);
+                continue;
+            }
+            REQUIRE(oled.init());
+            CHECK(!send(oled.sink(), white, 128, 64, 8));
+            CHECK(oled.last_band_status() == BandStatus::not_ready);
+            CHECK(!oled.initialized());  // init() again before the next frame
+            CHECK(int(m.transfers()) == fail_after);
+            const uint8_t page[128] = {};
+            CHECK(!oled.write_page(0, page));
+            const uint8_t off = 0xAE;
+            CHECK(!oled.send_commands(&off, 1));
         }
-        REQUIRE(oled.init());
-        CHECK(!send(oled.sink(), white, 128, 64, 8));
-        CHECK(oled.last_band_status() == BandStatus::not_ready);
-        CHECK(!oled.initialized());  // init() again before the next frame
-        const uint8_t page[128] = {};
-        CHECK(!oled.write_page(0, page));
     }
     OledModel m(OledController::ssd1306, 128, 64, 0);
     Oled oled(m.hal(), config(OledController::ssd1306, 128, 64, 0));
@@ -236,6 +350,18 @@ TEST_CASE("the OLED driver stops at a refused transfer and refuses frames it can
     REQUIRE(oled.init());
     CHECK(!sink.begin_frame(sink.user, 128, 32));  // not the panel's size
     CHECK(oled.last_band_status() == BandStatus::bad_size);
+    REQUIRE(sink.begin_frame(sink.user, 128, 64));
+    const uint8_t off = 0xAE;
+    CHECK(!oled.send_commands(&off, 1));  // not during a frame
+    REQUIRE(sink.write_rows(sink.user, 0, 4, white.data(), 128));
+    CHECK(!sink.begin_frame(sink.user, 128, 64));  // refused while open: the open frame keeps its rows
+    CHECK(oled.last_band_status() == BandStatus::frame_open);
+    REQUIRE(sink.write_rows(sink.user, 4, 60, white.data() + 4 * 128, 128));
+    REQUIRE(sink.end_frame(sink.user));
+    long lit = 0;
+    for (uint32_t y = 0; y < 4; ++y)
+        for (uint32_t x = 0; x < 128; ++x) lit += m.pixel(x, y);
+    CHECK(lit == 4 * 128);
     REQUIRE(sink.begin_frame(sink.user, 128, 64));
     CHECK(!sink.write_rows(sink.user, 8, 8, white.data(), 128));  // out of order
     CHECK(oled.last_band_status() == BandStatus::out_of_order);
