@@ -230,3 +230,14 @@ TEST_CASE("hider-render --scene: errors exit 2 with one line and no output; the 
     CHECK(bytes.rfind("P6\n40 32\n255\n", 0) == 0);
     CHECK(bytes.size() == std::string("P6\n40 32\n255\n").size() + 40 * 32 * 3);
 }
+
+TEST_CASE("a mesh scaled below the fixed-point resolution is refused, not drawn as nothing") {
+    // A red team's scene: `mesh ... scale 1e-6` rendered 0 of 64 pixels with exit 0, while a sphere of
+    // radius 1e-6 is refused. Every triangle of the icosphere rounds to no area.
+    const std::string ball = std::string(HIDER_TEST_DATA) + "/obj/ico3.obj";
+    const std::string e = parse_error("mesh " + ball + " scale 1e-6\n");
+    CHECK(e.find("t.txt:1: mesh: " + ball + ": all 1280 triangles have no area at the fixed-point resolution (2^-16) after scale 1e-06") == 0);
+    // At 1e-3 the triangles keep their area (a few raw units a side): accepted.
+    const std::string accepted = parse_error("camera eye 0 0 0.01 target 0 0 0 fov 10\nmesh " + ball + " scale 1e-3\n");
+    CHECK_MESSAGE(accepted.empty(), accepted);
+}

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -190,5 +191,53 @@ TEST_CASE("no shadow acne: a mesh seen from afar and a sphere lit from inside ag
         const Comparison c = compare(s, 160, 120, "acne " + std::to_string(n));
         CHECK(c.silhouettes.away > 10000);
         CHECK(c.silhouettes.worst <= worst);  // near a mesh's edges too: where a neighbour shadowed a hit
+    }
+}
+
+TEST_CASE("no shadow acne when a far triangle coarsens a mesh's vertex grid") {
+    // The triangle test floors a mesh's vertices to a grid set by how far its box reaches from the ray's
+    // origin: one triangle 8,000 units away in the same mesh makes it 2^9 raw (0.008 units) for every ray,
+    // which moves the mesh's other triangles, and the hit point, far more than the lift of t 2^-17. A red
+    // team's scenes: two coincident triangles, or a ball of loose triangles, each with such a far triangle,
+    // shadowed themselves with status ok (507 of 6,909 pixels, up to 149 levels). The lift now covers both
+    // rays' grids. Loose `triangle` lines make one mesh, which is how such a scene arises.
+    std::string ball;
+    {
+        std::ifstream obj(std::string(HIDER_TEST_DATA) + "/obj/ico3.obj");
+        std::vector<std::string> v;
+        for (std::string line; std::getline(obj, line);) {
+            std::istringstream in(line);
+            std::string kind;
+            in >> kind;
+            if (kind == "v") {
+                double x = 0, y = 0, z = 0;
+                in >> x >> y >> z;
+                v.push_back(std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z));
+            } else if (kind == "f") {
+                int a = 0, b = 0, c = 0;
+                in >> a >> b >> c;
+                ball += "triangle " + v[size_t(a - 1)] + " " + v[size_t(b - 1)] + " " + v[size_t(c - 1)] + " color 0.9 0.6 0.3\n";
+            }
+        }
+        REQUIRE(v.size() == 642);
+    }
+    const std::string twin = "triangle -1.5031 -1.0047 0.0013 1.5093 -1.0029 0.0071 0.0037 1.5011 -0.0053 color 0.9 0.6 0.3\n";
+    const std::string far = "triangle 8000 -8000 8000 8001 -8000 8000 8000 -7999 8000\n";
+    const std::string head = "size 96 72\nbackground 0.2 0.3 0.5\nambient 0.1 0.1 0.1\n";
+    const std::string scenes[] = {
+        head + "camera eye 0.0123 1.0377 4.0519 target 0 0 0 fov 50\nlight point 2 5 3\n" + twin + twin + far,
+        head + "camera eye 0.3 1.2 4 target 0 0 0 fov 45\nlight point 4 6 3 color 1 1 1\n" + ball + far,
+    };
+    int n = 0;
+    for (const std::string& text : scenes) {
+        const std::string path = std::string(HIDER_TEST_OUT) + "/far_grid_" + std::to_string(++n) + ".txt";
+        std::ofstream(path) << text;
+        tool::RayScene s;
+        std::string why;
+        REQUIRE_MESSAGE(tool::load_ray_scene(path, s, why), why);
+        const Comparison c = compare(s, 160, 120, "far grid " + std::to_string(n));
+        CHECK(c.silhouettes.away > 2000);
+        CHECK(c.smooth.rate() >= 0.995);     // the old lift: 93.2% on the twins
+        CHECK(c.silhouettes.rate() >= 0.985);  // the old lift: 98.0% on the ball (self-shadowed near its edges)
     }
 }

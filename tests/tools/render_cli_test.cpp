@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 
 #include <cstdint>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -1206,4 +1207,28 @@ TEST_CASE("generated scene names: a known kind with a bad number names the field
     CHECK(why.find("'99999999999999999999' (field 1) is not a whole number") != std::string::npos);
     CHECK_FALSE(hider::tool::gen::by_name("dense-1", g, why));  // a field missing: the patterns
     CHECK(why.find("unknown scene 'dense-1' (known: soup-SEED-N, dense-SEED-N") == 0);
+}
+
+TEST_CASE("--scene warns when a mesh's far geometry coarsens its vertex grid under its small triangles") {
+    // A fan of 0.04-unit triangles, alone and with one triangle 8,000 units away in the same mesh (loose
+    // `triangle` lines form one mesh): the triangle test then sees every vertex on a 0.0078-unit grid,
+    // under which those triangles turn over where rays graze them (a red team's holes and self-shadowing).
+    std::string fan;
+    for (int i = 0; i < 16; ++i) {
+        const double a0 = i * 0.3926990817, a1 = (i + 1) * 0.3926990817;
+        fan += "triangle 0 1 0 " + std::to_string(0.04 * std::cos(a0)) + " 0.999 " + std::to_string(0.04 * std::sin(a0)) + " " +
+               std::to_string(0.04 * std::cos(a1)) + " 0.999 " + std::to_string(0.04 * std::sin(a1)) + "\n";
+    }
+    const std::string head = "size 32 24\ncamera eye 0.3 1.2 4 target 0 0 0 fov 45\nlight point 4 6 3\n";
+    const std::string near_only = write_model("grid_near.txt", head + fan);
+    const std::string with_far = write_model("grid_far.txt", head + fan + "triangle 8000 -8000 8000 8001 -8000 8000 8000 -7999 8000\n");
+    const Run ok = run({"--scene", near_only, "-o", out_ppm()});
+    CHECK_MESSAGE(ok.code == 0, ok.err);
+    CHECK(ok.err.empty());
+    const Run far = run({"--scene", with_far, "-o", out_ppm()});
+    CHECK_MESSAGE(far.code == 0, far.err);
+    CHECK(far.output_created);
+    CHECK(far.err.find("warning: " + with_far + ": mesh 1 (the loose `triangle` lines) reaches 8001 units from the eye") !=
+          std::string::npos);
+    CHECK(far.err.find("16 of its 17 triangles have an edge under 8 steps") != std::string::npos);
 }

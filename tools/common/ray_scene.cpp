@@ -2,7 +2,10 @@
 // range lib/ can hold before it is converted to fixed point, once; meshes get their BVH here.
 #include "common/ray_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -370,6 +373,23 @@ bool read_mesh(Statement& st, const std::string& base_dir, RayScene& s, std::str
             m.tris.push_back(t);
             m.normals.push_back(face_normal(m.positions[t.v[0]], m.positions[t.v[1]], m.positions[t.v[2]]));
         }
+    // Scaled below the fixed-point resolution, every triangle can round to a line or a point: nothing of the
+    // mesh could be hit (as a sphere's radius below 2^-16 is refused).
+    size_t flat = 0;
+    for (const Tri& t : m.tris) {
+        const Vec3q16 &a = m.positions[t.v[0]], &b = m.positions[t.v[1]], &c = m.positions[t.v[2]];
+        const int64_t e1[3] = {int64_t{b.x.raw()} - a.x.raw(), int64_t{b.y.raw()} - a.y.raw(), int64_t{b.z.raw()} - a.z.raw()};
+        const int64_t e2[3] = {int64_t{c.x.raw()} - a.x.raw(), int64_t{c.y.raw()} - a.y.raw(), int64_t{c.z.raw()} - a.z.raw()};
+        const __int128 n0 = static_cast<__int128>(e1[1]) * e2[2] - static_cast<__int128>(e1[2]) * e2[1];
+        const __int128 n1 = static_cast<__int128>(e1[2]) * e2[0] - static_cast<__int128>(e1[0]) * e2[2];
+        const __int128 n2 = static_cast<__int128>(e1[0]) * e2[1] - static_cast<__int128>(e1[1]) * e2[0];
+        flat += n0 == 0 && n1 == 0 && n2 == 0;
+    }
+    if (flat == m.tris.size()) {
+        error = "mesh: " + path + ": all " + std::to_string(flat) + " triangles have no area at the fixed-point resolution (2^-16) after scale " +
+                fmt(scale) + ": nothing of it could be hit";
+        return false;
+    }
     if (!build_bvh({{m.positions.data(), m.positions.size()}, {m.tris.data(), m.tris.size()}, {}, {}}, m.bvh, error)) {
         error = "mesh: " + error;
         return false;
@@ -546,6 +566,65 @@ bool load_ray_scene(const std::string& path, RayScene& out, std::string& error) 
     }
     const size_t slash = path.find_last_of('/');
     return parse_ray_scene(in, path, slash == std::string::npos ? std::string() : path.substr(0, slash), out, error);
+}
+
+std::vector<std::string> grid_warnings(const RayScene& s) {
+    std::vector<std::string> out;
+    const Vec3q16 eye = s.camera.eye;
+    for (size_t m = 0; m < s.meshes.size(); ++m) {
+        const RayScene::MeshData& md = s.meshes[m];
+        uint32_t reach = 0;
+        for (const Vec3q16& p : md.positions)
+            for (const int64_t d : {int64_t{p.x.raw()} - eye.x.raw(), int64_t{p.y.raw()} - eye.y.raw(), int64_t{p.z.raw()} - eye.z.raw()})
+                reach = std::max(reach, static_cast<uint32_t>(d < 0 ? -d : d));
+        const int shift = ray::triangle_grid_shift(reach);
+        if (shift == 0) continue;
+        size_t bad = 0;
+        for (const Tri& t : md.tris) {
+            int64_t snapped[3][3], exact[3][3];
+            for (int k = 0; k < 3; ++k) {
+                const Vec3q16& p = md.positions[t.v[k]];
+                const int64_t d[3] = {int64_t{p.x.raw()} - eye.x.raw(), int64_t{p.y.raw()} - eye.y.raw(), int64_t{p.z.raw()} - eye.z.raw()};
+                for (int i = 0; i < 3; ++i) {
+                    exact[k][i] = d[i];
+                    snapped[k][i] = d[i] >> shift;  // the triangle test's floor
+                }
+            }
+            auto normal = [](const int64_t (&v)[3][3], __int128 (&n)[3]) {
+                const int64_t e1[3] = {v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2]};
+                const int64_t e2[3] = {v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2]};
+                n[0] = static_cast<__int128>(e1[1]) * e2[2] - static_cast<__int128>(e1[2]) * e2[1];
+                n[1] = static_cast<__int128>(e1[2]) * e2[0] - static_cast<__int128>(e1[0]) * e2[2];
+                n[2] = static_cast<__int128>(e1[0]) * e2[1] - static_cast<__int128>(e1[1]) * e2[0];
+            };
+            __int128 ns[3], ne[3];
+            normal(snapped, ns);
+            normal(exact, ne);
+            // the snapped normal against the exact one's direction (doubles: only the sign matters)
+            const double agree = static_cast<double>(ns[0]) * static_cast<double>(ne[0]) +
+                                 static_cast<double>(ns[1]) * static_cast<double>(ne[1]) +
+                                 static_cast<double>(ns[2]) * static_cast<double>(ne[2]);
+            // an edge under 8 steps: its facet turns by a large angle on the grid (over |cos| at grazing rays)
+            int64_t shortest = INT64_MAX;
+            for (int k = 0; k < 3; ++k) {
+                const int64_t(&a)[3] = snapped[k];
+                const int64_t(&b)[3] = snapped[(k + 1) % 3];
+                auto span = [](int64_t v) { return v < 0 ? -v : v; };
+                shortest = std::min(shortest, std::max({span(b[0] - a[0]), span(b[1] - a[1]), span(b[2] - a[2])}));
+            }
+            if (agree <= 0 || shortest < 8) ++bad;
+        }
+        if (bad == 0) continue;
+        char line[400];
+        std::snprintf(line, sizeof line,
+                      "mesh %zu%s reaches %.0f units from the eye, so ray tests see its vertices on a grid of %g units: "
+                      "%zu of its %zu triangles have an edge under 8 steps of it or collapse, and may turn over or leave holes "
+                      "where rays graze them (put distant geometry in a mesh of its own, or use a plane)",
+                      m + 1, md.surfaces.empty() ? "" : " (the loose `triangle` lines)", reach / 65536.0,
+                      static_cast<double>(int64_t{1} << shift) / 65536.0, bad, md.tris.size());
+        out.emplace_back(line);
+    }
+    return out;
 }
 
 }  // namespace hider::tool

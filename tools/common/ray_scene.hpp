@@ -55,4 +55,9 @@ bool load_ray_scene(const std::string& path, RayScene& out, std::string& error);
 bool parse_ray_scene(std::istream& in, const std::string& name, const std::string& base_dir, RayScene& out,
                      std::string& error);
 
+/// Warnings for meshes whose triangles collapse or turn over on the vertex grid the triangle test uses for
+/// rays from the camera's eye (coarser than 1 raw once a mesh's box reaches 16 units from the eye): such
+/// triangles may leave holes. One line per such mesh, empty when none.
+std::vector<std::string> grid_warnings(const RayScene& s);
+
 }  // namespace hider::tool

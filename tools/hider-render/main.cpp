@@ -127,6 +127,7 @@ int render_scene_file(const std::string& scene_path, const std::string& model_pa
     RayScene scene;
     std::string why;
     if (!load_ray_scene(scene_path, scene, why)) fail(why);
+    for (const std::string& w : grid_warnings(scene)) std::cerr << "hider-render: warning: " << scene_path << ": " << w << "\n";
     const int width = size_given ? cam.width : scene.width, height = size_given ? cam.height : scene.height;
     RenderResult result;
     if (!render_ray_scene(scene, width, height, opt, result, why)) fail(scene_path + ": " + why);

@@ -114,14 +114,20 @@ inline Status validate_bvh(const Bvh& bvh, const Mesh& mesh, Span<BvhStackEntry>
     return next_node == h.node_count && next_entry == h.triangle_count ? Status::ok : Status::bad_data;
 }
 
-/// bvh_triangle_ray() without the tie rule (complete_triangle_ray()): what the walk's box tests need.
-inline TriangleRay bvh_triangle_ray_grid(const Bvh& bvh, const Ray& ray) {
+/// How far the hierarchy's root box reaches from `origin` on any axis (raw): what sets the triangle
+/// test's vertex grid for rays from there (triangle_grid_shift()).
+inline uint32_t bvh_reach(const Bvh& bvh, const Vec3q16& origin) {
     const BvhNode& root = bvh.nodes[0];
-    const int32_t o[3] = {ray.origin.x.raw(), ray.origin.y.raw(), ray.origin.z.raw()};
+    const int32_t o[3] = {origin.x.raw(), origin.y.raw(), origin.z.raw()};
     uint32_t reach = 0;
     for (int i = 0; i < 3; ++i)
         reach = max(reach, static_cast<uint32_t>(max(abs_value(int64_t{root.lo[i]} - o[i]), abs_value(int64_t{root.hi[i]} - o[i]))));
-    return triangle_ray_grid(ray, reach);
+    return reach;
+}
+
+/// bvh_triangle_ray() without the tie rule (complete_triangle_ray()): what the walk's box tests need.
+inline TriangleRay bvh_triangle_ray_grid(const Bvh& bvh, const Ray& ray) {
+    return triangle_ray_grid(ray, bvh_reach(bvh, ray.origin));
 }
 
 /// The triangle test's per-ray constants for rays against this hierarchy: the grid is set by how far

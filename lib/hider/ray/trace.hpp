@@ -108,14 +108,27 @@ inline Vec3q30 facing_normal(const Scene& s, const Hit& h, const Vec3q16& p, con
     return n;
 }
 
-/// Where the secondary rays of hit h at p (normal n facing the viewer) start. A flat object or a sphere
-/// seen from outside is skipped by them, so p serves. A mesh's neighbouring triangles and a sphere left
-/// from inside are not: p, off the surface by up to about t 2^-18 (the triangle test's rounded direction),
-/// may lie behind them, and its shadow rays would meet them at once (acne). So it is lifted towards the
-/// viewer by kRayEpsilonRaw + t 2^-17 (clamped to the world).
-inline Vec3q16 ray_start(const Hit& h, const Vec3q16& p, const Vec3q30& n) {
+/// The triangle test's vertex grid step (raw) for rays of `bvh` from `origin` (bvh_triangle_ray_grid()).
+inline int64_t mesh_grid_step(const Bvh& bvh, const Vec3q16& origin) {
+    return int64_t{1} << triangle_grid_shift(bvh_reach(bvh, origin));
+}
+
+/// Where the secondary rays of hit h at p (normal n facing the viewer; `incoming` the ray that found it)
+/// start. A flat object or a sphere seen from outside is skipped by them, so p serves. A mesh's other
+/// triangles and a sphere left from inside are not: p is off the surface by up to about t 2^-18 (the
+/// triangle test's rounded direction) plus sqrt(3) grid steps of the incoming ray's vertex grid, and the
+/// secondary ray's own grid moves the neighbouring triangles (and coincident twins) by up to sqrt(3) of
+/// its steps; its shadow rays would meet them at once (acne). So p is lifted towards the viewer by
+/// kRayEpsilonRaw + t 2^-17, plus, from a mesh, twice both grid steps (clamped to the world). The grid
+/// step is 1 raw unless the mesh's box reaches past 2^20 raw (16 units) from the ray's origin.
+inline Vec3q16 ray_start(const Scene& s, const Ray& incoming, const Hit& h, const Vec3q16& p, const Vec3q30& n) {
     if (h.kind != ObjectKind::triangle && (h.kind != ObjectKind::sphere || h.front)) return p;
-    const int64_t lift = kRayEpsilonRaw + (h.t_q16 >> 17);
+    int64_t lift = kRayEpsilonRaw + (h.t_q16 >> 17);
+    if (h.kind == ObjectKind::triangle) {
+        const Bvh& bvh = s.meshes[h.object].bvh;
+        const int64_t grids = mesh_grid_step(bvh, incoming.origin) + mesh_grid_step(bvh, p);
+        if (grids > 2) lift += 2 * grids;  // both 1 raw: within kRayEpsilonRaw, as before
+    }
     auto comp = [lift](Q16 c, Q30 nc) {
         const int64_t v = c.raw() + ((nc.raw() * lift + (int64_t{1} << 29)) >> 30);
         return Q16::from_raw(static_cast<int32_t>(clamp<int64_t>(v, 1 - kRayWorldLimitRaw, kRayWorldLimitRaw - 1)));
@@ -202,7 +215,7 @@ inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, 
         // The next rays leave this object on the side facing the viewer: a flat object or a sphere seen
         // from outside cannot be met again, so it is skipped (no self-shadowing acne at grazing angles).
         skip = (h.kind != ObjectKind::sphere || h.front) ? detail::Skip{h.kind, h.object, h.triangle} : detail::Skip{};
-        const Vec3q16 from = detail::ray_start(h, p, n);
+        const Vec3q16 from = detail::ray_start(s, ray, h, p, n);
         uint32_t e[3];
         detail::irradiance(s, from, n, skip, stack, stats, e);
         const Rgb base = detail::surface_color(f, p, n);

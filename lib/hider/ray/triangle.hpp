@@ -23,13 +23,18 @@ struct TriangleRay {
     int64_t u2[3];   ///< tie rule, second: d x u
 };
 
+/// The vertex grid's shift for vertices no farther than `reach_raw` from the ray's origin on any axis.
+constexpr int triangle_grid_shift(uint32_t reach_raw) {
+    const int bits = reach_raw == 0 ? 0 : 32 - clz32(reach_raw);  // reach < 2^bits
+    return bits > 20 ? bits - 20 : 0;                              // |(v - o) >> shift| <= 2^20
+}
+
 /// The part of make_triangle_ray() that box tests need: the direction as the test takes it and the grid.
 constexpr TriangleRay triangle_ray_grid(const Ray& ray, uint32_t reach_raw) {
     TriangleRay tr{ray.origin, {}, 0, {}, {}};
     const int32_t d[3] = {ray.dir.x.raw(), ray.dir.y.raw(), ray.dir.z.raw()};
     for (int i = 0; i < 3; ++i) tr.d18[i] = (d[i] + (1 << 11)) >> 12;
-    const int bits = reach_raw == 0 ? 0 : 32 - clz32(reach_raw);  // reach < 2^bits
-    tr.shift = bits > 20 ? bits - 20 : 0;                          // |(v - o) >> shift| <= 2^20
+    tr.shift = triangle_grid_shift(reach_raw);
     return tr;
 }
 
