@@ -249,6 +249,45 @@ TEST_CASE("hider-plot: a view whose projection may be a pixel off warns, with th
     CHECK(flat.err.empty());
 }
 
+TEST_CASE("hider-plot: a view off by more than a pixel warns even where error_bound_subpixels() is below one") {
+    // A red team's view: hills 0.01 high seen from 0.17 units; the box reaches far beyond the frame and
+    // U and V's floor to 2^14 units (which the bound leaves out) put points 1.44 pixels off, bound 0.375.
+    const Run close = plot({"--function", "hills", "--height", "0.01", "--eye", "0,0.17,0.01", "--target", "0,0,0", "--fov", "26",
+                            "--size", "960x1000"});
+    CHECK(close.code == 0);
+    CHECK(contains(close.err, "hider-plot: warning: projected points may lie up to 1.4375 pixels from their exact place"));
+    const Run framed = plot({"--function", "hills", "--height", "0.01", "--eye", "0,2,3", "--target", "0,0,0", "--size", "320x240"});
+    CHECK(framed.code == 0);
+    CHECK(framed.err.empty());
+}
+
+TEST_CASE("hider-plot: an eye inside the surface's box warns") {
+    // A red team's view: hills 100x300 from inside the box drew a fan of curves the exact view hides.
+    const Run inside = plot({"--function", "hills", "--curves", "100", "--samples", "300", "--eye", "0.031,-0.068,0.409",
+                             "--target", "-0.566,-0.298,1.178"});
+    CHECK(inside.code == 0);
+    CHECK(contains(inside.err, "hider-plot: warning: the eye is inside the surface's box"));
+    const Run above = plot({"--function", "hills", "--curves", "100", "--samples", "300", "--eye", "0.031,0.8,0.409",
+                            "--target", "-0.566,-0.298,1.178"});
+    CHECK(above.code == 0);
+    CHECK(!contains(above.err, "inside the surface's box"));
+}
+
+TEST_CASE("hider-plot: a P5 comment right after maxval ends at its newline, and the raster follows") {
+    // netpbm allows a comment before the whitespace that delimits the raster. It was read as pixels: 'z'
+    // (122) exceeded maxval 10, and with maxval 255 the map was silently different (a red team's file).
+    std::string raster;
+    for (int i = 0; i < 16; ++i) raster += static_cast<char>(i * 9);
+    const std::string plain = write("plain.pgm", "P5 4 4 200\n" + raster);
+    const std::string commented = write("commented.pgm", "P5 4 4 200#zz\n" + raster);
+    const Run a = plot({"--heightmap", plain});
+    REQUIRE(a.code == 0);
+    const std::string image = read_file(out_ppm());
+    const Run b = plot({"--heightmap", commented});
+    CHECK_MESSAGE(b.code == 0, b.err);
+    CHECK(read_file(out_ppm()) == image);
+}
+
 TEST_CASE("hider-plot: a malformed, truncated or unsupported height map is rejected with the file and the reason") {
     auto v = [](int r, int c) { return bump(r, c, 255); };
     SUBCASE("wrong magic") {
@@ -347,4 +386,8 @@ TEST_CASE("hider-plot: a view that cannot see the surface is an error") {
     check_error(plot({"--function", "sinc", "--eye", "0,1,3", "--target", "0,1,6"}), {"the view does not see the surface"});
     check_error(plot({"--function", "hills", "--eye", "0,3,0", "--target", "0,6,0", "--up", "0,0,1"}), {"the view does not see the surface"});
     check_error(plot({"--function", "waves", "--eye", "0,0.2,20", "--target", "9,0.2,19", "--fov", "5"}), {"the view does not see the surface"});
+    // Looking at the surface's middle so closely that the frame falls between two lines (a red team's
+    // view, which was told the view did not see the surface).
+    check_error(plot({"--function", "saddle", "--eye", "0,1,1", "--target", "0,0,0", "--fov", "0.5"}),
+                {"no line of the surface crosses the 320x240 frame, though its box reaches into it"});
 }

@@ -52,7 +52,7 @@ struct Result {
     std::vector<uint8_t> rgb;  ///< width * height * 3
     horizon::PlotStats stats;  ///< summed over bands (pixels) / of the last band (the rest)
     std::string warning;       ///< non-empty when lib/ had to clamp something or may be a pixel off
-    int32_t error_subpixels = 0;  ///< SurfaceProjection::error_bound_subpixels()
+    int32_t error_subpixels = 0;  ///< the larger of error_bound_subpixels() and the error measured on every point
 };
 
 /// Fills unset camera values: target = centre of the bounding box, eye from above the front edge
@@ -67,7 +67,8 @@ FixedGrid to_fixed(const HeightGrid& g);
 Camera to_camera(const CameraD& cam);
 
 /// Plots `g` with lib/. False with a reason when lib/ rejects the setup or nothing of the surface lands
-/// in the frame ("the view does not see the surface").
+/// in the frame ("the view does not see the surface", or "no line of the surface crosses the ... frame"
+/// when its box does reach into the frame).
 bool render(const HeightGrid& g, const CameraD& cam, const Options& opt, Result& out, std::string& error);
 
 /// Mesh step render() uses for `opt` and a grid of curves x samples (samples - 1 without the mesh: the

@@ -154,7 +154,11 @@ bool read_pgm(const std::string& path, Pgm& out, std::string& error) {
     out.maxval = static_cast<int>(maxval);
     out.values.clear();  // filled as values are read: a header that promises more than the file holds costs nothing
     if (binary) {
-        // Exactly one whitespace byte ends the header; then 1 or 2 (big-endian) bytes per value.
+        // Exactly one whitespace byte ends the header, or a comment right after maxval up to its newline
+        // (netpbm: comments may come before the whitespace that delimits the raster); then 1 or 2
+        // (big-endian) bytes per value.
+        if (pos < data.size() && data[pos] == '#')
+            while (pos < data.size() && data[pos] != '\n' && data[pos] != '\r') ++pos;
         if (pos >= data.size()) return fail("truncated: no pixel data");
         ++pos;
         const size_t bytes = maxval < 256 ? 1 : 2;

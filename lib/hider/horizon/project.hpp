@@ -121,7 +121,12 @@ public:
     /// adds up samples + curves + heights of them; plus a quarter pixel for the reciprocal table, the
     /// camera's rotation and the output's rounding. Below a pixel for a surface framed whole; it grows
     /// with the ratio of the farthest corner's screen reach to the nearest point's distance (a tall
-    /// height range seen from close by). hider-plot warns above a pixel.
+    /// height range seen from close by). It leaves out one rounding: X and Y take U and V floored to
+    /// 2^14 units (detail::scale16()), up to 2^(14 + d) / W subpixels at a point of scaled distance W (d:
+    /// the axis's shift over W's). Counted against the nearest corner that term would swamp the bound on
+    /// every view, so it is not; it shows where points in the frame lie much nearer than the box's extent
+    /// (a red team's close view with the surface reaching far outside the frame: 1.66 pixels against a
+    /// bound of 0.375). hider-plot therefore also measures every point against its exact projection.
     int32_t error_bound_subpixels() const { return error_subpixels_; }
 
     const Surface& surface() const { return surface_; }
