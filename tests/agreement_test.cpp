@@ -173,3 +173,57 @@ TEST_CASE("a decal on a wall: 2e-3 units in front, every algorithm but the paint
         }
     CHECK(decal_pixels > 12 * 500);
 }
+
+TEST_CASE("a triangle whose plane holds the eye, crossing the near plane, draws nothing in any algorithm") {
+    // A red team's scene: two triangles in the planes z = 0 and x = 0, which hold the eye exactly, in
+    // front of a wall. Rounded to view space, their planes missed the eye by 0.6 and 1.3 raw units, and the
+    // near plane's clip turned that into a wedge: the z-buffer, painter, Newell and reverse painter drew 552
+    // pixels of them at 320x240 with status ok, where the BSP (its exact eye test) and ray casting draw none.
+    auto q = [](double v) { return Q16::from_raw(static_cast<int32_t>(v * 65536)); };
+    auto p = [&q](double x, double y, double z) { return Vec3q16{q(x), q(y), q(z)}; };
+    tool::Scene s;
+    s.positions = {p(-20, 4, -20), p(20, 4, -20), p(0, 4, 20),  // the wall (id 1), values exact in Q16
+                   p(2.3485565185546875, 3.8897857666015625, 0), p(-0.6499481201171875, -0.53326416015625, 0),
+                   p(3.367950439453125, -1.7382354736328125, 0),  // in z = 0 (id 2)
+                   p(0, 2.3911590576171875, -3.2352142333984375), p(0, -3.682830810546875, 0.260467529296875),
+                   p(0, 2.708526611328125, 1.2936859130859375)};  // in x = 0 (id 2)
+    s.tris = {{{0, 1, 2}}, {{3, 4, 5}}, {{6, 7, 8}}};
+    s.ids = {1, 2, 2};
+    s.camera.eye = p(0, -0.7282562255859375, 0);
+    s.camera.target = p(-0.0565185546875, -0.3205413818359375, -0.0709686279296875);
+    s.camera.up = p(0, 1, 0);
+    s.camera.fovy = Angle::from_degrees(Q16::from_int(60));
+    s.camera.far = q(50);
+    const tool::Algo algos[] = {tool::Algo::zbuffer, tool::Algo::painter, tool::Algo::newell, tool::Algo::reverse,
+                                tool::Algo::bsp,     tool::Algo::bsp_front, tool::Algo::raycast};
+    long frames = 0;
+    for (const double near : {1.0 / 256, 1.0 / 64, 0.01, 0.1})
+        for (const auto& [w, h] : {std::pair<int, int>{320, 240}, {64, 48}}) {
+            s.camera.near = q(near);
+            s.width = w;
+            s.height = h;
+            for (const tool::Algo algo : algos)
+                for (const bool cull : {false, true})
+                    for (const int bits : {16, 32}) {
+                        tool::RenderOptions opt;
+                        opt.algo = algo;
+                        opt.shade = Shade::id;
+                        opt.format = tool::PixelFormat::rgb888;
+                        opt.cull = cull;
+                        opt.depth_bits = bits;
+                        tool::RenderResult r;
+                        std::string why;
+                        REQUIRE_MESSAGE(tool::render(s, opt, r, why), why);
+                        long edge_on = 0, wall = 0;
+                        for (const uint32_t id : tool::decode_ids(r)) {
+                            edge_on += id == 2;
+                            wall += id == 1;
+                        }
+                        INFO("near ", near, " ", w, "x", h, " algo ", int(algo), " cull ", cull, " depth ", bits);
+                        CHECK(edge_on == 0);
+                        CHECK_MESSAGE(wall == long{w} * h, "edge-on ", edge_on, " wall ", wall);  // and no hole where it was
+                        ++frames;
+                    }
+        }
+    CHECK(frames == 4 * 2 * 7 * 2 * 2);
+}

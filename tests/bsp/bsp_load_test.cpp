@@ -13,6 +13,7 @@
 
 #include "bsp/bsp_blobs.hpp"
 #include "bsp/bsp_exercise.hpp"
+#include "common/bsp_build.hpp"
 
 using namespace hider;
 using test::BlobEdit;
@@ -365,6 +366,33 @@ TEST_CASE("bsp_load rejects a vertex outside kBspWorldLimitRaw with out_of_range
             CHECK(r.load == (inside ? Status::ok : Status::out_of_range));
             if (inside) check_walks_safe(r);
         }
+}
+
+TEST_CASE("bsp_load says out_of_range for a vertex outside the world even when a node's plane is also out of bounds") {
+    // A tree built over points beyond the world has planes to match; the vertices are the cause, so they
+    // are checked first (a red team's tree spanning +-8,000 units got bad_data).
+    const BlobEdit b = cube();
+    BlobEdit f = b;
+    f.set<int32_t>(f.vertex_at(b.header().vertex_count - 1), kBspWorldLimitRaw);
+    BspNode n = f.node(0);
+    n.n[0] = int64_t{1} << 62;
+    f.set_node(0, n);
+    f.reseal();
+    CHECK(load(f.bytes) == Status::out_of_range);
+}
+
+TEST_CASE("build_bsp refuses vertices beyond the BSP world with the vertex and the limit") {
+    auto q = [](double v) { return Q16::from_raw(static_cast<int32_t>(v * 65536)); };
+    const std::vector<Vec3q16> far{{q(3000), q(0), q(0)}, {q(3001), q(0), q(0)}, {q(3000), q(1), q(0)}};
+    const std::vector<Tri> tris{{{0, 1, 2}}};
+    tool::BspBuilt built;
+    tool::BspStats stats;
+    std::string why;
+    CHECK(!tool::build_bsp(far, tris, {1}, tool::BspOptions{}, built, stats, why));
+    CHECK(why.find("vertex 0 lies 3000") == 0);
+    CHECK(why.find("beyond the BSP world of +-") != std::string::npos);
+    const std::vector<Vec3q16> near{{q(30), q(0), q(0)}, {q(31), q(0), q(0)}, {q(30), q(1), q(0)}};
+    CHECK_MESSAGE(tool::build_bsp(near, tris, {1}, tool::BspOptions{}, built, stats, why), why);
 }
 
 TEST_CASE("bsp_load rejects zero and oversized plane normals; the largest accepted ones walk safely") {

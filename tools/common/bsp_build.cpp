@@ -881,6 +881,16 @@ void label_cells(BspBuilt& t, BspStats& stats) { CellLabeller(t, stats).run(); }
 bool build_bsp(const std::vector<Vec3q16>& positions, const std::vector<Tri>& tris, const std::vector<uint32_t>& ids,
                const BspOptions& opt, BspBuilt& out, BspStats& stats, std::string& error) {
     stats = BspStats{};
+    // The tree's node boxes must hold every vertex within the BSP world (bsp_load() refuses others with
+    // out_of_range); say so here rather than build a tree no walk will load.
+    const int32_t limit = kBspWorldLimitRaw - (int32_t{1} << kBspBoxShift);
+    for (size_t i = 0; i < positions.size(); ++i)
+        for (const Q16 c : {positions[i].x, positions[i].y, positions[i].z})
+            if (c.raw() <= -limit || c.raw() >= limit) {
+                error = "vertex " + std::to_string(i) + " lies " + std::to_string(std::abs(c.raw() / 65536.0)) +
+                        " units from the origin, beyond the BSP world of +-" + std::to_string(limit / 65536) + " units";
+                return false;
+            }
     Builder b(opt, stats);
     if (!b.run(positions, tris, ids, out, error)) return false;
     label_cells(out, stats);

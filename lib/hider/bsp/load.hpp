@@ -53,6 +53,13 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
     const BspNode* nodes = detail::blob_at<BspNode>(blob.data(), l.nodes);
     const BspTriangle* tris = detail::blob_at<BspTriangle>(blob.data(), l.triangles);
     const Vec3q16* verts = detail::blob_at<Vec3q16>(blob.data(), l.vertices);
+    // Vertices first: a tree built over points outside the BSP world says so (out_of_range), rather than
+    // failing a node's checks on planes through them (bad_data).
+    for (uint32_t i = 0; i < h.vertex_count; ++i) {
+        const int32_t c[3] = {verts[i].x.raw(), verts[i].y.raw(), verts[i].z.raw()};
+        for (int32_t e : c)
+            if (e <= -kBspWorldLimitRaw || e >= kBspWorldLimitRaw) return Status::out_of_range;
+    }
     for (uint32_t i = 0; i < h.node_count; ++i) {
         const BspNode& n = nodes[i];
         if (n.origin >= h.vertex_count || n.first > h.triangle_count || n.count > h.triangle_count - n.first) return Status::bad_data;
@@ -74,11 +81,6 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
         const BspTriangle& t = tris[i];
         if (t.v[0] >= h.vertex_count || t.v[1] >= h.vertex_count || t.v[2] >= h.vertex_count) return Status::bad_data;
         if ((t.face & ~(kBspFaceMask | kBspFaceBack)) != 0) return Status::bad_data;
-    }
-    for (uint32_t i = 0; i < h.vertex_count; ++i) {
-        const int32_t c[3] = {verts[i].x.raw(), verts[i].y.raw(), verts[i].z.raw()};
-        for (int32_t e : c)
-            if (e <= -kBspWorldLimitRaw || e >= kBspWorldLimitRaw) return Status::out_of_range;
     }
     // Shape and depth: a preorder walk (front child first) keeping one entry per level above the node in
     // the caller's stack: the back child still to visit there (kBspNone once taken, or when there is
