@@ -105,14 +105,15 @@ namespace detail {
 __attribute__((noinline)) inline bool plane_through_eye(const View& view, const Vec3q16& p0, const Vec3q16& p1,
                                                         const Vec3q16& p2) {
     const ViewPoint a = to_view_point(view, p0), b = to_view_point(view, p1), c = to_view_point(view, p2);
+    const int64_t av[3] = {a.x, a.y, a.w};
     const int64_t e1[3] = {int64_t{b.x} - a.x, int64_t{b.y} - a.y, int64_t{b.w} - a.w};
     const int64_t e2[3] = {int64_t{c.x} - a.x, int64_t{c.y} - a.y, int64_t{c.w} - a.w};
-    const Int128 n[3] = {mul128(e1[1], e2[2]) - mul128(e1[2], e2[1]), mul128(e1[2], e2[0]) - mul128(e1[0], e2[2]),
-                         mul128(e1[0], e2[1]) - mul128(e1[1], e2[0])};  // |n_i| < 2^65
-    const Int128 d = mul128(n[0], a.x) + mul128(n[1], a.y) + mul128(n[2], a.w);  // |d| < 2^98
-    Int128 bound{};
-    for (const Int128& v : n) {
-        const Int128 m = v.sign() < 0 ? -v : v;
+    Int128 d{}, bound{};  // d = n . a (|d| < 2^98), bound = max |n_i|
+    for (int i = 0; i < 3; ++i) {  // one loop body: the 128-bit products appear once in the code
+        const int j = i == 2 ? 0 : i + 1, k = j == 2 ? 0 : j + 1;
+        const Int128 n = mul128(e1[j], e2[k]) - mul128(e1[k], e2[j]);  // |n_i| < 2^65
+        d = d + mul128(n, av[i]);
+        const Int128 m = n.sign() < 0 ? -n : n;
         if ((m - bound).sign() > 0) bound = m;
     }
     bound = bound + bound;
