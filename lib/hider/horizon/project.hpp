@@ -125,8 +125,8 @@ public:
     /// 2^14 units (detail::scale16()), up to 2^(14 + d) / W subpixels at a point of scaled distance W (d:
     /// the axis's shift over W's). Counted against the nearest corner that term would swamp the bound on
     /// every view, so it is not; it shows where points in the frame lie much nearer than the box's extent
-    /// (a red team's close view with the surface reaching far outside the frame: 1.66 pixels against a
-    /// bound of 0.375). hider-plot therefore also measures every point against its exact projection.
+    /// (README, "Floating horizon"). hider-plot therefore also measures every point against its exact
+    /// projection.
     int32_t error_bound_subpixels() const { return error_subpixels_; }
 
     const Surface& surface() const { return surface_; }

@@ -98,10 +98,9 @@ namespace detail {
 /// Whether the plane of triangle (p0, p1, p2), in view space, passes within about 4 raw units of the eye
 /// (the origin): |n . a| <= 4 max|n_i| for n = (b - a) x (c - a), exact in 128 bits. Rounding to view
 /// space moves each vertex by a raw unit or two, so such a triangle may be one the eye sees exactly
-/// edge-on; clipped at the near plane, that rounding opens a wedge across the screen (a red team: 552
-/// pixels at 320x240, status ok, where the BSP's exact eye test and ray casting show nothing). Out of
-/// line, taking the world points: its 128-bit temporaries and the view points stay off the frame of the
-/// clip path (the band renderer's deepest stack).
+/// edge-on; clipped at the near plane, that rounding would open a wedge across the screen, where the
+/// BSP's exact eye test and ray casting show nothing. Out of line, taking the world points: its 128-bit
+/// temporaries and the view points stay off the frame of the clip path (the band renderer's deepest stack).
 __attribute__((noinline)) inline bool plane_through_eye(const View& view, const Vec3q16& p0, const Vec3q16& p1,
                                                         const Vec3q16& p2) {
     const ViewPoint a = to_view_point(view, p0), b = to_view_point(view, p1), c = to_view_point(view, p2);
