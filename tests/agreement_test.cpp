@@ -205,17 +205,8 @@ TEST_CASE("a triangle whose plane holds the eye, crossing the near plane, draws 
             for (const tool::Algo algo : algos)
                 for (const bool cull : {false, true})
                     for (const int bits : {16, 32}) {
-                        tool::RenderOptions opt;
-                        opt.algo = algo;
-                        opt.shade = Shade::id;
-                        opt.format = tool::PixelFormat::rgb888;
-                        opt.cull = cull;
-                        opt.depth_bits = bits;
-                        tool::RenderResult r;
-                        std::string why;
-                        REQUIRE_MESSAGE(tool::render(s, opt, r, why), why);
                         long edge_on = 0, wall = 0;
-                        for (const uint32_t id : tool::decode_ids(r)) {
+                        for (const uint32_t id : tool::decode_ids(test::render_ids(s, algo, cull, bits))) {
                             edge_on += id == 2;
                             wall += id == 1;
                         }

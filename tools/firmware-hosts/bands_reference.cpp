@@ -11,6 +11,7 @@
 #include "common/scenes/torus_160x128.hpp"
 #include "common/scenes/torus_320x240.hpp"
 #include "spin/app.hpp"
+#include "band_memory.hpp"
 #include "stdio_io.hpp"
 
 extern "C" void bench_begin() {}
@@ -32,23 +33,7 @@ struct MemoryIo {
     void print_u32(uint32_t) {}
 };
 
-/// Band renderer memory for `rows` rows and `carried` slots (what the firmware declares statically).
-struct Memory {
-    std::vector<hider::ScreenVertex> verts;
-    std::vector<uint16_t> color, depth, next, head;
-    std::vector<hider::KernelTriangle> carried;
-    std::vector<uint8_t> slots;
-    int32_t rows;
-    Memory(const spin::Scene& s, int32_t band_rows, size_t carried_slots)
-        : verts(s.mesh.positions.size()), color(static_cast<size_t>(s.width) * band_rows), depth(color.size()),
-          next(s.mesh.tris.size()), head(static_cast<size_t>((s.height + band_rows - 1) / band_rows)),
-          carried(carried_slots), slots(3 * carried_slots), rows(band_rows) {}
-    bands::BandBuffers buffers() {
-        return {{verts.data(), verts.size()}, {color.data(), color.size()}, {depth.data(), depth.size()}, rows,
-                {{next.data(), next.size()}, {head.data(), head.size()}, {carried.data(), carried.size()},
-                 {slots.data(), slots.size()}}};
-    }
-};
+using Memory = host::BandMemory;
 
 std::vector<uint8_t> full_frame_ppm(const spin::Scene& s) {
     std::vector<uint16_t> color(static_cast<size_t>(s.width) * s.height), depth(color.size());

@@ -8,6 +8,7 @@
 #include "common/scenes/torus_160x128.hpp"
 #include "oled/oled.hpp"
 #include "spin/render.hpp"
+#include "band_memory.hpp"
 #include "stdio_io.hpp"
 
 extern "C" void bench_begin() {}
@@ -36,23 +37,7 @@ bool lit(uint16_t p, int x, int y) {
     return luma > kBayer[y & 7][x & 7] * 4 + 2;
 }
 
-/// Band renderer memory for `rows` rows and `slots` carried slots.
-struct Memory {
-    std::vector<hider::ScreenVertex> verts;
-    std::vector<uint16_t> color, depth, next, head;
-    std::vector<hider::KernelTriangle> carried;
-    std::vector<uint8_t> order;
-    int32_t rows;
-    Memory(const spin::Scene& s, int32_t band_rows, size_t slots)
-        : verts(s.mesh.positions.size()), color(static_cast<size_t>(s.width) * band_rows), depth(color.size()),
-          next(s.mesh.tris.size()), head(static_cast<size_t>((s.height + band_rows - 1) / band_rows)), carried(slots),
-          order(3 * slots), rows(band_rows) {}
-    bands::BandBuffers buffers() {
-        return {{verts.data(), verts.size()}, {color.data(), color.size()}, {depth.data(), depth.size()}, rows,
-                {{next.data(), next.size()}, {head.data(), head.size()}, {carried.data(), carried.size()},
-                 {order.data(), order.size()}}};
-    }
-};
+using Memory = host::BandMemory;
 
 }  // namespace
 
