@@ -294,6 +294,37 @@ void add_triangle(RayScene::MeshData& m, const Vec3q16& a, const Vec3q16& b, con
     m.normals.push_back(face_normal(a, b, c));
 }
 
+/// How far a triangle reaches from `eye` on any axis (raw), as bvh_reach() measures a mesh's box.
+uint32_t triangle_reach(const RayScene::MeshData& m, const Tri& t, const Vec3q16& eye) {
+    uint32_t reach = 0;
+    for (const uint16_t v : t.v) {
+        const Vec3q16& p = m.positions[v];
+        for (const int64_t d : {int64_t{p.x.raw()} - eye.x.raw(), int64_t{p.y.raw()} - eye.y.raw(), int64_t{p.z.raw()} - eye.z.raw()})
+            reach = std::max(reach, static_cast<uint32_t>(d < 0 ? -d : d));
+    }
+    return reach;
+}
+
+/// The loose triangles as one mesh per vertex grid the eye's rays would give each of them alone
+/// (ray::triangle_grid_shift() of its reach), nearest first, file order within each: one triangle far
+/// away then no longer coarsens the grid of near ones (README "Ray tracing").
+std::vector<RayScene::MeshData> split_by_grid(const RayScene::MeshData& loose, const Vec3q16& eye) {
+    std::vector<RayScene::MeshData> groups;
+    std::vector<int> keys(loose.tris.size());
+    for (size_t i = 0; i < loose.tris.size(); ++i) keys[i] = ray::triangle_grid_shift(triangle_reach(loose, loose.tris[i], eye));
+    std::vector<int> order(keys);
+    std::sort(order.begin(), order.end());
+    order.erase(std::unique(order.begin(), order.end()), order.end());
+    groups.resize(order.size());
+    for (size_t i = 0; i < loose.tris.size(); ++i) {
+        RayScene::MeshData& g = groups[static_cast<size_t>(std::lower_bound(order.begin(), order.end(), keys[i]) - order.begin())];
+        const Tri& t = loose.tris[i];
+        add_triangle(g, loose.positions[t.v[0]], loose.positions[t.v[1]], loose.positions[t.v[2]]);
+        g.surfaces.push_back(loose.surfaces[i]);
+    }
+    return groups;
+}
+
 bool read_triangle(Statement& st, RayScene::MeshData& loose, RayScene& s, std::string& error) {
     Vec3q16 p[3];
     static const char* kNames[3] = {"vertex 1", "vertex 2", "vertex 3"};
@@ -541,11 +572,11 @@ bool parse_ray_scene(std::istream& in, const std::string& name, const std::strin
     }
     std::string why;
     if (!finish_camera(cam, s, why)) return fail(why);
-    if (!loose.tris.empty()) {
-        if (!build_bvh({{loose.positions.data(), loose.positions.size()}, {loose.tris.data(), loose.tris.size()}, {}, {}},
-                       loose.bvh, why))
+    for (RayScene::MeshData& group : split_by_grid(loose, s.camera.eye)) {
+        if (!build_bvh({{group.positions.data(), group.positions.size()}, {group.tris.data(), group.tris.size()}, {}, {}},
+                       group.bvh, why))
             return fail(why);
-        s.meshes.push_back(std::move(loose));
+        s.meshes.push_back(std::move(group));
     }
     s.sphere_bound = ray::enclosing_sphere({s.spheres.data(), s.spheres.size()});
     std::vector<ray::BvhStackEntry> stack(s.stack_depth());
@@ -620,7 +651,7 @@ std::vector<std::string> grid_warnings(const RayScene& s) {
                       "mesh %zu%s reaches %.0f units from the eye, so ray tests see its vertices on a grid of %g units: "
                       "%zu of its %zu triangles have an edge under 8 steps of it or collapse, and may turn over or leave holes "
                       "where rays graze them (put distant geometry in a mesh of its own, or use a plane)",
-                      m + 1, md.surfaces.empty() ? "" : " (the loose `triangle` lines)", reach / 65536.0,
+                      m + 1, md.surfaces.empty() ? "" : " (loose `triangle` lines)", reach / 65536.0,
                       static_cast<double>(int64_t{1} << shift) / 65536.0, bad, md.tris.size());
         out.emplace_back(line);
     }
