@@ -68,10 +68,18 @@ HIDER_SEQUENCE(dual, "sub sp, #8\n\tstrd r0, r1, [sp]\n\tldrd r2, r3, [sp]\n\tad
 // page, which pairs with it.
 HIDER_SEQUENCE(page_end, "sub sp, #16\n\tmov r1, sp\n\tmov r2, sp\n\tb 1f\n\t.balign 1024\n\t.space 1020\n1:\n\tnop\n\t"
                          "ldr r0, [r1]\n\tldr r1, [r2]\n\tadd sp, #16\n\tbx lr\n")
+// Table branches and a load to PC: blocking loads (3.3.1: TBB/TBH "at least six cycles", LDR PC "at least
+// five"), which stall like any load whose address the preceding data-processing instruction wrote.
+HIDER_SEQUENCE(table_branch, "movs r0, #1\n\tnop\n\ttbb [pc, r0]\n1:\n\t.byte 0, (2f - 1b) / 2\n\t.balign 2\n\tnop\n2:\n\t"
+                             "bx lr\n")
+HIDER_SEQUENCE(table_branch_stall, "movs r0, #1\n\ttbb [pc, r0]\n1:\n\t.byte 0, (2f - 1b) / 2\n\t.balign 2\n\tnop\n2:\n\t"
+                                   "bx lr\n")
+HIDER_SEQUENCE(load_pc_stall, "adr r0, 1f\n\tadds r0, r0, #1\n\tpush {r0}\n\tsub sp, #8\n\tadd sp, #8\n\tldr pc, [sp], #4\n\t"
+                              ".balign 4\n1:\n\tbx lr\n")
 const Sequence kSequences[] = {empty,        alu,      multiply,         load_pair,    load_triple, stores,
                                address_stall, load_use, branch_not_taken, branch_taken, loop,        divide,
                                long_multiply, multiple, push_pop_return,  if_then,      call_return, dual,
-                               page_end};
+                               page_end,      table_branch, table_branch_stall, load_pc_stall};
 #else
 const Sequence kSequences[] = {nullptr};  // no cycle model for this target: the firmware is not built
 #endif

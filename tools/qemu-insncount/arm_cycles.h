@@ -15,7 +15,8 @@
  * STR Rt,[Rn,#imm] 1 (write buffer); a single load or store right after a single LDR (no base update, not
  * to PC) whose destination does not form its address costs one cycle less; a load or store (multiples
  * too) whose address register the preceding data-processing instruction wrote stalls one cycle; LDRD/STRD 3;
- * LDM/STM 1+N (+P with PC); LDR PC 5; TBB/TBH 3+P. Left out: wait states and bus contention, the base-update
+ * LDM/STM 1+N (+P with PC); LDR PC 5 and TBB/TBH 6 (3.3.1: "at least five" / "at least six cycles": load 2,
+ * (add 1,) reload 3; blocking, so classed with the multiples and stalled like them). Left out: wait states and bus contention, the base-update
  * load's one-cycle case, IT-skipped instructions (charged as executed), interrupts and exceptions. */
 #ifndef HIDER_ARM_CYCLES_H
 #define HIDER_ARM_CYCLES_H
@@ -30,7 +31,7 @@ enum InsnClass {
     CLS_DP,         /* data processing with destination registers (dest) */
     CLS_LDR,        /* single load, no base update, not to PC: can pipeline the next load/store */
     CLS_LOADSTORE,  /* other single load or store: may gain from a preceding LDR, stalls on a DP address */
-    CLS_MULTI,      /* LDM, STM, PUSH, POP, LDRD, STRD: never pipelined, stall on a DP address */
+    CLS_MULTI,      /* LDM, STM, PUSH, POP, LDRD, STRD, LDR PC, TBB/TBH: never pipelined, stall on a DP address */
 };
 
 typedef struct {
@@ -105,7 +106,11 @@ static InsnCost cost_dp(uint16_t dest) {
 static InsnCost cost_single(int load, int writeback, int rt, int rn, int rm, int store_imm) {
     InsnCost c;
     const uint16_t addr = (uint16_t)((1u << rn) | (rm >= 0 ? 1u << rm : 0u));
-    if (load && rt == 15) return cost_const(5, 5);                  /* LDR PC: "at least five cycles" */
+    if (load && rt == 15) {                                         /* LDR PC: "at least five cycles", blocking */
+        c = cost_multi(5, 5, rn);
+        c.addr = addr;
+        return c;
+    }
     if (load && rn == 15) {                                         /* literal: "might add a cycle" */
         c = cost_const(2, 3);
         c.cls = CLS_LOADSTORE;
@@ -185,7 +190,11 @@ static InsnCost cost_m3_32(uint32_t hw, uint32_t hw2) {
         return cost_multi(n, n, (int)rn);
     }
     if ((hw & 0xFE40u) == 0xE840u) {                                              /* dual, exclusive, table branch */
-        if ((hw & 0xFFF0u) == 0xE8D0u && (hw2 & 0x00E0u) == 0x0000u) return cost_const(3 + P_LO, 3 + P_HI);  /* TBB, TBH */
+        if ((hw & 0xFFF0u) == 0xE8D0u && (hw2 & 0x00E0u) == 0x0000u) {          /* TBB, TBH: "at least six cycles" */
+            InsnCost c = cost_multi(6, 6, (int)rn);
+            c.addr |= (uint16_t)(1u << (hw2 & 0xFu));                            /* the index forms the address too */
+            return c;
+        }
         if ((hw & 0x0120u) != 0) return cost_multi(3, 3, (int)rn);                /* LDRD, STRD */
         return cost_single((hw & 0x0010u) != 0, 0, (int)rt, (int)rn, -1, 0);      /* LDREX, STREX */
     }
