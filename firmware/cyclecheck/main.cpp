@@ -76,10 +76,12 @@ HIDER_SEQUENCE(table_branch_stall, "movs r0, #1\n\ttbb [pc, r0]\n1:\n\t.byte 0, 
                                    "bx lr\n")
 HIDER_SEQUENCE(load_pc_stall, "adr r0, 1f\n\tadds r0, r0, #1\n\tpush {r0}\n\tsub sp, #8\n\tadd sp, #8\n\tldr pc, [sp], #4\n\t"
                               ".balign 4\n1:\n\tbx lr\n")
+// An IT after a 32-bit instruction: nothing 16-bit to fold onto, so it takes its cycle.
+HIDER_SEQUENCE(if_then_wide, "movs r0, #0\n\tcmp.w r0, #0\n\tit eq\n\tmoveq r1, r0\n\tbx lr\n")
 const Sequence kSequences[] = {empty,        alu,      multiply,         load_pair,    load_triple, stores,
                                address_stall, load_use, branch_not_taken, branch_taken, loop,        divide,
                                long_multiply, multiple, push_pop_return,  if_then,      call_return, dual,
-                               page_end,      table_branch, table_branch_stall, load_pc_stall};
+                               page_end,      table_branch, table_branch_stall, load_pc_stall, if_then_wide};
 #else
 const Sequence kSequences[] = {nullptr};  // no cycle model for this target: the firmware is not built
 #endif

@@ -10,7 +10,8 @@
  * Cortex-M3 (ARM DDI 0337I, table 3-1 and section 3.3.1 "Load/store timings"): P, the pipeline refill of
  * a taken branch, is 1..3 cycles "depending on the alignment and width of the target instruction", so
  * branches are ranges; so are the divides (2..12, early termination on the operands), the long multiplies
- * (3..5, accumulating 4..7), an IT (0 when folded onto the preceding 16-bit instruction, else 1) and a
+ * (3..5, accumulating 4..7), an IT (0 when folded onto the preceding 16-bit instruction, else 1: 0..1 after
+ * a 16-bit instruction that falls through to it, 1 after a 32-bit one) and a
  * PC-relative load (2, "might add a cycle"). Exact rules applied within a translated block: LDR/STR 2,
  * STR Rt,[Rn,#imm] 1 (write buffer); a single load or store right after a single LDR (no base update, not
  * to PC) whose destination does not form its address costs one cycle less; a load or store (multiples
@@ -32,6 +33,7 @@ enum InsnClass {
     CLS_LDR,        /* single load, no base update, not to PC: can pipeline the next load/store */
     CLS_LOADSTORE,  /* other single load or store: may gain from a preceding LDR, stalls on a DP address */
     CLS_MULTI,      /* LDM, STM, PUSH, POP, LDRD, STRD, LDR PC, TBB/TBH: never pipelined, stall on a DP address */
+    CLS_IT,         /* IT: folds (0 cycles) only onto a preceding 16-bit instruction, else 1 */
 };
 
 typedef struct {
@@ -39,6 +41,7 @@ typedef struct {
     uint8_t taken_lo, taken_hi;  /* extra cycles when it is a conditional branch that is taken */
     uint8_t cls;                 /* InsnClass */
     uint8_t store_imm;           /* CLS_LOADSTORE: STR Rt,[Rn,#imm] (already 1 cycle) */
+    uint8_t wide;                /* a 32-bit encoding (an IT after it cannot fold) */
     uint16_t dest;               /* registers written (CLS_DP, CLS_LDR) */
     uint16_t addr;               /* registers forming the address (loads and stores) */
 } InsnCost;
@@ -50,7 +53,7 @@ static int popcount16(uint32_t v) {
 }
 
 static InsnCost cost_const(int lo, int hi) {
-    InsnCost c = {(uint8_t)lo, (uint8_t)hi, 0, 0, CLS_OTHER, 0, 0, 0};
+    InsnCost c = {(uint8_t)lo, (uint8_t)hi, 0, 0, CLS_OTHER, 0, 0, 0, 0};
     return c;
 }
 
@@ -167,7 +170,11 @@ static InsnCost cost_m3_16(uint32_t hw) {
         const int n = 1 + popcount16(hw & 0x1FFu);
         return (hw & 0x100u) != 0 ? cost_multi(n + P_LO, n + P_HI, 13) : cost_multi(n, n, 13);
     }
-    if ((hw & 0xFF00u) == 0xBF00u && (hw & 0xFu) != 0) return cost_const(0, 1);  /* IT (folded or not) */
+    if ((hw & 0xFF00u) == 0xBF00u && (hw & 0xFu) != 0) {                         /* IT (folded or not) */
+        InsnCost c = cost_const(0, 1);
+        c.cls = CLS_IT;
+        return c;
+    }
     if ((hw & 0xF000u) == 0xC000u) {                                              /* LDM, STM */
         const int n = 1 + popcount16(hw & 0xFFu);
         return cost_multi(n, n, (hw >> 8) & 7);
@@ -268,11 +275,14 @@ static InsnCost insn_cost(int model, const uint8_t *data, int size) {
     const uint32_t hw = (uint32_t)data[0] | ((uint32_t)data[1] << 8);
     const uint32_t hw2 = size == 4 ? (uint32_t)data[2] | ((uint32_t)data[3] << 8) : 0;
     if (model == MODEL_M0PLUS) return cost_m0plus(hw, hw2, size);
-    return size == 4 ? cost_m3_32(hw, hw2) : cost_m3_16(hw);
+    InsnCost c = size == 4 ? cost_m3_32(hw, hw2) : cost_m3_16(hw);
+    c.wide = (uint8_t)(size == 4);
+    return c;
 }
 
 /* The Cortex-M3's pairing rules between an instruction and the one before it in the same block. */
 static void pair_m3(const InsnCost *prev, InsnCost *cur) {
+    if (cur->cls == CLS_IT && prev->wide) cur->lo = 1;  /* nothing 16-bit to fold onto */
     if (cur->cls != CLS_LDR && cur->cls != CLS_LOADSTORE && cur->cls != CLS_MULTI) return;
     if (prev->cls == CLS_LDR && cur->cls != CLS_MULTI && (prev->dest & cur->addr) == 0) {
         if (!cur->store_imm && cur->lo > 1) { cur->lo--; cur->hi--; }
