@@ -38,8 +38,16 @@ HIDER_SEQUENCE(system, "mrs r0, msp\n\tdsb\n\tbx lr\n")
 // ADDS it is.
 HIDER_SEQUENCE(page_end, "b 1f\n\t.balign 1024\n\t.space 1020\n1:\n\tadds r0, r0, #1\n\tadds r0, r0, #1\n\t"
                          "adds r0, r0, #1\n\tbx lr\n")
+// Encodings the firmware uses that the sequences above leave out.
+HIDER_SEQUENCE(load_literal, "ldr r0, 1f\n\tbx lr\n\t.balign 4\n1:\n\t.word 0x12345678\n")
+HIDER_SEQUENCE(signed_loads, "sub sp, sp, #8\n\tmov r1, sp\n\tmovs r2, #0\n\tstr r2, [r1]\n\tldrsh r3, [r1, r2]\n\t"
+                             "ldrsb r3, [r1, r2]\n\tadd sp, sp, #8\n\tbx lr\n")
+HIDER_SEQUENCE(add_to_pc, "movs r0, #2\n\tadd pc, r0\n\tnop\n\tnop\n\tbx lr\n")
+HIDER_SEQUENCE(call_register, "push {lr}\n\tadr r0, 1f\n\tadds r0, r0, #1\n\tblx r0\n\tpop {pc}\n\t.balign 4\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(barriers, "cpsid i\n\tcpsie i\n\tdmb\n\tisb\n\tbx lr\n")
 const Sequence kSequences[] = {empty, alu, multiply, load_store, multiple, push_pop, call_return, branch_not_taken,
-                               branch_taken, loop, branch, branch_register, move_to_pc, system, page_end};
+                               branch_taken, loop, branch, branch_register, move_to_pc, system, page_end,
+                               load_literal, signed_loads, add_to_pc, call_register, barriers};
 #elif defined(__ARM_ARCH_7M__)
 // Cortex-M3 (ARM DDI 0337I table 3-1 and 3.3.1 "Load/store timings"); cycles in expected_m3.txt.
 HIDER_SEQUENCE(empty, "bx lr\n")
@@ -76,12 +84,24 @@ HIDER_SEQUENCE(table_branch_stall, "movs r0, #1\n\ttbb [pc, r0]\n1:\n\t.byte 0, 
                                    "bx lr\n")
 HIDER_SEQUENCE(load_pc_stall, "adr r0, 1f\n\tadds r0, r0, #1\n\tpush {r0}\n\tsub sp, #8\n\tadd sp, #8\n\tldr pc, [sp], #4\n\t"
                               ".balign 4\n1:\n\tbx lr\n")
+// Encodings the firmware uses that the sequences above leave out.
+HIDER_SEQUENCE(load_literal, "ldr r0, 1f\n\tbx lr\n\t.balign 4\n1:\n\t.word 0x12345678\n")
+HIDER_SEQUENCE(compare_branch, "movs r0, #0\n\tcbz r0, 1f\n\tnop\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(compare_branch_not_taken, "movs r0, #0\n\tcbnz r0, 1f\n\tnop\n1:\n\tbx lr\n")
+HIDER_SEQUENCE(post_indexed, "sub sp, #8\n\tmov r1, sp\n\tnop\n\tldr r0, [r1], #4\n\tldr r2, [r1]\n\tadd sp, #8\n\tbx lr\n")
+HIDER_SEQUENCE(divide_long, "movs r0, #100\n\tmovs r1, #7\n\tsdiv r2, r0, r1\n\tmls r3, r2, r1, r0\n\tsmull r2, r3, r0, r1\n\t"
+                            "smlal r2, r3, r0, r1\n\tbx lr\n")
+HIDER_SEQUENCE(pop_wide, "push {r4, r8, lr}\n\tpop {r4, r8, pc}\n")
+HIDER_SEQUENCE(loads_wide, "sub sp, #8\n\tmov r1, sp\n\tmovs r2, #0\n\tstr r2, [r1, #4]\n\tnop\n\tldrsh.w r3, [r1, r2]\n\t"
+                           "ldrb.w r0, [r1, r2, lsl #1]\n\tadd sp, #8\n\tbx lr\n")
 // An IT after a 32-bit instruction: nothing 16-bit to fold onto, so it takes its cycle.
 HIDER_SEQUENCE(if_then_wide, "movs r0, #0\n\tcmp.w r0, #0\n\tit eq\n\tmoveq r1, r0\n\tbx lr\n")
 const Sequence kSequences[] = {empty,        alu,      multiply,         load_pair,    load_triple, stores,
                                address_stall, load_use, branch_not_taken, branch_taken, loop,        divide,
                                long_multiply, multiple, push_pop_return,  if_then,      call_return, dual,
-                               page_end,      table_branch, table_branch_stall, load_pc_stall, if_then_wide};
+                               page_end,      table_branch, table_branch_stall, load_pc_stall, if_then_wide,
+                               load_literal,  compare_branch, compare_branch_not_taken, post_indexed, divide_long,
+                               pop_wide,      loads_wide};
 #else
 const Sequence kSequences[] = {nullptr};  // no cycle model for this target: the firmware is not built
 #endif
