@@ -42,12 +42,10 @@ HIDER_SEQUENCE(page_end, "b 1f\n\t.balign 1024\n\t.space 1020\n1:\n\tadds r0, r0
 HIDER_SEQUENCE(load_literal, "ldr r0, 1f\n\tbx lr\n\t.balign 4\n1:\n\t.word 0x12345678\n")
 HIDER_SEQUENCE(signed_loads, "sub sp, sp, #8\n\tmov r1, sp\n\tmovs r2, #0\n\tstr r2, [r1]\n\tldrsh r3, [r1, r2]\n\t"
                              "ldrsb r3, [r1, r2]\n\tadd sp, sp, #8\n\tbx lr\n")
-HIDER_SEQUENCE(add_to_pc, "movs r0, #2\n\tadd pc, r0\n\tnop\n\tnop\n\tbx lr\n")
-HIDER_SEQUENCE(call_register, "push {lr}\n\tadr r0, 1f\n\tadds r0, r0, #1\n\tblx r0\n\tpop {pc}\n\t.balign 4\n1:\n\tbx lr\n")
 HIDER_SEQUENCE(barriers, "cpsid i\n\tcpsie i\n\tdmb\n\tisb\n\tbx lr\n")
 const Sequence kSequences[] = {empty, alu, multiply, load_store, multiple, push_pop, call_return, branch_not_taken,
                                branch_taken, loop, branch, branch_register, move_to_pc, system, page_end,
-                               load_literal, signed_loads, add_to_pc, call_register, barriers};
+                               load_literal, signed_loads, barriers};
 #elif defined(__ARM_ARCH_7M__)
 // Cortex-M3 (ARM DDI 0337I table 3-1 and 3.3.1 "Load/store timings"); cycles in expected_m3.txt.
 HIDER_SEQUENCE(empty, "bx lr\n")

@@ -17,7 +17,8 @@
  * to PC) whose destination does not form its address costs one cycle less; a load or store (multiples
  * too) whose address register the preceding data-processing instruction wrote stalls one cycle; LDRD/STRD 3;
  * LDM/STM 1+N (+P with PC); LDR PC 5 and TBB/TBH 6 (3.3.1: "at least five" / "at least six cycles": load 2,
- * (add 1,) reload 3; blocking, so classed with the multiples and stalled like them). Left out: wait states and bus contention, the base-update
+ * (add 1,) reload 3; blocking, so classed with the multiples and stalled like them; where table 3-1's
+ * summary row differs, the model follows 3.3.1's breakdown). Left out: wait states and bus contention, the base-update
  * load's one-cycle case, IT-skipped instructions (charged as executed), interrupts and exceptions. */
 #ifndef HIDER_ARM_CYCLES_H
 #define HIDER_ARM_CYCLES_H

@@ -32,10 +32,12 @@ if [ -z "$plugin" ]; then
     here=$(cd "$(dirname "$0")" && pwd)
     src=$here/insncount.c
     cache=${XDG_CACHE_HOME:-$HOME/.cache}/hider-insncount
-    plugin=$cache/libinsncount.so
-    if [ ! -f "$plugin" ] || [ -n "$(find "$src" "$here/arm_cycles.h" -newer "$plugin")" ]; then
+    # one plugin per source text, so checkouts with different models never share a build
+    key=$(cat "$src" "$here/arm_cycles.h" | cksum | cut -d ' ' -f 1)
+    plugin=$cache/libinsncount-$key.so
+    if [ ! -f "$plugin" ]; then
         mkdir -p "$cache"
-        ${CC:-cc} -O2 -shared -fPIC -Wall -o "$plugin" "$src"
+        ${CC:-cc} -O2 -shared -fPIC -Wall -o "$plugin.$$" "$src" && mv -f "$plugin.$$" "$plugin"
     fi
 fi
 
