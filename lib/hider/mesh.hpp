@@ -43,4 +43,30 @@ inline Status validate(const Mesh& m) {
     return Status::ok;
 }
 
+/// validate() for a mesh drawn through with_model(view, model): also checks the placed mesh. A rigid
+/// model transform can carry a mesh that validate() accepts out of the world range (half a turn about
+/// the y axis through (-8000, 0, -8000) takes (8000, 0, 8000) to (-24000, 0, -24000)), and beyond it
+/// view-space coordinates can pass 2^15 units and wrap, which draws the mesh in the wrong place with
+/// status ok.
+/// Returns validate(m)'s errors, invalid_argument for a rotation entry beyond +-1 (Transform is rigid:
+/// no scale; the ARMv6-M transform also relies on it), out_of_range for a placed position outside the
+/// world range (computed exactly, without wrapping). Cost: O(vertices + triangles), as validate().
+inline Status validate(const Mesh& m, const Transform& model) {
+    const Status s = validate(m);
+    if (s != Status::ok) return s;
+    for (const auto& row : model.rot.m)
+        for (const Q30& e : row)
+            if (e.raw() < -Q30::kOne || e.raw() > Q30::kOne) return Status::invalid_argument;
+    const int32_t trans[3] = {model.trans.x.raw(), model.trans.y.raw(), model.trans.z.raw()};
+    for (const Vec3q16& p : m.positions)
+        for (int i = 0; i < 3; ++i) {
+            const Q30(&r)[3] = model.rot.m[i];
+            // apply()'s floor of the row product, then the translation in 64 bits (apply() wraps it).
+            const int64_t c = ((mul_wide(r[0].raw(), p.x.raw()) + mul_wide(r[1].raw(), p.y.raw()) +
+                                mul_wide(r[2].raw(), p.z.raw())) >> 30) + trans[i];
+            if (c <= -kWorldLimitRaw || c >= kWorldLimitRaw) return Status::out_of_range;
+        }
+    return Status::ok;
+}
+
 }  // namespace hider

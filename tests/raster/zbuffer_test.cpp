@@ -303,6 +303,48 @@ TEST_CASE("make_view and validate reject out-of-range cameras and meshes") {
     CHECK(validate(m) == Status::out_of_range);
 }
 
+TEST_CASE("validate(mesh, model) refuses a rigid model transform that carries a valid mesh out of the world") {
+    // A floor quad across the world, turned half a turn about the y axis through the camera target (as
+    // firmware/spin's turn() builds it): its near corner goes to (-24000, -100, -24000), 45,255 units from
+    // the eye, and its view coordinates wrapped, so the z-buffer drew 1,508 of the 64 x 48 pixels where
+    // the double reference draws none, with status ok (red-team repro/with_model_wrap.cpp).
+    auto p = [](int32_t x, int32_t y, int32_t z) { return Vec3q16{Q16::from_int(x), Q16::from_int(y), Q16::from_int(z)}; };
+    const Vec3q16 pos[4] = {p(8000, -100, 8000), p(-8000, -100, 8000), p(-8000, -100, -8000), p(8000, -100, -8000)};
+    const Tri tris[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
+    const Mesh mesh{{pos, 4}, {tris, 2}, {}, {}};
+    REQUIRE(validate(mesh) == Status::ok);
+    const Vec3q16 target = p(-8000, 0, -8000);
+    auto turn = [&](uint32_t bam) {
+        Transform t, r;
+        t.rot = rotation_y(Angle::from_bam(bam));
+        r.rot = t.rot;
+        t.trans = target - apply(r, target);
+        return t;
+    };
+    CHECK(validate(mesh, Transform{}) == Status::ok);
+    CHECK(validate(mesh, turn(0)) == Status::ok);
+    CHECK(validate(mesh, turn(0x80000000u)) == Status::out_of_range);
+    CHECK(validate(mesh, turn(0x20000000u)) == Status::out_of_range);  // an eighth of a turn leaves it too
+    // A small quad about the turn's axis stays inside under every turn.
+    const Vec3q16 small[4] = {p(-7900, -100, -8100), p(-8100, -100, -8100), p(-8100, -100, -7900), p(-7900, -100, -7900)};
+    const Mesh inner{{small, 4}, {tris, 2}, {}, {}};
+    for (uint32_t k = 0; k < 64; ++k) CHECK(validate(inner, turn(k << 26)) == Status::ok);
+    // validate(m)'s own errors come first; a scaled matrix is refused (Transform is rigid).
+    const Tri bad{{0, 1, 4}};
+    CHECK(validate(Mesh{{pos, 4}, {&bad, 1}, {}, {}}, Transform{}) == Status::bad_data);
+    Transform scaled;
+    scaled.rot.m[0][0] = Q30::from_raw(Q30::kOne + 1);
+    CHECK(validate(inner, scaled) == Status::invalid_argument);
+    scaled.rot.m[0][0] = Q30::from_raw(-Q30::kOne - 1);
+    CHECK(validate(inner, scaled) == Status::invalid_argument);
+    scaled.rot.m[0][0] = Q30::from_raw(-Q30::kOne);
+    CHECK(validate(inner, scaled) == Status::ok);
+    // A translation past 2^15 units wraps in apply(); the exact check still sees it.
+    Transform far;
+    far.trans = Vec3q16{Q16::from_raw(INT32_MAX), Q16::from_int(0), Q16::from_int(0)};
+    CHECK(validate(inner, far) == Status::out_of_range);
+}
+
 TEST_CASE("project_vertices' depth range spans exactly the drawable vertices") {
     tool::CameraArgs cam = front_camera(0);
     cam.target = tool::Vec3d{0, 0, -1};
