@@ -250,6 +250,31 @@ TEST_CASE("Unusable arguments draw nothing and say invalid_argument") {
     CHECK(plot(side, src, sc.hz, sc.b, t, st).status == Status::ok);
 }
 
+TEST_CASE("A MonoFrame band of more pages than its frame has is refused, however many (no page1 * 8 overflow)") {
+    // valid() computed page1 * 8 in int32: from 2^28 pages it wrapped below the height, so a 48-row frame
+    // claiming 2^29 pages was valid and plot() said ok and drew nothing (red-team
+    // repro/mono_frame_pages_overflow.cpp).
+    const Surface s = surface(-q(0.35).raw(), q(0.35).raw(), 1);
+    const std::vector<int32_t> g = grid_of(s);
+    const GridSource<int32_t> src{g.data(), kSamples, kCurves, 0};
+    SurfaceProjection p;
+    REQUIRE(p.prepare(camera(0.4, 1.6, 2.6), 64, 48, s) == Status::ok);
+    Scratch sc(64, 48);
+    std::vector<uint8_t> pages(64 * 6, 0);
+    for (int32_t page1 : {1, 6}) CHECK(MonoFrame{pages.data(), 64, 48, 0, page1}.valid());
+    for (int32_t page1 : {7, 0x0FFFFFFF, 0x10000000, 0x1FFFFFFF, 0x20000000, 0x40000000, INT32_MAX}) {
+        const MonoFrame f{pages.data(), 64, 48, 0, page1};
+        CHECK_FALSE(f.valid());
+        const PlotStats r = plot(p, src, sc.hz, sc.b, MonoTarget(f), palette_style());
+        CHECK(r.status == Status::invalid_argument);
+    }
+    CHECK(MonoFrame{pages.data(), 64, 47, 0, 6}.valid());   // 47 rows: 6 pages, the last one partly
+    CHECK_FALSE(MonoFrame{pages.data(), 64, 40, 0, 6}.valid());
+    const PlotStats ok = plot(p, src, sc.hz, sc.b, MonoTarget(MonoFrame{pages.data(), 64, 48, 0, 6}), palette_style());
+    CHECK(ok.status == Status::ok);
+    CHECK(ok.pixels > 0);
+}
+
 TEST_CASE("Heights outside the declared range are drawn at its limits and reported as out_of_range") {
     Surface s = surface(-q(0.35).raw(), q(0.35).raw(), 1);
     std::vector<int32_t> g = grid_of(s);

@@ -44,7 +44,7 @@ struct MonoFrame {
 
     bool valid() const {
         return pages != nullptr && width > 0 && height > 0 && width <= kMaxFrameSide && height <= kMaxFrameSide &&
-               0 <= page0 && page0 < page1 && page1 * 8 < height + 8;
+               0 <= page0 && page0 < page1 && page1 <= (height + 7) / 8;  // no page1 * 8: it wrapped past 2^28 pages
     }
     /// Bytes of the band: width per page.
     size_t bytes() const { return static_cast<size_t>(width) * static_cast<size_t>(page1 - page0); }
