@@ -90,3 +90,18 @@ TEST_CASE("Coverage::covered and paint_span agree with a per-pixel reference on 
         CHECK(cov.covered({0, width, y0, y1}));
     }
 }
+
+TEST_CASE("Coverage::reset refuses sizes out of range without overflowing on them") {
+    // width + 31 and y1 - y0 overflowed int32 (UBSan) for the frame sizes draw_bsp_front() passes on
+    // before it checks the frame (red-team pass over the public API).
+    std::vector<uint32_t> words(64);
+    Coverage cov;
+    CHECK(cov.reset({words.data(), words.size()}, 64, 0, 32));
+    CHECK_FALSE(cov.reset({words.data(), words.size()}, 64, 0, 33));
+    CHECK_FALSE(cov.reset({words.data(), words.size()}, INT32_MAX, 0, 1));
+    CHECK_FALSE(cov.reset({words.data(), words.size()}, 1025, 0, 1));
+    CHECK_FALSE(cov.reset({words.data(), words.size()}, 1, INT32_MIN, 1));
+    CHECK_FALSE(cov.reset({words.data(), words.size()}, 1, INT32_MIN, INT32_MAX));
+    CHECK_FALSE(cov.reset({words.data(), words.size()}, 1, 0, 0));
+    CHECK(cov.reset({words.data(), words.size()}, 1, -5, 59));  // rows count, not where they lie
+}

@@ -2,6 +2,7 @@
 // painted (or shaded) again, and whole polygons or subtrees whose screen box is already covered can be
 // skipped unseen. Doom's solidsegs (r_bsp.c) is the one-dimensional form of the same idea.
 #pragma once
+#include <hider/frame.hpp>
 #include <hider/raster/screen.hpp>
 
 namespace hider {
@@ -9,14 +10,18 @@ namespace hider {
 /// 32-bit words of coverage per row of a band `width` pixels wide.
 constexpr int32_t coverage_words(int32_t width) { return (width + 31) / 32; }
 
-/// Coverage of rows [y0, y1) of a frame `width` pixels wide, over caller memory of at least
-/// rows * coverage_words(width) words. Borrows the words; reset() clears them.
+/// Coverage of rows [y0, y1) of a frame `width` pixels wide (width and rows at most kMaxFrameSide), over
+/// caller memory of at least rows * coverage_words(width) words. Borrows the words; reset() clears them.
 class Coverage {
 public:
-    /// Takes `words` for the band and clears them; false (nothing kept) when they are too few.
+    /// Takes `words` for the band and clears them; false (nothing kept) when they are too few or a size
+    /// is out of range.
     bool reset(Span<uint32_t> words, int32_t width, int32_t y0, int32_t y1) {
+        // Sizes checked before any arithmetic on them: width + 31 and y1 - y0 overflowed int32 for a
+        // frame draw_bsp_front() had not checked yet (it resets the coverage first).
+        if (width < 1 || width > kMaxFrameSide || y1 <= y0 || int64_t{y1} - y0 > kMaxFrameSide) return false;
         const int32_t wpr = coverage_words(width);
-        if (width < 1 || y1 <= y0 || words.size() < static_cast<size_t>(wpr) * static_cast<size_t>(y1 - y0)) return false;
+        if (words.size() < static_cast<size_t>(wpr) * static_cast<size_t>(y1 - y0)) return false;
         words_ = words.data();
         width_ = width;
         wpr_ = wpr;
