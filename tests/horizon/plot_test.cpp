@@ -306,6 +306,61 @@ TEST_CASE("Heights outside the declared range are drawn at its limits and report
 
 namespace {
 
+/// The bumps, lifted to [0, 0.7] (unsigned types hold them), with a peak of `huge` in the middle, as T;
+/// and the same surface with the peak at value_max as int32_t, which is what the clamp means.
+template <class T>
+void wide_heights_plot_as_clamped(T huge, const char* type) {
+    CAPTURE(type);
+    Surface s = surface(0, q(0.7).raw(), 1);
+    const std::vector<int32_t> g = grid_of(s);
+    std::vector<T> wide(g.size());
+    std::vector<int32_t> clamped(g.size());
+    for (int k = 0; k < kCurves; ++k)
+        for (int i = 0; i < kSamples; ++i) {
+            const size_t at = static_cast<size_t>(k) * kSamples + i;
+            const bool peak = k >= 10 && k < 14 && i >= 25 && i < 35;
+            wide[at] = peak ? huge : static_cast<T>(g[at] + q(0.35).raw());
+            clamped[at] = peak ? s.value_max : g[at] + q(0.35).raw();
+        }
+    const Camera views[2] = {camera(0.4, 1.6, 2.6), camera(3.0, 1.2, 0.3)};  // curves, and constant-x lines
+    for (const Camera& cam : views)
+        for (Shading shading : {Shading::palette, Shading::height}) {
+            SurfaceProjection p;
+            REQUIRE(p.prepare(cam, 96, 72, s) == Status::ok);
+            PlotStyle st = palette_style(true);
+            st.shading = shading;
+            std::vector<Rgb888> a(96 * 72), b(96 * 72);
+            Scratch sa(96, 72), sb(96, 72);
+            const PlotStats ra = plot(p, GridSource<T>{wide.data(), kSamples, kCurves, 0}, sa.hz, sa.b,
+                                      FrameTarget<Rgb888Format>(frame_view<Rgb888Format, uint16_t>(a.data(), nullptr, 96, 72)), st);
+            const PlotStats rb = plot(p, GridSource<int32_t>{clamped.data(), kSamples, kCurves, 0}, sb.hz, sb.b,
+                                      FrameTarget<Rgb888Format>(frame_view<Rgb888Format, uint16_t>(b.data(), nullptr, 96, 72)), st);
+            CHECK(ra.status == Status::out_of_range);
+            CHECK(rb.status == Status::ok);
+            CHECK(same(a, b));
+            CHECK(lit(a) > 300);
+        }
+}
+
+}  // namespace
+
+TEST_CASE("Heights of a type wider than int32 (or unsigned 32-bit) are clamped and counted, not wrapped") {
+    // They were cast to int32_t before the range check: a uint32_t height of 2^32 - 1 was drawn as -1 (at
+    // the bottom), an int64_t one of 2^32 + 50 at 50 with status ok (red-team repro/horizon_wide_heights.cpp).
+    wide_heights_plot_as_clamped<uint32_t>(UINT32_MAX, "uint32_t");
+    wide_heights_plot_as_clamped<int64_t>((int64_t{1} << 32) + 50, "int64_t");
+    wide_heights_plot_as_clamped<int64_t>(INT64_MAX, "int64_t max");
+    wide_heights_plot_as_clamped<uint64_t>((uint64_t{1} << 63) + 7, "uint64_t");
+    wide_heights_plot_as_clamped<int32_t>(INT32_MAX, "int32_t");
+    CHECK(horizon::detail::height_value<int64_t>(INT64_MIN) == INT32_MIN);
+    CHECK(horizon::detail::height_value<int64_t>(-5) == -5);
+    CHECK(horizon::detail::height_value<uint32_t>(0x80000000u) == INT32_MAX);
+    CHECK(horizon::detail::height_value<uint16_t>(65535) == 65535);
+    CHECK(horizon::detail::height_value<int8_t>(-128) == -128);
+}
+
+namespace {
+
 template <class Format>
 std::vector<uint8_t> as_grey(const std::vector<typename Format::Pixel>& px) {
     std::vector<uint8_t> g;

@@ -103,8 +103,8 @@ private:
         have_prev_ = true;
         ends_[0] = buf_.current[0];
         ends_[1] = buf_.current[static_cast<size_t>(points_ - 1)];
-        end_values_[0] = static_cast<int32_t>(row_[0]);
-        end_values_[1] = static_cast<int32_t>(row_[points_ - 1]);
+        end_values_[0] = detail::height_value(row_[0]);
+        end_values_[1] = detail::height_value(row_[points_ - 1]);
         if (whole_previous_) {  // the buffers trade places; row_ keeps pointing at the same heights
             swap_values(buf_.current, buf_.previous);
             if (!kCurves || Source::kNeedsValues) swap_values(buf_.values_current, buf_.values_previous);
@@ -165,7 +165,7 @@ private:
         bool pen = false;
         for (int32_t b = 0, n = points_; b < n; ++b) {
             const PlotPoint p = pts[b];
-            const int32_t value = kByValue ? static_cast<int32_t>(row[b]) : 0;
+            const int32_t value = kByValue ? detail::height_value(row[b]) : 0;
             if (p.x != kNoPoint) {
                 if (pen) {
                     if constexpr (!kByValue) {  // the rest of a run of projected points in one go
@@ -232,7 +232,7 @@ private:
     /// The piece at point b from the previous line (projected pa, height va) to line a, as a curve of
     /// its own, clipped at the near plane (and at the eye's plane when split).
     void piece(int32_t a, int32_t b, bool split, PlotPoint pa, int32_t va) {
-        const int32_t vb = static_cast<int32_t>(row_[b]);
+        const int32_t vb = detail::height_value(row_[b]);
         PlotPoint pb = buf_.current[static_cast<size_t>(b)];
         if (!split && pa.x != kNoPoint && pb.x != kNoPoint) {  // the common case: both ends projected
             drawer_.move_to(pa, va);

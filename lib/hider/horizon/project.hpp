@@ -203,7 +203,7 @@ public:
         const int32_t hu = axis_[0].dv, hv = axis_[1].dv, hw = axis_[2].dv;
         const int shift = value_shift_;
         for (int32_t i = 0, n = surface_.samples; i < n; ++i) {
-            int32_t value = static_cast<int32_t>(values[i]);
+            int32_t value = detail::height_value(values[i]);
             if (value < vmin || value > vmax) {
                 value = clamp(value, vmin, vmax);
                 ++counts.values_clamped;

@@ -24,7 +24,7 @@ struct GridSource {
         return data + static_cast<ptrdiff_t>(r) * row_stride;
     }
     void column(int32_t i, int32_t* out, const SurfaceProjection& p) const {
-        for (int32_t k = 0; k < p.surface().curves; ++k) out[k] = static_cast<int32_t>(row(k, nullptr, p)[i]);
+        for (int32_t k = 0; k < p.surface().curves; ++k) out[k] = detail::height_value(row(k, nullptr, p)[i]);
     }
     bool valid(const Surface& s) const {
         return data != nullptr && rows >= s.curves && row_stride >= s.samples && 0 <= first_row && first_row < rows;

@@ -74,6 +74,20 @@ inline HomPoint lerp(const HomPoint& a, const HomPoint& b, int32_t t_q16) {
     return {mix(a.u, b.u), mix(a.v, b.v), mix(a.w, b.w)};
 }
 
+/// A height of type T as int32_t, saturated: a value of a wider type (int64_t) or an unsigned 32-bit one
+/// beyond int32 becomes INT32_MIN or INT32_MAX, which the range check then clamps and counts (a plain
+/// cast wrapped it into the declared range, drawn there with status ok).
+template <class T>
+constexpr int32_t height_value(T v) {
+    if constexpr (static_cast<T>(-1) < 0) {
+        if constexpr (sizeof(T) <= sizeof(int32_t)) return static_cast<int32_t>(v);
+        else return v < INT32_MIN ? INT32_MIN : v > INT32_MAX ? INT32_MAX : static_cast<int32_t>(v);
+    } else {
+        if constexpr (sizeof(T) < sizeof(int32_t)) return static_cast<int32_t>(v);
+        else return v > static_cast<T>(INT32_MAX) ? INT32_MAX : static_cast<int32_t>(v);
+    }
+}
+
 /// Whether every value of T lies in [value_min, value_max] (no clamping needed).
 template <class T>
 constexpr bool in_type_range(int32_t value_min, int32_t value_max) {
