@@ -117,6 +117,21 @@ private:
     int32_t h_[3][3], l_[3][3];
 };
 
+/// The point p' with apply(t, p') = p for a rigid t: R^T (p - trans), floored once per component (the
+/// difference in 64 bits). For a BSP walk under with_model(view, model): the camera's eye in the tree's
+/// coordinates. Precondition: t rigid, p - trans below 2^31 raw and the result below 2^31 raw.
+constexpr Vec3q16 apply_inverse(const Transform& t, const Vec3q16& p) {
+    const int64_t d[3] = {int64_t{p.x.raw()} - t.trans.x.raw(), int64_t{p.y.raw()} - t.trans.y.raw(),
+                          int64_t{p.z.raw()} - t.trans.z.raw()};
+    int32_t out[3] = {0, 0, 0};
+    for (int j = 0; j < 3; ++j) {
+        int64_t acc = 0;  // |entries| <= 2^30, |d| < 2^31: each product below 2^61, the sum below 2^63
+        for (int i = 0; i < 3; ++i) acc += t.rot.m[i][j].raw() * d[i];
+        out[j] = static_cast<int32_t>(acc >> 30);
+    }
+    return {Q16::from_raw(out[0]), Q16::from_raw(out[1]), Q16::from_raw(out[2])};
+}
+
 /// Matrix product a * b (Q30, floored per entry).
 constexpr Mat3 mul(const Mat3& a, const Mat3& b) {
     Mat3 r{};

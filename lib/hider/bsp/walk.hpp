@@ -268,11 +268,13 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
 
 }  // namespace detail
 
-/// Draws `tree` back to front into the band (the caller cleared it); `eye` is the camera's eye (world, as
-/// make_view took it). `verts` (one per tree vertex) holds the vertices projected for the same view:
-/// either all of them by project_vertices() (needed for Shade::depth's range), or, marked once per frame
-/// by mark_unprojected(), each projected here when a triangle first needs it (a walk that skips most of
-/// the tree projects only what it draws). `stack` holds bsp_stack_entries(tree.max_depth) entries.
+/// Draws `tree` back to front into the band (the caller cleared it); `eye` is the camera's eye in the
+/// tree's coordinates: as make_view took it, or with a model transform (view = with_model(v, model))
+/// apply_inverse(model, eye), since the side tests compare it with the tree's planes (the world eye
+/// orders a turned tree wrongly, status ok). `verts` (one per tree vertex) holds the vertices projected
+/// for the same view: either all of them by project_vertices() (needed for Shade::depth's range), or,
+/// marked once per frame by mark_unprojected(), each projected here when a triangle first needs it (a
+/// walk that skips most of the tree projects only what it draws). `stack` holds bsp_stack_entries(tree.max_depth) entries.
 /// Returns invalid_argument for an unusable frame, too few vertices or too small a stack. Counts nodes
 /// visited and subtrees skipped.
 template <class Format, class Depth>

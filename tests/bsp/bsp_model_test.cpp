@@ -1,0 +1,102 @@
+// A BSP tree drawn under a model transform (with_model()): the walk's eye must be the camera's eye in
+// the tree's coordinates, apply_inverse(model, eye); then the walk gives the z-buffer's picture of the
+// turned tree. The world eye (what draw_bsp()'s comment named before) ordered suzanne wrongly on up to
+// 69 of 5,992 off-edge pixels of a 96 x 72 frame, status ok (red-team pass over the public API).
+#include <hider/bsp/walk.hpp>
+#include <hider/raster/zbuffer.hpp>
+
+#include <vector>
+
+#include <doctest/doctest.h>
+
+#include "bsp/bsp_blobs.hpp"
+#include "bsp/bsp_exercise.hpp"
+#include "support/reference.hpp"
+
+using namespace hider;
+
+namespace {
+
+std::vector<uint32_t> ids_of(const std::vector<Rgb888>& px) {
+    std::vector<uint32_t> ids(px.size());
+    for (size_t i = 0; i < px.size(); ++i) ids[i] = (uint32_t{px[i].r} << 16) | (uint32_t{px[i].g} << 8) | px[i].b;
+    return ids;
+}
+
+}  // namespace
+
+TEST_CASE("apply_inverse undoes a rigid transform to within a floor per component") {
+    for (uint32_t k = 0; k < 64; ++k) {
+        Transform t;
+        t.rot = mul(rotation_y(Angle::from_bam(k * 0x04000000u)), rotation_x(Angle::from_bam(k * 0x0300000u)));
+        t.trans = {Q16::from_int(100), Q16::from_int(-7), Q16::from_ratio(1, 3)};
+        const Vec3q16 p{Q16::from_int(250), Q16::from_int(-40), Q16::from_int(900)};
+        const Vec3q16 back = apply(t, apply_inverse(t, p));
+        CHECK(std::abs(back.x.raw() - p.x.raw()) <= 4);
+        CHECK(std::abs(back.y.raw() - p.y.raw()) <= 4);
+        CHECK(std::abs(back.z.raw() - p.z.raw()) <= 4);
+    }
+    Transform id;
+    const Vec3q16 p{Q16::from_raw(-123456789), Q16::from_raw(5), Q16::from_raw(536870911)};
+    const Vec3q16 q = apply_inverse(id, p);
+    CHECK((q.x.raw() == p.x.raw() && q.y.raw() == p.y.raw() && q.z.raw() == p.z.raw()));
+}
+
+TEST_CASE("draw_bsp under with_model() with the eye in the tree's coordinates equals the z-buffer") {
+    const std::vector<uint8_t> bytes = test::blob_of_obj("models/suzanne.obj");
+    std::vector<uint64_t> store;
+    const Span<const uint8_t> blob = test::aligned_copy(bytes.data(), bytes.size(), store);
+    std::vector<uint32_t> load_stack(4096);
+    BspTree tree;
+    REQUIRE(bsp_load(blob, {load_stack.data(), load_stack.size()}, tree) == Status::ok);
+    REQUIRE(tree.vertices.size() <= kMaxMeshVertices);
+    std::vector<Tri> tris;
+    std::vector<uint32_t> faces;
+    for (const BspTriangle& t : tree.triangles) {
+        tris.push_back({{uint16_t(t.v[0]), uint16_t(t.v[1]), uint16_t(t.v[2])}});
+        faces.push_back(t.face & kBspFaceMask);
+    }
+    const Mesh mesh{tree.vertices, {tris.data(), tris.size()}, {}, {faces.data(), faces.size()}};
+    constexpr int W = 96, H = 72;
+    Camera cam;
+    cam.eye = {Q16::from_int(900), Q16::from_int(500), Q16::from_int(1400)};
+    cam.target = {};
+    cam.up = {Q16::from_int(0), Q16::from_int(1), Q16::from_int(0)};
+    cam.fovy = Angle::from_degrees(Q16::from_int(45));
+    cam.near = Q16::from_int(1);
+    cam.far = Q16::from_int(10000);
+    View view;
+    REQUIRE(make_view(cam, W, H, view) == Status::ok);
+    long world_eye_wrong = 0;
+    for (uint32_t k = 0; k < 8; ++k) {
+        Transform model;
+        model.rot = rotation_y(Angle::from_bam(k << 29));
+        model.trans = {Q16::from_int(30), Q16::from_int(0), Q16::from_int(-20)};
+        REQUIRE(validate(mesh, model) == Status::ok);
+        const View turned = with_model(view, model);
+        std::vector<ScreenVertex> verts(tree.vertices.size());
+        REQUIRE(project_vertices(turned, tree.vertices, {verts.data(), verts.size()}) == Status::ok);
+        DrawOptions opt;
+        opt.shade = Shade::id;
+        std::vector<Rgb888> z(W * H), b(W * H);
+        std::vector<uint32_t> depth(W * H);
+        const auto zf = frame_view<Rgb888Format, uint32_t>(z.data(), depth.data(), W, H);
+        clear(zf, Rgb{0, 0, 0});
+        REQUIRE(draw_zbuffer(turned, mesh, {verts.data(), verts.size()}, zf, opt).ok());
+        std::vector<uint32_t> stack(bsp_stack_entries(tree.max_depth));
+        for (int world = 0; world < 2; ++world) {
+            const auto bf = frame_view<Rgb888Format, uint16_t>(b.data(), nullptr, W, H);
+            clear(bf, Rgb{0, 0, 0});
+            const Vec3q16 eye = world != 0 ? cam.eye : apply_inverse(model, cam.eye);
+            REQUIRE(draw_bsp(turned, eye, tree, {verts.data(), verts.size()}, bf, opt, {stack.data(), stack.size()}).ok());
+            const ref::Agreement ag = ref::compare_ids(ids_of(b), ids_of(z), W, H);
+            if (world != 0) {
+                world_eye_wrong += ag.off_edge_mismatch;
+            } else {
+                CAPTURE(k);
+                CHECK(ag.off_edge_mismatch == 0);
+            }
+        }
+    }
+    CHECK(world_eye_wrong > 0);  // why the comment insists on the tree's coordinates
+}
