@@ -252,8 +252,7 @@ TEST_CASE("Unusable arguments draw nothing and say invalid_argument") {
 
 TEST_CASE("A MonoFrame band of more pages than its frame has is refused, however many (no page1 * 8 overflow)") {
     // valid() computed page1 * 8 in int32: from 2^28 pages it wrapped below the height, so a 48-row frame
-    // claiming 2^29 pages was valid and plot() said ok and drew nothing (red-team
-    // repro/mono_frame_pages_overflow.cpp).
+    // claiming 2^29 pages was valid and plot() said ok and drew nothing.
     const Surface s = surface(-q(0.35).raw(), q(0.35).raw(), 1);
     const std::vector<int32_t> g = grid_of(s);
     const GridSource<int32_t> src{g.data(), kSamples, kCurves, 0};
@@ -346,7 +345,7 @@ void wide_heights_plot_as_clamped(T huge, const char* type) {
 
 TEST_CASE("Heights of a type wider than int32 (or unsigned 32-bit) are clamped and counted, not wrapped") {
     // They were cast to int32_t before the range check: a uint32_t height of 2^32 - 1 was drawn as -1 (at
-    // the bottom), an int64_t one of 2^32 + 50 at 50 with status ok (red-team repro/horizon_wide_heights.cpp).
+    // the bottom), an int64_t one of 2^32 + 50 at 50 with status ok.
     wide_heights_plot_as_clamped<uint32_t>(UINT32_MAX, "uint32_t");
     wide_heights_plot_as_clamped<int64_t>((int64_t{1} << 32) + 50, "int64_t");
     wide_heights_plot_as_clamped<int64_t>(INT64_MAX, "int64_t max");

@@ -307,7 +307,7 @@ TEST_CASE("validate(mesh, model) refuses a rigid model transform that carries a 
     // A floor quad across the world, turned half a turn about the y axis through the camera target (as
     // firmware/spin's turn() builds it): its near corner goes to (-24000, -100, -24000), 45,255 units from
     // the eye, and its view coordinates wrapped, so the z-buffer drew 1,508 of the 64 x 48 pixels where
-    // the double reference draws none, with status ok (red-team repro/with_model_wrap.cpp).
+    // the double reference draws none, with status ok.
     auto p = [](int32_t x, int32_t y, int32_t z) { return Vec3q16{Q16::from_int(x), Q16::from_int(y), Q16::from_int(z)}; };
     const Vec3q16 pos[4] = {p(8000, -100, 8000), p(-8000, -100, 8000), p(-8000, -100, -8000), p(8000, -100, -8000)};
     const Tri tris[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
