@@ -341,3 +341,62 @@ TEST_CASE("binned bands give the whole frame's bytes and counts on random soups 
     MESSAGE("clipped triangles " << clipped << ", set up again " << set_up_again);
     CHECK(clipped > 1000);
 }
+
+namespace {
+/// BinnedStats of one frame of `verts` / `tris` (screen space) in bands of `rows` rows, 4 slots.
+template <class Format, class Depth>
+BinnedStats bands_of(const View& view, const std::vector<ScreenVertex>& verts, const std::vector<Tri>& tris, int32_t rows, Shade shade) {
+    const std::vector<Vec3q16> positions(verts.size());
+    Mesh mesh;
+    mesh.positions = {positions.data(), positions.size()};
+    mesh.tris = {tris.data(), tris.size()};
+    std::vector<typename Format::Pixel> color(static_cast<size_t>(view.width) * rows);
+    std::vector<Depth> depth(color.size());
+    Scratch scratch(tris.size(), static_cast<size_t>((view.height + rows - 1) / rows), 4);
+    DrawOptions opt;
+    opt.cull = false;
+    opt.shade = shade;
+    BinnedStats bs;
+    const FrameStats st = draw_zbuffer_binned(view, mesh, {verts.data(), verts.size()},
+                                              band_view<Format, Depth>(color.data(), depth.data(), view.width, view.height, 0, rows),
+                                              opt, kBackground, scratch.view, [](const FrameView<Format, Depth>&) { return true; }, &bs);
+    CHECK(st.ok());
+    CHECK(st.triangles_drawn == tris.size());
+    return bs;
+}
+}  // namespace
+
+TEST_CASE("binned bands count no set-up again below the last band") {
+    // A 16x8 frame; one triangle from row 5 down past the bottom, crossing the right side (the kernel set-up
+    // leaves it to TriangleRaster, which the other formats use for every triangle): in one band of 8 rows,
+    // or starting in the last of two 4-row bands, there is no next band to set it up in; in 3-row bands
+    // (0-2, 3-5, 6-7) it continues once, from band 1 into band 2.
+    Camera cam;
+    cam.eye = {Q16::from_int(0), Q16::from_int(0), Q16::from_int(1)};
+    cam.target = {Q16::from_int(0), Q16::from_int(0), Q16::from_int(0)};
+    cam.up = {Q16::from_int(0), Q16::from_int(1), Q16::from_int(0)};
+    cam.fovy = Angle::from_degrees(Q16::from_int(60));
+    cam.near = Q16::from_raw(6553);
+    cam.far = Q16::from_int(100);
+    View view;
+    REQUIRE(make_view(cam, 16, 8, view) == Status::ok);
+    const int32_t ox = pixel_centre_origin(16), oy = pixel_centre_origin(8);  // centre of pixel (0, 0)
+    auto at = [&](int32_t x, int32_t y) {
+        ScreenVertex v;
+        v.x = static_cast<int16_t>(ox + x * kSubpixel);
+        v.y = static_cast<int16_t>(oy + y * kSubpixel);
+        v.z = 0x40000000u;
+        return v;
+    };
+    const std::vector<ScreenVertex> verts = {at(4, 5), at(20, 12), at(2, 12)};
+    const std::vector<Tri> tris = {{{0, 1, 2}}};
+    for (const int32_t rows : {8, 4, 3}) {
+        CAPTURE(rows);
+        const uint32_t expected = rows == 3 ? 1 : 0;
+        const BinnedStats kernel = bands_of<Rgb565Format, uint16_t>(view, verts, tris, rows, Shade::headlight);
+        CHECK(kernel.carried == 0);
+        CHECK(kernel.set_up_again == expected);
+        const BinnedStats generic = bands_of<Grey8Format, uint32_t>(view, verts, tris, rows, Shade::depth);
+        CHECK(generic.set_up_again == expected);
+    }
+}

@@ -194,10 +194,11 @@ private:
     }
 
     /// A triangle that continues below the band without a slot: linked into the next band's list, to be
-    /// set up there again.
+    /// set up there again. Below the last band there is none: nothing is set up again, nothing counted.
     __attribute__((always_inline)) void relink(uint16_t tri) {
+        if (next_head_ == nullptr) return;
         ++out_.set_up_again;
-        if (next_head_ != nullptr) insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
+        insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
     }
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)

@@ -47,9 +47,9 @@ __attribute__((noinline)) void draw_bands_generic(const View& view, const Mesh& 
                 // row lies there, even if its edges exclude every centre).
                 continues = continues || ((y_max - band_bb.y_origin) >> kSubpixelBits) >= y1;
             });
-            if (!continues) continue;
+            if (!continues || b + 1 == bands) continue;  // below the last band: nothing to set up again
             ++out.set_up_again;
-            if (b + 1 < bands) insert_prev = insert_sorted(next, next_head, insert_prev, tri);
+            insert_prev = insert_sorted(next, next_head, insert_prev, tri);
         }
         if (!done(band)) {
             st.status = Status::invalid_argument;
