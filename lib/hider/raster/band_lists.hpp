@@ -19,7 +19,10 @@ struct BinnedScratch {
 struct BinnedStats {
     uint32_t carried = 0;           ///< band continuations resumed from a carried slot
     uint32_t set_up_again = 0;      ///< band continuations set up again (not a kernel triangle, or no free slot)
-    uint32_t carried_high_water = 0;  ///< most slots in use at a band boundary (to size `carried`)
+    /// Most slots in use at a band boundary: a lower bound for sizing the slots, since inside a band a
+    /// continuing triangle of the band's own list may take a slot before earlier carried ones give theirs
+    /// back (mesh order): add slots while `set_up_again` still falls.
+    uint32_t carried_high_water = 0;
 };
 
 namespace detail {
