@@ -321,13 +321,21 @@ void wide_heights_plot_as_clamped(T huge, const char* type) {
             wide[at] = peak ? huge : static_cast<T>(g[at] + q(0.35).raw());
             clamped[at] = peak ? s.value_max : g[at] + q(0.35).raw();
         }
-    const Camera views[2] = {camera(0.4, 1.6, 2.6), camera(3.0, 1.2, 0.3)};  // curves, and constant-x lines
+    // Curves and constant-x lines from outside; then eyes inside the box beside the peak, where lines
+    // cross the near plane next to its samples (the crossing and the mesh pieces read the heights too).
+    const Camera views[6] = {camera(0.4, 1.6, 2.6), camera(3.0, 1.2, 0.3), camera(0.1, 0.75, 0.2, -1, 0.3, -0.9),
+                             camera(0.2, 0.8, 0.15, 0.2, 0.3, -1), camera(0.25, 0.8, -0.1, -1, 0.3, -0.1),
+                             camera(-0.2, 0.75, 0.18, 1, 0.3, -0.9)};
     for (const Camera& cam : views)
         for (Shading shading : {Shading::palette, Shading::height}) {
             SurfaceProjection p;
             REQUIRE(p.prepare(cam, 96, 72, s) == Status::ok);
             PlotStyle st = palette_style(true);
             st.shading = shading;
+            if (&cam != &views[0]) st.mesh_step = 1;
+            const int view_index = static_cast<int>(&cam - views);
+            CAPTURE(view_index);
+            CAPTURE(static_cast<int>(shading));
             std::vector<Rgb888> a(96 * 72), b(96 * 72);
             Scratch sa(96, 72), sb(96, 72);
             const PlotStats ra = plot(p, GridSource<T>{wide.data(), kSamples, kCurves, 0}, sa.hz, sa.b,
@@ -351,6 +359,9 @@ TEST_CASE("Heights of a type wider than int32 (or unsigned 32-bit) are clamped a
     wide_heights_plot_as_clamped<int64_t>(INT64_MAX, "int64_t max");
     wide_heights_plot_as_clamped<uint64_t>((uint64_t{1} << 63) + 7, "uint64_t");
     wide_heights_plot_as_clamped<int32_t>(INT32_MAX, "int32_t");
+    // A range reaching INT32_MAX (where a saturated value would pass the range check uncounted) cannot be
+    // prepared: world y = value * y_unit_raw with y_unit_raw >= 1 would pass the world range.
+    CHECK(SurfaceProjection().prepare(camera(0.4, 1.6, 2.6), 96, 72, surface(0, INT32_MAX, 1)) == Status::out_of_range);
     CHECK(horizon::detail::height_value<int64_t>(INT64_MIN) == INT32_MIN);
     CHECK(horizon::detail::height_value<int64_t>(-5) == -5);
     CHECK(horizon::detail::height_value<uint32_t>(0x80000000u) == INT32_MAX);

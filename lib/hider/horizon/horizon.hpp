@@ -58,12 +58,13 @@ inline constexpr SlopeTable kSlope{};
 /// (clamped), the quotient from a scale made once (make_ramp), so a drawn run costs one 32-bit product.
 struct ValueRamp {
     Span<const Rgb> ramp;
-    int32_t v_min = 0;
+    int32_t v_min = 0, v_max = 0;
     int shift = 0;      ///< (v - v_min) >> shift is below 2^12
     uint32_t mul = 0;   ///< ceil(size 2^20 / reduced span)
 
     Rgb operator()(int32_t v) const {
-        const uint32_t t = static_cast<uint32_t>(max(v, v_min)) - static_cast<uint32_t>(v_min);
+        // clamped at both ends: a value past v_max (a height the plot clamps) overflowed the product
+        const uint32_t t = static_cast<uint32_t>(clamp(v, v_min, v_max)) - static_cast<uint32_t>(v_min);
         const uint32_t i = ((t >> shift) * mul) >> 20;
         return ramp[min<size_t>(i, ramp.size() - 1)];
     }
@@ -74,6 +75,7 @@ inline ValueRamp make_ramp(Span<const Rgb> ramp, int32_t v_min, int32_t v_max) {
     ValueRamp r;
     r.ramp = ramp;
     r.v_min = v_min;
+    r.v_max = v_max;
     uint32_t span = static_cast<uint32_t>(v_max) - static_cast<uint32_t>(v_min);  // + 1 below, after the shift
     while ((span >> r.shift) >= (uint32_t{1} << 12)) ++r.shift;
     span = (span >> r.shift) + 1;

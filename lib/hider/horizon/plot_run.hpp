@@ -178,7 +178,7 @@ private:
                     }
                 } else {
                     if (b > 0) {  // came back in front of the near plane: start on it
-                        drawer_.move_to(crossing(a, b, row[b], a, b - 1, row[b - 1]), value);
+                        drawer_.move_to(crossing(a, b, detail::height_value(row[b]), a, b - 1, detail::height_value(row[b - 1])), value);
                         drawer_.line_to(p, value);
                     } else {
                         drawer_.move_to(p, value);
@@ -186,7 +186,7 @@ private:
                     pen = true;
                 }
             } else if (pen) {  // goes behind the near plane: end on it
-                drawer_.line_to(crossing(a, b - 1, row[b - 1], a, b, row[b]), value);
+                drawer_.line_to(crossing(a, b - 1, detail::height_value(row[b - 1]), a, b, detail::height_value(row[b])), value);
                 drawer_.finish();
                 pen = false;
             }
@@ -219,12 +219,12 @@ private:
             }
             for (int32_t j = 0, i = 0; j <= last_x_line_; ++j, i = min(i + step_, last)) {
                 x_line_style(j, true);
-                piece(a, i, split, buf_.previous[static_cast<size_t>(i)], static_cast<int32_t>(prev_row_[i]));
+                piece(a, i, split, buf_.previous[static_cast<size_t>(i)], detail::height_value(prev_row_[i]));
             }
         } else {
             for (int32_t k = 0; k < s_.curves; ++k) {
                 curve_style(k);
-                piece(a, k, split, buf_.previous[static_cast<size_t>(k)], static_cast<int32_t>(prev_row_[k]));
+                piece(a, k, split, buf_.previous[static_cast<size_t>(k)], detail::height_value(prev_row_[k]));
             }
         }
     }
