@@ -160,3 +160,32 @@ TEST_CASE("PreparedTransform (and its ARMv6-M 32-bit form) applies exactly like 
         }
     }
 }
+
+TEST_CASE("apply_inverse undoes a rotation and translation: exactly on a quarter turn, within 4 raw units otherwise") {
+    for (uint32_t k = 0; k < 64; ++k) {
+        Transform t;
+        t.rot = mul(rotation_y(Angle::from_bam(k * 0x04000000u)), rotation_x(Angle::from_bam(k * 0x0300000u)));
+        t.trans = {Q16::from_int(100), Q16::from_int(-7), Q16::from_ratio(1, 3)};
+        const Vec3q16 p{Q16::from_int(250), Q16::from_int(-40), Q16::from_int(900)};
+        const Vec3q16 back = apply(t, apply_inverse(t, p));
+        CHECK(std::abs(back.x.raw() - p.x.raw()) <= 4);
+        CHECK(std::abs(back.y.raw() - p.y.raw()) <= 4);
+        CHECK(std::abs(back.z.raw() - p.z.raw()) <= 4);
+    }
+    // A quarter turn about y has exact entries: R^T (p - t) = (-(p - t).z, (p - t).y, (p - t).x), raw for raw.
+    Transform quarter;
+    quarter.rot = rotation_y(Angle::from_bam(0x40000000u));
+    REQUIRE((quarter.rot.m[0][0].raw() == 0 && quarter.rot.m[0][2].raw() == Q30::kOne && quarter.rot.m[2][0].raw() == -Q30::kOne));
+    quarter.trans = {Q16::from_raw(70000), Q16::from_raw(-3), Q16::from_raw(123457)};
+    const Vec3q16 pq{Q16::from_raw(-200001), Q16::from_raw(99999), Q16::from_raw(31)};
+    const Vec3q16 iq = apply_inverse(quarter, pq);
+    CHECK(iq.x.raw() == -(31 - 123457));
+    CHECK(iq.y.raw() == 99999 + 3);
+    CHECK(iq.z.raw() == -200001 - 70000);
+    const Vec3q16 round_trip = apply(quarter, iq);
+    CHECK((round_trip.x.raw() == pq.x.raw() && round_trip.y.raw() == pq.y.raw() && round_trip.z.raw() == pq.z.raw()));
+    Transform id;
+    const Vec3q16 p{Q16::from_raw(-123456789), Q16::from_raw(5), Q16::from_raw(536870911)};
+    const Vec3q16 q = apply_inverse(id, p);
+    CHECK((q.x.raw() == p.x.raw() && q.y.raw() == p.y.raw() && q.z.raw() == p.z.raw()));
+}

@@ -48,9 +48,10 @@ inline Status validate(const Mesh& m) {
 /// the y axis through (-8000, 0, -8000) takes (8000, 0, 8000) to (-24000, 0, -24000)), and beyond it
 /// view-space coordinates can pass 2^15 units and wrap, which draws the mesh in the wrong place with
 /// status ok.
-/// Returns validate(m)'s errors, invalid_argument for a rotation entry beyond +-1 (Transform is rigid:
-/// no scale; the ARMv6-M transform also relies on it), out_of_range for a placed position outside the
-/// world range (computed exactly, without wrapping). Cost: O(vertices + triangles), as validate().
+/// Returns validate(m)'s errors, invalid_argument for a matrix entry beyond +-1 (the 32-bit transforms,
+/// the ARMv6-M one among them, rely on it; whether the matrix is a rotation is not checked), out_of_range
+/// for a placed position outside the world range (computed exactly, without wrapping). Cost:
+/// O(vertices + triangles), as validate().
 inline Status validate(const Mesh& m, const Transform& model) {
     const Status s = validate(m);
     if (s != Status::ok) return s;

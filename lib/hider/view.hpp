@@ -67,9 +67,10 @@ inline Status make_view(const Camera& cam, int32_t width, int32_t height, View& 
     return Status::ok;
 }
 
-/// The same view with a model transform applied first (model -> world -> view). Precondition: the placed
-/// mesh lies in the world range and the transform is rigid, as validate(mesh, model) checks (mesh.hpp);
-/// with_model() cannot see the mesh, and beyond that range view coordinates wrap.
+/// The same view with a model transform applied first (model -> world -> view). Preconditions: the
+/// transform is a rotation and a translation, and the placed mesh lies in the world range, which
+/// validate(mesh, model) checks (mesh.hpp; with_model() cannot see the mesh, and beyond that range view
+/// coordinates wrap).
 inline View with_model(const View& v, const Transform& model) {
     View r = v;
     r.to_view = compose(v.to_view, model);

@@ -25,23 +25,6 @@ std::vector<uint32_t> ids_of(const std::vector<Rgb888>& px) {
 
 }  // namespace
 
-TEST_CASE("apply_inverse undoes a rigid transform to within a floor per component") {
-    for (uint32_t k = 0; k < 64; ++k) {
-        Transform t;
-        t.rot = mul(rotation_y(Angle::from_bam(k * 0x04000000u)), rotation_x(Angle::from_bam(k * 0x0300000u)));
-        t.trans = {Q16::from_int(100), Q16::from_int(-7), Q16::from_ratio(1, 3)};
-        const Vec3q16 p{Q16::from_int(250), Q16::from_int(-40), Q16::from_int(900)};
-        const Vec3q16 back = apply(t, apply_inverse(t, p));
-        CHECK(std::abs(back.x.raw() - p.x.raw()) <= 4);
-        CHECK(std::abs(back.y.raw() - p.y.raw()) <= 4);
-        CHECK(std::abs(back.z.raw() - p.z.raw()) <= 4);
-    }
-    Transform id;
-    const Vec3q16 p{Q16::from_raw(-123456789), Q16::from_raw(5), Q16::from_raw(536870911)};
-    const Vec3q16 q = apply_inverse(id, p);
-    CHECK((q.x.raw() == p.x.raw() && q.y.raw() == p.y.raw() && q.z.raw() == p.z.raw()));
-}
-
 TEST_CASE("draw_bsp under with_model() with the eye in the tree's coordinates equals the z-buffer") {
     const std::vector<uint8_t> bytes = test::blob_of_obj("models/suzanne.obj");
     std::vector<uint64_t> store;

@@ -104,4 +104,8 @@ TEST_CASE("Coverage::reset refuses sizes out of range without overflowing on the
     CHECK_FALSE(cov.reset({words.data(), words.size()}, 1, INT32_MIN, INT32_MAX));
     CHECK_FALSE(cov.reset({words.data(), words.size()}, 1, 0, 0));
     CHECK(cov.reset({words.data(), words.size()}, 1, -5, 59));  // rows count, not where they lie
+    // The largest frame side is accepted in both directions.
+    std::vector<uint32_t> big(static_cast<size_t>(coverage_words(kMaxFrameSide)) * kMaxFrameSide);
+    CHECK(cov.reset({big.data(), big.size()}, kMaxFrameSide, 0, kMaxFrameSide));
+    CHECK_FALSE(cov.reset({big.data(), big.size()}, kMaxFrameSide, 0, kMaxFrameSide + 1));
 }

@@ -339,6 +339,24 @@ TEST_CASE("validate(mesh, model) refuses a rigid model transform that carries a 
     CHECK(validate(inner, scaled) == Status::invalid_argument);
     scaled.rot.m[0][0] = Q30::from_raw(-Q30::kOne);
     CHECK(validate(inner, scaled) == Status::ok);
+    // The world range's edge: a placed coordinate of kWorldLimitRaw - 1 is inside, kWorldLimitRaw is not.
+    const Vec3q16 origin_only[3] = {p(0, 0, 0), p(0, 0, 0), p(0, 0, 0)};
+    const Tri one{{0, 1, 2}};
+    const Mesh dot{{origin_only, 3}, {&one, 1}, {}, {}};
+    for (int axis = 0; axis < 3; ++axis)
+        for (int32_t sign : {1, -1}) {
+            Transform edge;
+            const int32_t inside = sign * (kWorldLimitRaw - 1), outside = sign * kWorldLimitRaw;
+            auto at = [&](int32_t raw) {
+                Vec3q16 t{};
+                (axis == 0 ? t.x : axis == 1 ? t.y : t.z) = Q16::from_raw(raw);
+                return t;
+            };
+            edge.trans = at(inside);
+            CHECK(validate(dot, edge) == Status::ok);
+            edge.trans = at(outside);
+            CHECK(validate(dot, edge) == Status::out_of_range);
+        }
     // A translation past 2^15 units wraps in apply(); the exact check still sees it.
     Transform far;
     far.trans = Vec3q16{Q16::from_raw(INT32_MAX), Q16::from_int(0), Q16::from_int(0)};

@@ -294,14 +294,18 @@ void add_triangle(RayScene::MeshData& m, const Vec3q16& a, const Vec3q16& b, con
     m.normals.push_back(face_normal(a, b, c));
 }
 
-/// How far a triangle reaches from `eye` on any axis (raw), as bvh_reach() measures a mesh's box.
+/// How far p lies from `eye` on any axis (raw), as bvh_reach() measures a mesh's box.
+uint32_t reach_from(const Vec3q16& p, const Vec3q16& eye) {
+    uint32_t reach = 0;
+    for (const int64_t d : {int64_t{p.x.raw()} - eye.x.raw(), int64_t{p.y.raw()} - eye.y.raw(), int64_t{p.z.raw()} - eye.z.raw()})
+        reach = std::max(reach, static_cast<uint32_t>(d < 0 ? -d : d));
+    return reach;
+}
+
+/// How far a triangle reaches from `eye` on any axis (raw).
 uint32_t triangle_reach(const RayScene::MeshData& m, const Tri& t, const Vec3q16& eye) {
     uint32_t reach = 0;
-    for (const uint16_t v : t.v) {
-        const Vec3q16& p = m.positions[v];
-        for (const int64_t d : {int64_t{p.x.raw()} - eye.x.raw(), int64_t{p.y.raw()} - eye.y.raw(), int64_t{p.z.raw()} - eye.z.raw()})
-            reach = std::max(reach, static_cast<uint32_t>(d < 0 ? -d : d));
-    }
+    for (const uint16_t v : t.v) reach = std::max(reach, reach_from(m.positions[v], eye));
     return reach;
 }
 
@@ -578,6 +582,7 @@ bool parse_ray_scene(std::istream& in, const std::string& name, const std::strin
             return fail(why);
         s.meshes.push_back(std::move(group));
     }
+    if (s.meshes.size() > ray::kMaxSceneObjects) return fail("too many objects of one kind (at most 65535)");
     s.sphere_bound = ray::enclosing_sphere({s.spheres.data(), s.spheres.size()});
     std::vector<ray::BvhStackEntry> stack(s.stack_depth());
     const Status st = ray::validate_scene(s.view(), {stack.data(), stack.size()});
@@ -605,9 +610,7 @@ std::vector<std::string> grid_warnings(const RayScene& s) {
     for (size_t m = 0; m < s.meshes.size(); ++m) {
         const RayScene::MeshData& md = s.meshes[m];
         uint32_t reach = 0;
-        for (const Vec3q16& p : md.positions)
-            for (const int64_t d : {int64_t{p.x.raw()} - eye.x.raw(), int64_t{p.y.raw()} - eye.y.raw(), int64_t{p.z.raw()} - eye.z.raw()})
-                reach = std::max(reach, static_cast<uint32_t>(d < 0 ? -d : d));
+        for (const Vec3q16& p : md.positions) reach = std::max(reach, reach_from(p, eye));
         const int shift = ray::triangle_grid_shift(reach);
         if (shift == 0) continue;
         size_t bad = 0;
