@@ -38,7 +38,9 @@ HIDER_SEQUENCE(system, "mrs r0, msp\n\tdsb\n\tbx lr\n")
 // ADDS it is.
 HIDER_SEQUENCE(page_end, "b 1f\n\t.balign 1024\n\t.space 1020\n1:\n\tadds r0, r0, #1\n\tadds r0, r0, #1\n\t"
                          "adds r0, r0, #1\n\tbx lr\n")
-// Encodings the firmware uses that the sequences above leave out.
+// Encodings the firmware uses that the sequences above leave out. ADD PC and BLX to a register have no
+// sequence: hider-stack takes a function jumping by one as able to reach every listed sequence (itself
+// too), a false recursion that fails cyclecheck.stack_bound.
 HIDER_SEQUENCE(load_literal, "ldr r0, 1f\n\tbx lr\n\t.balign 4\n1:\n\t.word 0x12345678\n")
 HIDER_SEQUENCE(signed_loads, "sub sp, sp, #8\n\tmov r1, sp\n\tmovs r2, #0\n\tstr r2, [r1]\n\tldrsh r3, [r1, r2]\n\t"
                              "ldrsb r3, [r1, r2]\n\tadd sp, sp, #8\n\tbx lr\n")

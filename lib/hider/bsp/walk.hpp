@@ -274,7 +274,8 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
 /// orders a turned tree wrongly, status ok). `verts` (one per tree vertex) holds the vertices projected
 /// for the same view: either all of them by project_vertices() (needed for Shade::depth's range), or,
 /// marked once per frame by mark_unprojected(), each projected here when a triangle first needs it (a
-/// walk that skips most of the tree projects only what it draws). `stack` holds bsp_stack_entries(tree.max_depth) entries.
+/// walk that skips most of the tree projects only what it draws). `stack` holds
+/// bsp_stack_entries(tree.max_depth) entries.
 /// Returns invalid_argument for an unusable frame, too few vertices or too small a stack. Counts nodes
 /// visited and subtrees skipped.
 template <class Format, class Depth>
