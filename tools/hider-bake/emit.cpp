@@ -76,6 +76,15 @@ void count_check(std::ostringstream& o, const char* array, const char* count) {
 
 }  // namespace
 
+std::string comment_text(const std::string& text) {
+    std::string out = text;
+    for (char& c : out) {
+        const unsigned char u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7f) c = '?';
+    }
+    return out;
+}
+
 std::string camera_source(const Camera& camera, int width, int height) {
     std::ostringstream o;
     o << "inline constexpr int32_t kWidth = " << width << ";\n"

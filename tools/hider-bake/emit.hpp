@@ -19,6 +19,11 @@ struct BakeInfo {
 /// a name the baked headers use unqualified (kReserved: Camera, ray, uint8_t, ...), not all capitals (macros).
 bool valid_name(const std::string& name, std::string& why);
 
+/// `text` (a file name) made safe for a `//` comment line of a generated header: every control
+/// character (a newline or carriage return in a file name would end the comment and leave the rest of
+/// the name as code) and DEL becomes '?'.
+std::string comment_text(const std::string& text);
+
 
 /// `kWidth`, `kHeight` and `kCamera` (a constexpr hider::Camera) as declarations for a baked header.
 std::string camera_source(const Camera& camera, int width, int height);

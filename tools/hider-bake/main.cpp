@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
     const Status ms = validate(scene.mesh());
     if (ms != Status::ok) fail(model_path + ": mesh rejected: " + status_name(ms));
 
-    info.model = base_name(model_path);
+    info.model = bake::comment_text(base_name(model_path));
     const std::string text = bake::emit_header(scene, info);
     if (!port::write_file(out_path, text, why)) fail(why);
     return 0;

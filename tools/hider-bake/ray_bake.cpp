@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
     RayScene scene;
     if (!load_ray_scene(scene_path, scene, why)) fail(why);
     const size_t slash = scene_path.find_last_of('/');
-    const std::string text = emit(scene, name, slash == std::string::npos ? scene_path : scene_path.substr(slash + 1));
+    const std::string text = emit(scene, name, bake::comment_text(slash == std::string::npos ? scene_path : scene_path.substr(slash + 1)));
     if (!port::write_file(out_path, text, why)) fail(why);
     return 0;
 }

@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
             if (!bsp_scene(tree, cam, scene, why)) fail(model_path + ": " + why);
             extra = bake::camera_source(scene.camera, scene.width, scene.height);
         }
-        contents = bsp_header_source(blob, name, std::filesystem::path(model_path).filename().string(), camera_options, extra);
+        contents = bsp_header_source(blob, name, bake::comment_text(std::filesystem::path(model_path).filename().string()), camera_options, extra);
     } else {
         contents.assign(reinterpret_cast<const char*>(blob.data()), blob.size());
     }
