@@ -154,6 +154,8 @@ int main(int argc, char** argv) {
     if (!bake::valid_name(name, why)) fail("--name '" + name + "' " + why);
     RayScene scene;
     if (!load_ray_scene(scene_path, scene, why)) fail(why);
+    // The same approximation warnings as hider-render --scene: the baked scene draws what it draws.
+    for (const std::string& w : grid_warnings(scene)) std::cerr << kProgram << ": warning: " << scene_path << ": " << w << "\n";
     const size_t slash = scene_path.find_last_of('/');
     const std::string text = emit(scene, name, bake::comment_text(slash == std::string::npos ? scene_path : scene_path.substr(slash + 1)));
     if (!port::write_file(out_path, text, why)) fail(why);
