@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -908,7 +909,9 @@ bool bsp_model_fit(const ObjModel& model, BspFit& out, std::string& error) {
     double half = 0;
     for (int i = 0; i < 3; ++i) half = std::max(half, (hi[i] - lo[i]) / 2);
     if (!std::isfinite(half) || half <= 0 || !std::isfinite(kFitHalfExtent / half)) {
-        error = "model cannot be represented in fixed point (extent " + std::to_string(half * 2) + ")";
+        char extent[32];  // %g: std::to_string's %f printed a model of extent 1e-310 as "0.000000"
+        std::snprintf(extent, sizeof extent, "%g", half * 2);
+        error = std::string("model cannot be represented in fixed point (extent ") + extent + ")";
         return false;
     }
     for (int i = 0; i < 3; ++i) out.centre[i] = from_scaled(to_scaled(lo[i] / 2 + hi[i] / 2));
