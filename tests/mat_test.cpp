@@ -189,3 +189,18 @@ TEST_CASE("apply_inverse undoes a rotation and translation: exactly on a quarter
     const Vec3q16 q = apply_inverse(id, p);
     CHECK((q.x.raw() == p.x.raw() && q.y.raw() == p.y.raw() && q.z.raw() == p.z.raw()));
 }
+
+TEST_CASE("apply_wide is apply() without the wrap") {
+    Transform t;
+    t.rot = mul(rotation_y(Angle::from_bam(0x15000000u)), rotation_x(Angle::from_bam(0x0A000000u)));
+    t.trans = {Q16::from_int(100), Q16::from_int(-7), Q16::from_ratio(1, 3)};
+    const Vec3q16 p{Q16::from_int(250), Q16::from_int(-40), Q16::from_int(900)};
+    const Vec3q16 a = apply(t, p);
+    const Vec3i64 w = apply_wide(t, p);
+    CHECK((w.x == a.x.raw() && w.y == a.y.raw() && w.z == a.z.raw()));
+    // Past 2^15 units apply() wraps modulo 2^32; apply_wide keeps the value.
+    t.trans.x = Q16::from_raw(INT32_MAX);
+    const Vec3i64 far = apply_wide(t, p);
+    CHECK(far.x > INT32_MAX);
+    CHECK(static_cast<int32_t>(static_cast<uint32_t>(far.x)) == apply(t, p).x.raw());
+}

@@ -73,6 +73,19 @@ constexpr Vec3q16 apply(const Transform& t, const Vec3q16& p) {
             detail::row_dot(t.rot.m[2], p, t.trans.z)};
 }
 
+/// apply() without its wrap: floor(R p / 2^30) + t exactly in 64 bits, the value apply() gives modulo
+/// 2^32 per component (to check where a transform puts a point before trusting apply()).
+constexpr Vec3i64 apply_wide(const Transform& t, const Vec3q16& p) {
+    const Q16 tr[3] = {t.trans.x, t.trans.y, t.trans.z};
+    int64_t c[3] = {0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+        const Q30(&r)[3] = t.rot.m[i];
+        c[i] = ((mul_wide(r[0].raw(), p.x.raw()) + mul_wide(r[1].raw(), p.y.raw()) + mul_wide(r[2].raw(), p.z.raw())) >> 30) +
+               tr[i].raw();
+    }
+    return {c[0], c[1], c[2]};
+}
+
 /// apply() forced inline, for a loop over many points that keeps its other work in registers.
 __attribute__((always_inline)) constexpr Vec3q16 apply_inline(const Transform& t, const Vec3q16& p) {
     return {detail::row_dot(t.rot.m[0], p, t.trans.x), detail::row_dot(t.rot.m[1], p, t.trans.y),

@@ -58,15 +58,12 @@ inline Status validate(const Mesh& m, const Transform& model) {
     for (const auto& row : model.rot.m)
         for (const Q30& e : row)
             if (e.raw() < -Q30::kOne || e.raw() > Q30::kOne) return Status::invalid_argument;
-    const int32_t trans[3] = {model.trans.x.raw(), model.trans.y.raw(), model.trans.z.raw()};
-    for (const Vec3q16& p : m.positions)
-        for (int i = 0; i < 3; ++i) {
-            const Q30(&r)[3] = model.rot.m[i];
-            // apply()'s floor of the row product, then the translation in 64 bits (apply() wraps it).
-            const int64_t c = ((mul_wide(r[0].raw(), p.x.raw()) + mul_wide(r[1].raw(), p.y.raw()) +
-                                mul_wide(r[2].raw(), p.z.raw())) >> 30) + trans[i];
+    for (const Vec3q16& p : m.positions) {
+        const Vec3i64 w = apply_wide(model, p);  // apply() would wrap
+        const int64_t placed[3] = {w.x, w.y, w.z};
+        for (const int64_t c : placed)
             if (c <= -kWorldLimitRaw || c >= kWorldLimitRaw) return Status::out_of_range;
-        }
+    }
     return Status::ok;
 }
 
