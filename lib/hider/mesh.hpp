@@ -45,9 +45,9 @@ inline Status validate(const Mesh& m) {
 
 /// validate() for a mesh drawn through with_model(view, model): also checks the placed mesh. A rigid
 /// model transform can carry a mesh that validate() accepts out of the world range (half a turn about
-/// the y axis through (-8000, 0, -8000) takes (8000, 0, 8000) to (-24000, 0, -24000)), and beyond it
-/// view-space coordinates can pass 2^15 units and wrap, which draws the mesh in the wrong place with
-/// status ok.
+/// the y axis through (-8000, 0, -8000) takes (8000, 0, 8000) to (-24000, 0, -24000)). Past the world
+/// range only placements whose view coordinates wrap are refused by project_vertices() (view.hpp,
+/// check_view_range()); this check keeps scenes inside the range every part of hider is tested for.
 /// Returns validate(m)'s errors, invalid_argument for a matrix entry beyond +-1 (the 32-bit transforms,
 /// the ARMv6-M one among them, rely on it; whether the matrix is a rotation is not checked), out_of_range
 /// for a placed position outside the world range (computed exactly, without wrapping). Cost:

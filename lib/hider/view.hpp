@@ -10,7 +10,8 @@
 namespace hider {
 
 /// |coordinate| of a world position, eye or target must stay below this (2^13 units).
-constexpr int32_t kWorldLimitRaw = int32_t{1} << 29;
+constexpr int kWorldLimitBits = 29;
+constexpr int32_t kWorldLimitRaw = int32_t{1} << kWorldLimitBits;
 /// The near plane may not be closer than 1/256 unit.
 constexpr int32_t kMinNearRaw = 256;
 
@@ -69,12 +70,50 @@ inline Status make_view(const Camera& cam, int32_t width, int32_t height, View& 
 
 /// The same view with a model transform applied first (model -> world -> view). Preconditions: the
 /// transform is a rotation and a translation, and the placed mesh lies in the world range, which
-/// validate(mesh, model) checks (mesh.hpp; with_model() cannot see the mesh, and beyond that range view
-/// coordinates wrap).
+/// validate(mesh, model) checks (mesh.hpp; with_model() cannot see the mesh). Where a placement would
+/// wrap view coordinates, project_vertices() and the BSP walks refuse it (check_view_range()).
 inline View with_model(const View& v, const Transform& model) {
     View r = v;
     r.to_view = compose(v.to_view, model);
     return r;
+}
+
+/// Whether `to_view` (a View's, with or without a model) keeps every view coordinate of every point with
+/// |coordinates| <= 2^bits raw within int32, in O(1): |t_i| + sum_j |R_ij| 2^bits / 2^30 + 1 (the floor)
+/// below 2^31 for each row i (the largest |coordinate| over that cube). Returns invalid_argument for a
+/// matrix entry beyond +-1 (no rotation; the 32-bit transforms rely on it), else ok or out_of_range.
+inline Status check_view_range(const Transform& to_view, int bits) {
+    const int32_t t[3] = {to_view.trans.x.raw(), to_view.trans.y.raw(), to_view.trans.z.raw()};
+    Status s = Status::ok;
+    for (int i = 0; i < 3; ++i) {
+        uint32_t sum = 0;  // sum_j |R_ij|, at most 3 2^30
+        for (const Q30& e : to_view.rot.m[i]) {
+            const int32_t r = e.raw();
+            if (r < -Q30::kOne || r > Q30::kOne) return Status::invalid_argument;
+            sum += static_cast<uint32_t>(r < 0 ? -r : r);
+        }
+        const uint32_t at = t[i] < 0 ? 0u - static_cast<uint32_t>(t[i]) : static_cast<uint32_t>(t[i]);  // <= 2^31
+        if (at + (sum >> (30 - bits)) + 1 > static_cast<uint32_t>(INT32_MAX)) s = Status::out_of_range;  // < 2^32
+    }
+    return s;
+}
+
+/// Whether `to_view` keeps every view coordinate of `positions` (each inside the world range:
+/// validate(mesh)) within int32. apply() wraps modulo 2^32, so a model (with_model()) that carries a mesh
+/// 2^15 units from the eye would draw it elsewhere with status ok; the drawing that follows the transform
+/// is exact for any int32 view coordinate. O(1) for any placement the world range allows (eye and mesh
+/// inside it: at most 2 sqrt(3) 2^13 units apart); otherwise each position is transformed exactly in 64
+/// bits. Returns invalid_argument for a matrix entry beyond +-1, out_of_range where a coordinate wraps.
+inline Status check_view_range(const Transform& to_view, Span<const Vec3q16> positions) {
+    const Status s = check_view_range(to_view, kWorldLimitBits);
+    if (s != Status::out_of_range) return s;
+    for (const Vec3q16& p : positions) {
+        const Vec3i64 w = apply_wide(to_view, p);
+        const int64_t c[3] = {w.x, w.y, w.z};
+        for (const int64_t e : c)
+            if (e < INT32_MIN || e > INT32_MAX) return Status::out_of_range;
+    }
+    return Status::ok;
 }
 
 /// View-space position of p. Precondition: |p| components below kWorldLimitRaw.

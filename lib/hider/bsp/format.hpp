@@ -39,7 +39,8 @@ constexpr uint32_t kBspNone = 0xFFFFFFFFu;   ///< no child
 constexpr int kBspBoxShift = 12;             ///< node boxes in units of 2^12 raw Q16 (1/16 world unit)
 /// |coordinate| of a BSP vertex stays below this (2048 world units): the int16 boxes then hold every
 /// vertex. hider-bsp fits a model into +-512 units.
-constexpr int32_t kBspWorldLimitRaw = int32_t{1} << 27;
+constexpr int kBspWorldLimitBits = 27;
+constexpr int32_t kBspWorldLimitRaw = int32_t{1} << kBspWorldLimitBits;
 constexpr uint32_t kBspFaceMask = 0x3FFFFFFFu;
 constexpr uint32_t kBspFaceBack = 0x80000000u;  ///< the triangle faces against its node's normal
 

@@ -75,7 +75,8 @@ inline void node_rows(const View& view, const PreparedTransform& to_view, const 
 /// wholly outside (once per frame). A full list: capacity_exceeded, the walk goes on and
 /// `list.size() + list.dropped()` entries were needed; the list then lacks the nearest nodes.
 /// Returns invalid_argument (list empty) for an unusable view, too few vertices or too small a stack,
-/// or a tree with more than 2^29 - 1 nodes. Borrows everything for the call.
+/// or a tree with more than 2^29 - 1 nodes; check_view_range()'s errors as draw_bsp(). Borrows everything
+/// for the call.
 inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
                             const DrawOptions& opt, Span<uint32_t> stack, BoundedList<BspDrawEntry>& list) {
     FrameStats st;
@@ -86,6 +87,8 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
         st.status = Status::invalid_argument;
         return st;
     }
+    st.status = check_view_range(view.to_view, kBspWorldLimitBits);  // as in walk_bsp()
+    if (st.status != Status::ok) return st;
     if (tree.nodes.empty()) return st;
     // Stack entries as in walk_bsp(): a node whose far subtree is being listed waits for its triangles
     // and near subtree, with kBspListFront (the eye on its front side), kPlane (in its plane) and kInside

@@ -194,6 +194,10 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
         st.status = Status::invalid_argument;
         return st;
     }
+    // Every vertex and node box of a loaded tree lies in the cube of kBspWorldLimitRaw, which a model
+    // transform (with_model()) may carry where view coordinates wrap: then nothing is drawn.
+    st.status = check_view_range(view.to_view, kBspWorldLimitBits);
+    if (st.status != Status::ok) return st;
     if (tree.nodes.empty()) return st;
     // A node whose first subtree is being drawn waits in the stack (one entry per level at most) for its
     // triangles and then its other subtree, with kFront when the eye is on its front side and kPlane when
@@ -276,8 +280,9 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
 /// marked once per frame by mark_unprojected(), each projected here when a triangle first needs it (a
 /// walk that skips most of the tree projects only what it draws). `stack` holds
 /// bsp_stack_entries(tree.max_depth) entries.
-/// Returns invalid_argument for an unusable frame, too few vertices or too small a stack. Counts nodes
-/// visited and subtrees skipped.
+/// Returns invalid_argument for an unusable frame, too few vertices or too small a stack, and
+/// check_view_range()'s errors for the tree's cube (a model transform carrying it where view coordinates
+/// wrap; nothing drawn). Counts nodes visited and subtrees skipped.
 template <class Format, class Depth>
 FrameStats draw_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
                     const FrameView<Format, Depth>& frame, const DrawOptions& opt, Span<uint32_t> stack) {

@@ -139,16 +139,36 @@ __attribute__((noinline)) inline void project_all(const View& view, Span<const V
 #endif
 }  // namespace detail
 
+namespace detail {
+/// check_view_range() for project_vertices(); where it fails, every vertex is marked outside the near
+/// plane and the depth range left empty. Out of line, so that the callers' frames (a band renderer's
+/// lives through the frame) and their inlining stay as they were.
+__attribute__((noinline)) inline Status check_placement(const View& view, Span<const Vec3q16> positions,
+                                                       Span<ScreenVertex> out, DepthRange* range) {
+    const Status s = check_view_range(view.to_view, positions);
+    if (s != Status::ok) {
+        for (size_t i = 0; i < positions.size(); ++i) out[i].mark_outside(kClipNear);
+        if (range != nullptr) *range = DepthRange{};
+    }
+    return s;
+}
+}  // namespace detail
+
 /// Transforms and projects every position into `out` (same index); vertices outside a clip plane are
 /// marked (ScreenVertex::outside()) and clipped per triangle later. Returns invalid_argument if out is
-/// too small. Precondition: validate(mesh) == ok. Cost per vertex: the transform (nine 32x32->64
-/// products, or 36 32-bit multiplies on ARMv6-M), clip codes, and three quotients by w (one reciprocal
-/// on ARMv6-M; where the CPU divides, project_common(): one 32-bit division for each screen coordinate
-/// and two for n / w).
+/// too small, and check_view_range()'s errors (view.hpp: a model transform, with_model(), that puts a
+/// position where its view coordinates wrap), with every vertex then marked outside the near plane, so
+/// that nothing of the mesh draws. Precondition: validate(mesh) == ok. Cost per vertex: the transform
+/// (nine 32x32->64 products, or 36 32-bit multiplies on ARMv6-M), clip codes, and three quotients by w
+/// (one reciprocal on ARMv6-M; where the CPU divides, project_common(): one 32-bit division for each
+/// screen coordinate and two for n / w).
 inline Status project_vertices(const View& view, Span<const Vec3q16> positions, Span<ScreenVertex> out,
                                DepthRange* range = nullptr) {
     if (out.size() < positions.size()) return Status::invalid_argument;
 #if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    // Checked first: ARMv6-M's 32-bit transform must not meet a coordinate that overflows.
+    const Status placed = detail::check_placement(view, positions, out, range);
+    if (placed != Status::ok) return placed;
     detail::project_all(view, positions, out.data());
 #else
     const PreparedTransform to_view(view.to_view);
@@ -172,7 +192,13 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
         }
         *range = r;
     }
+#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
     return Status::ok;
+#else
+    // Checked last: apply() wraps here without overflow (64-bit sums, unsigned adds), and the loop above
+    // keeps the registers it had without the call before it.
+    return detail::check_placement(view, positions, out, range);
+#endif
 }
 
 /// project_vertices() for one position, with the view transform prepared once by the caller: the same
