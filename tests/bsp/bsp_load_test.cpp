@@ -511,3 +511,89 @@ TEST_CASE("bsp_checksum is FNV-1a of every byte but the checksum field, for ever
         REQUIRE(bsp_checksum(bytes.data(), size) == want);
     }
 }
+
+TEST_CASE("bsp_load's BspLoadInfo names each refusal and where it was found") {
+    auto info_of = [](const std::vector<uint8_t>& bytes, size_t stack_entries = bsp_stack_entries(64)) {
+        std::vector<uint64_t> storage;
+        std::vector<uint32_t> stack(stack_entries);
+        BspTree tree;
+        BspLoadInfo info;
+        info.problem = BspProblem::node;  // overwritten by every call
+        const Span<const uint8_t> blob = test::aligned_copy(bytes.data(), bytes.size(), storage);
+        const Status s = bsp_load(blob, {stack.data(), stack.size()}, tree, &info);
+        return std::make_pair(s, info);
+    };
+    const BlobEdit b = cube();
+    const BspHeader h0 = b.header();
+    {
+        const auto [s, info] = info_of(b.bytes);
+        CHECK(s == Status::ok);
+        CHECK(info.problem == BspProblem::none);
+    }
+    auto expect = [&](const std::vector<uint8_t>& bytes, Status status, BspProblem problem, uint32_t index, uint32_t value,
+                      size_t stack_entries = bsp_stack_entries(64)) {
+        const auto [s, info] = info_of(bytes, stack_entries);
+        CHECK(s == status);
+        CHECK(info.problem == problem);
+        CHECK(info.index == index);
+        CHECK(info.value == value);
+        CHECK(std::string(bsp_problem_text(info.problem)) != "unknown");
+    };
+    expect({b.bytes.begin(), b.bytes.begin() + 10}, Status::bad_data, BspProblem::short_blob, 0, 0);
+    BlobEdit f = b;
+    f.bytes[0] ^= 1;
+    expect(f.bytes, Status::bad_data, BspProblem::magic, 0, 0);
+    BspHeader h = h0;
+    h.version = kBspVersion + 7;
+    f = b;
+    f.set_header(h);
+    expect(f.bytes, Status::bad_data, BspProblem::version, 0, kBspVersion + 7);
+    h = h0;
+    h.header_size = 65;
+    f = b;
+    f.set_header(h);
+    expect(f.bytes, Status::bad_data, BspProblem::header_size, 0, 65);
+    expect({b.bytes.begin(), b.bytes.end() - 8}, Status::bad_data, BspProblem::size, 0, h0.total_size);
+    h = h0;
+    h.node_count = 0x40000000u;
+    f = b;
+    f.set_header(h);
+    expect(f.bytes, Status::bad_data, BspProblem::too_many_nodes, 0, 0x40000000u);
+    f = b;
+    f.bytes[f.bytes.size() - 1] ^= 1;
+    expect(f.bytes, Status::bad_data, BspProblem::checksum, 0, 0);
+    const uint32_t v = h0.vertex_count - 1;
+    f = b;
+    f.set<int32_t>(f.vertex_at(v) + 4, kBspWorldLimitRaw);
+    f.reseal();
+    expect(f.bytes, Status::out_of_range, BspProblem::vertex_range, v, 0);
+    const uint32_t last_node = h0.node_count - 1;
+    f = b;
+    BspNode n = f.node(last_node);
+    n.origin = h0.vertex_count;
+    f.set_node(last_node, n);
+    f.reseal();
+    expect(f.bytes, Status::bad_data, BspProblem::node, last_node, 0);
+    const uint32_t t = h0.triangle_count - 1;
+    f = b;
+    BspTriangle tri = f.triangle(t);
+    tri.face |= 0x40000000u;  // a reserved bit
+    f.set_triangle(t, tri);
+    f.reseal();
+    expect(f.bytes, Status::bad_data, BspProblem::triangle, t, 0);
+    // Node 1 without a parent (the root's children skip it): met out of preorder.
+    expect(test::hand_blob({{2, kBspNone}, {kBspNone, kBspNone}, {kBspNone, kBspNone}}, 2), Status::bad_data, BspProblem::shape, 2, 0);
+    expect(test::hand_blob({{1, kBspNone}, {kBspNone, kBspNone}}, 1), Status::bad_data, BspProblem::depth, 2, 1);
+    expect(test::hand_blob({{1, kBspNone}, {kBspNone, kBspNone}}, 3), Status::bad_data, BspProblem::depth, 2, 3);
+    expect(test::chain_blob(40), Status::capacity_exceeded, BspProblem::too_deep, 39, 40, bsp_stack_entries(39));
+    {  // misaligned: invalid_argument
+        std::vector<uint64_t> storage(b.bytes.size() / 8 + 2);
+        uint8_t* base = reinterpret_cast<uint8_t*>(storage.data()) + 4;
+        std::memcpy(base, b.bytes.data(), b.bytes.size());
+        std::vector<uint32_t> stack(bsp_stack_entries(64));
+        BspTree tree;
+        BspLoadInfo info;
+        CHECK(bsp_load({base, b.bytes.size()}, {stack.data(), stack.size()}, tree, &info) == Status::invalid_argument);
+        CHECK(info.problem == BspProblem::misaligned);
+    }
+}

@@ -1103,14 +1103,26 @@ TEST_CASE("A corrupt, truncated or empty .hbsp is rejected with exit 2 and no im
     const std::string good = read_file(torus_blob());
     std::string flipped = good;
     flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
-    const std::pair<std::string, std::string> cases[] = {
-        {"flipped.hbsp", flipped}, {"truncated.hbsp", good.substr(0, good.size() - 7)}, {"empty.hbsp", ""},
-        {"header_only.hbsp", good.substr(0, 64)}, {"obj_text.hbsp", kTriangle}};
-    for (const auto& [name, bytes] : cases) {
-        const std::string& case_name = name;  // INFO cannot capture a structured binding (clang)
-        INFO("case ", case_name);
-        const std::string path = write_blob(name, bytes);
-        check_error(render(path, {"--algo", "bsp"}), {path + ": ", "not a valid BSP tree (bad data)"});
+    std::string newer = good;  // the version field (bytes 4-5) of a later format
+    newer[4] = static_cast<char>(hider::kBspVersion + 1);
+    newer[5] = 0;
+    std::string padded = kTriangle;
+    padded.resize(80, ' ');
+    // Each refusal names what bsp_load() found (BspLoadInfo), not only "bad data".
+    const std::string cases[][3] = {
+        {"flipped.hbsp", flipped, "checksum mismatch (corrupted) (status bad data)"},
+        {"truncated.hbsp", good.substr(0, good.size() - 7), "sizes disagree with the blob's length (cut or padded) (the header's counts give " +
+                                                                std::to_string(good.size()) + " bytes) (status bad data)"},
+        {"empty.hbsp", "", "shorter than a BSP header (status bad data)"},
+        {"header_only.hbsp", good.substr(0, 64), "sizes disagree with the blob's length"},
+        {"obj_text.hbsp", padded, "not a hider BSP blob (no HBSP magic) (status bad data)"},
+        {"newer.hbsp", newer,
+         "another BSP format version (" + std::to_string(hider::kBspVersion + 1) + "; this hider reads " +
+             std::to_string(hider::kBspVersion) + "): rebuild it with hider-bsp (status bad data)"}};
+    for (const auto& c : cases) {
+        INFO("case ", c[0]);
+        const std::string path = write_blob(c[0], c[1]);
+        check_error(render(path, {"--algo", "bsp"}), {path + ": not a valid BSP tree: ", c[2]});
     }
     const std::string missing = scratch_path("missing.hbsp");
     check_error(render(missing, {"--algo", "bsp-front"}), {missing + ": cannot open"});

@@ -97,6 +97,27 @@ AlignedBlob::AlignedBlob(const std::vector<uint8_t>& bytes) : words_((bytes.size
     if (!bytes.empty()) std::memcpy(words_.data(), bytes.data(), bytes.size());
 }
 
+std::string bsp_load_message(Status s, const BspLoadInfo& info) {
+    std::string m = bsp_problem_text(info.problem);
+    switch (info.problem) {
+        case BspProblem::version:
+            m += " (" + std::to_string(info.value) + "; this hider reads " + std::to_string(kBspVersion) +
+                 "): rebuild it with hider-bsp";
+            break;
+        case BspProblem::vertex_range: m = "vertex " + std::to_string(info.index) + " outside the BSP world range"; break;
+        case BspProblem::node: m += " " + std::to_string(info.index); break;
+        case BspProblem::triangle: m += " " + std::to_string(info.index); break;
+        case BspProblem::shape: m += " (at node " + std::to_string(info.index) + ")"; break;
+        case BspProblem::depth:
+            m += " (header " + std::to_string(info.value) + ", tree " + (info.index > info.value ? "more than " : "") +
+                 std::to_string(info.index) + ")";
+            break;
+        case BspProblem::size: m += " (the header's counts give " + std::to_string(info.value) + " bytes)"; break;
+        default: break;
+    }
+    return m + " (status " + status_name(s) + ")";
+}
+
 bool render_bsp(const Scene& scene, const std::vector<uint8_t>& blob, const RenderOptions& opt, RenderResult& out,
                 std::string& error) {
     std::vector<uint8_t> built;
@@ -109,9 +130,10 @@ bool render_bsp(const Scene& scene, const std::vector<uint8_t>& blob, const Rend
     const AlignedBlob aligned(blob.empty() ? built : blob);
     BspTree tree;
     std::vector<uint32_t> probe(bsp_stack_entries(1u << 16));  // load measures the depth with it
-    const Status ls = bsp_load(aligned.span(), {probe.data(), probe.size()}, tree);
+    BspLoadInfo info;
+    const Status ls = bsp_load(aligned.span(), {probe.data(), probe.size()}, tree, &info);
     if (ls != Status::ok) {
-        error = std::string("BSP tree rejected: ") + status_name(ls);
+        error = "BSP tree rejected: " + bsp_load_message(ls, info);
         return false;
     }
     switch (opt.format) {

@@ -266,11 +266,12 @@ int main(int argc, char** argv) {
         const AlignedBlob aligned(blob);
         std::vector<uint32_t> probe(bsp_stack_entries(kToolMaxBspDepth));
         BspTree tree;
-        const Status ls = bsp_load(aligned.span(), {probe.data(), probe.size()}, tree);
+        BspLoadInfo info;
+        const Status ls = bsp_load(aligned.span(), {probe.data(), probe.size()}, tree, &info);
         if (ls == Status::capacity_exceeded)
             fail(model_path + ": the tree is deeper than the " + std::to_string(kToolMaxBspDepth) +
                  " levels hider-render walks (build it with hider-bsp --max-chain, e.g. 256)");
-        if (ls != Status::ok) fail(model_path + ": not a valid BSP tree (" + status_name(ls) + ")");
+        if (ls != Status::ok) fail(model_path + ": not a valid BSP tree: " + bsp_load_message(ls, info));
         if (!bsp_scene(tree, cam, scene, why)) fail(model_path + ": " + why);
         if (!render_bsp(scene, blob, opt, result, why)) fail(model_path + ": " + why);
     } else {

@@ -34,21 +34,79 @@ template <class T> const T* blob_at(const uint8_t* blob, size_t offset) {
 }
 }  // namespace detail
 
+/// What bsp_load() refused, for a message (BspLoadInfo).
+enum class BspProblem : uint8_t {
+    none,
+    misaligned,     ///< the blob does not start on an 8-byte boundary (invalid_argument)
+    short_blob,     ///< fewer bytes than a header
+    magic,          ///< not a hider BSP blob
+    version,        ///< another format version (value: the blob's; this hider reads kBspVersion)
+    header_size,    ///< the header's size field is not this version's
+    size,           ///< the counts, the header's total size and the blob's length disagree (value: the total it gives)
+    too_many_nodes, ///< 2^30 nodes or more (value: the count)
+    checksum,       ///< the bytes do not match the checksum: corrupted or cut
+    vertex_range,   ///< a vertex outside kBspWorldLimitRaw (index: the vertex; out_of_range)
+    node,           ///< a node's index, child, box, cell label or normal is wrong (index: the node)
+    triangle,       ///< a triangle's vertex index or face bits are wrong (index: the triangle)
+    shape,          ///< the nodes are not a tree stored in preorder (index: the node met)
+    depth,          ///< the header's depth is not the tree's (value: the header's; index: the tree's)
+    too_deep,       ///< the tree is deeper than the stack holds (value: the level; capacity_exceeded)
+};
+
+/// Details of a refused blob: the problem, the node, triangle or vertex it was found at, and a value.
+struct BspLoadInfo {
+    BspProblem problem = BspProblem::none;
+    uint32_t index = 0;
+    uint32_t value = 0;
+};
+
+/// A short English phrase for a BspProblem (for the host tools' messages and a firmware's log).
+constexpr const char* bsp_problem_text(BspProblem p) {
+    switch (p) {
+        case BspProblem::none: return "none";
+        case BspProblem::misaligned: return "blob not 8-byte aligned";
+        case BspProblem::short_blob: return "shorter than a BSP header";
+        case BspProblem::magic: return "not a hider BSP blob (no HBSP magic)";
+        case BspProblem::version: return "another BSP format version";
+        case BspProblem::header_size: return "header size field wrong";
+        case BspProblem::size: return "sizes disagree with the blob's length (cut or padded)";
+        case BspProblem::too_many_nodes: return "2^30 nodes or more";
+        case BspProblem::checksum: return "checksum mismatch (corrupted)";
+        case BspProblem::vertex_range: return "vertex outside the BSP world range";
+        case BspProblem::node: return "invalid node";
+        case BspProblem::triangle: return "invalid triangle";
+        case BspProblem::shape: return "nodes not a tree in preorder";
+        case BspProblem::depth: return "header's depth is not the tree's";
+        case BspProblem::too_deep: return "tree deeper than the stack holds";
+    }
+    return "unknown";
+}
+
 /// Checks `blob` and points `out` into it. `stack` is the caller's walk stack: it must hold
 /// bsp_stack_entries(depth) entries for the tree's depth (load() uses it to measure that depth).
 /// Returns bad_data for any inconsistency (out untouched), out_of_range for a vertex outside
 /// kBspWorldLimitRaw, invalid_argument for a blob not 8-byte aligned, capacity_exceeded when the tree is deeper than
-/// the stack holds. Cost: one pass over the bytes (checksum) and one over the nodes.
-inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& out) {
-    if ((reinterpret_cast<uintptr_t>(blob.data()) & 7u) != 0) return Status::invalid_argument;
-    if (blob.size() < sizeof(BspHeader)) return Status::bad_data;
+/// the stack holds; `info`, if given, says which check failed and where. Cost: one pass over the bytes
+/// (checksum) and one over the nodes.
+inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& out, BspLoadInfo* info = nullptr) {
+    auto refuse = [info](Status s, BspProblem p, uint32_t index = 0, uint32_t value = 0) {
+        if (info != nullptr) *info = BspLoadInfo{p, index, value};
+        return s;
+    };
+    if (info != nullptr) *info = BspLoadInfo{};
+    if ((reinterpret_cast<uintptr_t>(blob.data()) & 7u) != 0) return refuse(Status::invalid_argument, BspProblem::misaligned);
+    if (blob.size() < sizeof(BspHeader)) return refuse(Status::bad_data, BspProblem::short_blob);
     const BspHeader& h = *detail::blob_at<BspHeader>(blob.data(), 0);
-    if (h.magic != kBspMagic || h.version != kBspVersion || h.header_size != sizeof(BspHeader)) return Status::bad_data;
+    if (h.magic != kBspMagic) return refuse(Status::bad_data, BspProblem::magic);
+    if (h.version != kBspVersion) return refuse(Status::bad_data, BspProblem::version, 0, h.version);
+    if (h.header_size != sizeof(BspHeader)) return refuse(Status::bad_data, BspProblem::header_size, 0, h.header_size);
     // Sizes in 64 bits: the counts come from the blob and must not wrap a 32-bit size_t.
     const uint64_t total = uint64_t{sizeof(BspHeader)} + uint64_t{h.node_count} * sizeof(BspNode) +
                            uint64_t{h.triangle_count} * sizeof(BspTriangle) + uint64_t{h.vertex_count} * sizeof(BspVertex);
-    if (total != h.total_size || total != blob.size() || h.node_count >= 0x40000000u) return Status::bad_data;  // walks tag indices with two bits
-    if (bsp_checksum(blob.data(), blob.size()) != h.checksum) return Status::bad_data;
+    if (h.node_count >= 0x40000000u) return refuse(Status::bad_data, BspProblem::too_many_nodes, 0, h.node_count);  // walks tag indices with two bits
+    if (total != h.total_size || total != blob.size())
+        return refuse(Status::bad_data, BspProblem::size, 0, total > UINT32_MAX ? UINT32_MAX : static_cast<uint32_t>(total));
+    if (bsp_checksum(blob.data(), blob.size()) != h.checksum) return refuse(Status::bad_data, BspProblem::checksum);
     const BspLayout l = bsp_layout(h.node_count, h.triangle_count, h.vertex_count);
     const BspNode* nodes = detail::blob_at<BspNode>(blob.data(), l.nodes);
     const BspTriangle* tris = detail::blob_at<BspTriangle>(blob.data(), l.triangles);
@@ -58,29 +116,29 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
     for (uint32_t i = 0; i < h.vertex_count; ++i) {
         const int32_t c[3] = {verts[i].x.raw(), verts[i].y.raw(), verts[i].z.raw()};
         for (int32_t e : c)
-            if (e <= -kBspWorldLimitRaw || e >= kBspWorldLimitRaw) return Status::out_of_range;
+            if (e <= -kBspWorldLimitRaw || e >= kBspWorldLimitRaw) return refuse(Status::out_of_range, BspProblem::vertex_range, i);
     }
     for (uint32_t i = 0; i < h.node_count; ++i) {
         const BspNode& n = nodes[i];
-        if (n.origin >= h.vertex_count || n.first > h.triangle_count || n.count > h.triangle_count - n.first) return Status::bad_data;
+        if (n.origin >= h.vertex_count || n.first > h.triangle_count || n.count > h.triangle_count - n.first) return refuse(Status::bad_data, BspProblem::node, i);
         for (uint32_t c : n.child)
-            if (c != kBspNone && (c <= i || c >= h.node_count)) return Status::bad_data;  // forward only: no cycle
+            if (c != kBspNone && (c <= i || c >= h.node_count)) return refuse(Status::bad_data, BspProblem::node, i);  // forward only: no cycle
         for (int k = 0; k < 3; ++k)
-            if (n.box_min[k] > n.box_max[k]) return Status::bad_data;
-        if ((n.cells & ~kBspCellMask) != 0) return Status::bad_data;
+            if (n.box_min[k] > n.box_max[k]) return refuse(Status::bad_data, BspProblem::node, i);
+        if ((n.cells & ~kBspCellMask) != 0) return refuse(Status::bad_data, BspProblem::node, i);
         for (int c = 0; c < 2; ++c) {  // labels only on an empty child, one at most
             const bool lowest = (n.cells & (kBspCellLowest << c)) != 0, highest = (n.cells & (kBspCellHighest << c)) != 0;
-            if ((lowest || highest) && (n.child[c] != kBspNone || (lowest && highest))) return Status::bad_data;
+            if ((lowest || highest) && (n.child[c] != kBspNone || (lowest && highest))) return refuse(Status::bad_data, BspProblem::node, i);
         }
-        if (n.n[0] == 0 && n.n[1] == 0 && n.n[2] == 0) return Status::bad_data;
+        if (n.n[0] == 0 && n.n[1] == 0 && n.n[2] == 0) return refuse(Status::bad_data, BspProblem::node, i);
         // |n| < 2^62 keeps the eye test's three products and their sum inside 128 bits.
         for (int64_t c : n.n)
-            if (c <= -(int64_t{1} << 62) || c >= (int64_t{1} << 62)) return Status::bad_data;
+            if (c <= -(int64_t{1} << 62) || c >= (int64_t{1} << 62)) return refuse(Status::bad_data, BspProblem::node, i);
     }
     for (uint32_t i = 0; i < h.triangle_count; ++i) {
         const BspTriangle& t = tris[i];
-        if (t.v[0] >= h.vertex_count || t.v[1] >= h.vertex_count || t.v[2] >= h.vertex_count) return Status::bad_data;
-        if ((t.face & ~(kBspFaceMask | kBspFaceBack)) != 0) return Status::bad_data;
+        if (t.v[0] >= h.vertex_count || t.v[1] >= h.vertex_count || t.v[2] >= h.vertex_count) return refuse(Status::bad_data, BspProblem::triangle, i);
+        if ((t.face & ~(kBspFaceMask | kBspFaceBack)) != 0) return refuse(Status::bad_data, BspProblem::triangle, i);
     }
     // Shape and depth: a preorder walk (front child first) keeping one entry per level above the node in
     // the caller's stack: the back child still to visit there (kBspNone once taken, or when there is
@@ -92,11 +150,11 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
         size_t top = 0;
         uint32_t node = 0, visits = 0;
         for (;;) {
-            if (node != visits++) return Status::bad_data;  // not in preorder: not a tree, or stored otherwise
+            if (node != visits++) return refuse(Status::bad_data, BspProblem::shape, node);  // not in preorder: not a tree, or stored otherwise
             const uint32_t level = static_cast<uint32_t>(top) + 1;
             depth = max(depth, level);
-            if (level > h.max_depth) return Status::bad_data;
-            if (bsp_stack_entries(level) > stack.size()) return Status::capacity_exceeded;
+            if (level > h.max_depth) return refuse(Status::bad_data, BspProblem::depth, level, h.max_depth);
+            if (bsp_stack_entries(level) > stack.size()) return refuse(Status::capacity_exceeded, BspProblem::too_deep, node, level);
             const BspNode& n = nodes[node];
             if (n.child[0] != kBspNone || n.child[1] != kBspNone) {  // down: the front child if any
                 stack[top++] = n.child[0] != kBspNone ? n.child[1] : kBspNone;
@@ -108,9 +166,9 @@ inline Status bsp_load(Span<const uint8_t> blob, Span<uint32_t> stack, BspTree& 
             node = stack[top - 1];
             stack[top - 1] = kBspNone;  // taken: the entry now stands for the step down to it
         }
-        if (visits != h.node_count) return Status::bad_data;  // nodes no parent points to
+        if (visits != h.node_count) return refuse(Status::bad_data, BspProblem::shape, visits);  // nodes no parent points to
     }
-    if (depth != h.max_depth) return Status::bad_data;  // the header's depth is the tree's, not a bound
+    if (depth != h.max_depth) return refuse(Status::bad_data, BspProblem::depth, depth, h.max_depth);  // the header's depth is the tree's, not a bound
     out.header = &h;
     out.nodes = {nodes, h.node_count};
     out.triangles = {tris, h.triangle_count};
