@@ -32,11 +32,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         h.checksum = hider::bsp_checksum(sealed.data(), sealed.size());
         std::memcpy(sealed.data(), &h, sizeof h);
         check(hider::test::exercise_bsp(sealed.data(), sealed.size()), "checksum recomputed");
-        // A load stack for 3 levels only, so load's capacity_exceeded path is fuzzed too (no walk).
+        // A load stack for 3 levels only, so load's capacity_exceeded path is fuzzed too (no walk), with
+        // its BspLoadInfo: a problem named exactly when the load fails.
         std::vector<uint64_t> storage;
+        std::vector<uint32_t> stack(hider::bsp_stack_entries(3));
         hider::BspTree tree;
-        (void)hider::test::load_bsp(hider::test::aligned_copy(sealed.data(), sealed.size(), storage),
-                                    hider::bsp_stack_entries(3), tree);
+        hider::BspLoadInfo info;
+        const hider::Status s = hider::bsp_load(hider::test::aligned_copy(sealed.data(), sealed.size(), storage),
+                                                {stack.data(), stack.size()}, tree, &info);
+        if ((s == hider::Status::ok) != (info.problem == hider::BspProblem::none)) {
+            std::fprintf(stderr, "bsp_load_fuzz: status %d with problem '%s'\n", static_cast<int>(s),
+                         hider::bsp_problem_text(info.problem));
+            std::abort();
+        }
     }
     return 0;
 }
