@@ -307,6 +307,14 @@ TEST_CASE("A far plane that is not beyond the near plane is rejected with both v
     check_error(render(model, {"--near", "5", "--far", "2"}), {model + ": ", "far plane (2)", "greater than near (5)"});
 }
 
+TEST_CASE("A near plane too small for the fixed-point range names the option it came from") {
+    const std::string model = triangle_model();
+    // Given: only the limit. Derived from a tiny --far: says so, with that far plane.
+    check_error(render(model, {"--near", "1e-9"}), {model + ": ", "near plane 1e-09 is too small for a scene", "hider needs near >="});
+    check_error(render(model, {"--far", "0.0001"}),
+                {model + ": ", "near plane 1e-07 (not given: derived from the far plane 0.0001; give --near) is too small"});
+}
+
 TEST_CASE("A non-positive near plane is rejected") {
     const std::string model = triangle_model();
     check_error(render(model, {"--near", "0"}), {model + ": ", "near plane must be > 0"});

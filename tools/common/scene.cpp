@@ -150,7 +150,9 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
     const double near_world = near * scale, far_world = far * scale;
     const double min_near = kMinNearRaw / 65536.0;
     if (near_world < min_near) {
-        error = "near plane " + fmt(near) + " is too small for a scene of extent " + fmt(half * 2) +
+        // A near plane the user did not give was derived (at least far / 1000): say so, and from what.
+        const std::string from = args.near ? "" : " (not given: derived from the far plane " + fmt(far) + "; give --near)";
+        error = "near plane " + fmt(near) + from + " is too small for a scene of extent " + fmt(half * 2) +
                 " (hider needs near >= " + fmt(min_near / scale) + ")";
         return false;
     }
