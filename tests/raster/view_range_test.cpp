@@ -64,6 +64,31 @@ std::vector<uint32_t> ids_of(const std::vector<Rgb888>& px) {
     return ids;
 }
 
+/// A camera looking from eye to target, y up, near 1 unit.
+Camera camera(Vec3q16 eye, Vec3q16 target, int fov_degrees, int far_units) {
+    Camera cam;
+    cam.eye = eye;
+    cam.target = target;
+    cam.up = units(0, 1, 0);
+    cam.fovy = Angle::from_degrees(Q16::from_int(fov_degrees));
+    cam.near = Q16::from_int(1);
+    cam.far = Q16::from_int(far_units);
+    return cam;
+}
+
+/// The z-buffer's face ids (Shade::id, no culling, 32-bit depth) of a W x H frame; the status in `st`.
+std::vector<Rgb888> zbuffer_frame(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, int w, int h, FrameStats& st) {
+    std::vector<Rgb888> px(static_cast<size_t>(w) * h);
+    std::vector<uint32_t> depth(px.size());
+    const auto f = frame_view<Rgb888Format, uint32_t>(px.data(), depth.data(), w, h);
+    clear(f, Rgb{0, 0, 0});
+    DrawOptions opt;
+    opt.shade = Shade::id;
+    opt.cull = false;
+    st = draw_zbuffer(view, mesh, verts, f, opt);
+    return px;
+}
+
 long painted(const std::vector<Rgb888>& px) {
     long n = 0;
     for (const Rgb888& c : px) n += (c.r | c.g | c.b) != 0;
@@ -165,13 +190,7 @@ TEST_CASE("project_vertices refuses a placement whose view coordinates wrap and 
     const Tri tris[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
     const Mesh mesh{{pos, 4}, {tris, 2}, {}, {}};
     REQUIRE(validate(mesh) == Status::ok);
-    Camera cam;
-    cam.eye = units(7000, 300, 7000);
-    cam.target = units(-8000, 0, -8000);
-    cam.up = units(0, 1, 0);
-    cam.fovy = Angle::from_degrees(Q16::from_int(60));
-    cam.near = Q16::from_int(1);
-    cam.far = Q16::from_int(30000);
+    const Camera cam = camera(units(7000, 300, 7000), units(-8000, 0, -8000), 60, 30000);
     constexpr int W = 64, H = 48;
     View view;
     REQUIRE(make_view(cam, W, H, view) == Status::ok);
@@ -196,21 +215,15 @@ TEST_CASE("project_vertices refuses a placement whose view coordinates wrap and 
     CHECK(range.min == kDepthFar);  // empty
     CHECK(range.max == kDepthNear);
     // A caller that ignores the status draws nothing rather than the wrapped floor.
-    std::vector<Rgb888> px(W * H);
-    std::vector<uint32_t> depth(W * H);
-    const auto f = frame_view<Rgb888Format, uint32_t>(px.data(), depth.data(), W, H);
-    clear(f, Rgb{0, 0, 0});
-    DrawOptions opt;
-    opt.shade = Shade::id;
-    opt.cull = false;
-    CHECK(draw_zbuffer(half, mesh, {verts, 4}, f, opt).ok());
-    CHECK(painted(px) == 0);
+    FrameStats st;
+    CHECK(painted(zbuffer_frame(half, mesh, {verts, 4}, W, H, st)) == 0);
+    CHECK(st.ok());
     // Unturned, the same floor is drawn (and the bound takes the O(1) path).
     const View still = with_model(view, turn(0));
     CHECK(check_view_range(still.to_view, kWorldLimitBits) == Status::ok);
     CHECK(project_vertices(still, mesh.positions, {verts, 4}) == Status::ok);
-    CHECK(draw_zbuffer(still, mesh, {verts, 4}, f, opt).ok());
-    CHECK(painted(px) > W * H / 4);
+    CHECK(painted(zbuffer_frame(still, mesh, {verts, 4}, W, H, st)) > W * H / 4);
+    CHECK(st.ok());
 }
 
 TEST_CASE("placements far outside the world range draw as the double reference does, unless they wrap") {
@@ -247,14 +260,10 @@ TEST_CASE("placements far outside the world range draw as the double reference d
             c[i] = static_cast<int32_t>(v);
         }
         if (!fits) { ++skipped; continue; }  // the translation itself must be a Q16 value
-        Camera cam;
-        cam.eye = eye;
-        cam.target = units(e[0] + static_cast<int32_t>(d[0] / len * 100), e[1] + static_cast<int32_t>(d[1] / len * 100),
-                           e[2] + static_cast<int32_t>(d[2] / len * 100));
-        cam.up = units(0, 1, 0);
-        cam.fovy = Angle::from_degrees(Q16::from_int(10));
-        cam.near = Q16::from_int(1);
-        cam.far = Q16::from_int(32000);
+        const Camera cam = camera(eye,
+                                  units(e[0] + static_cast<int32_t>(d[0] / len * 100), e[1] + static_cast<int32_t>(d[1] / len * 100),
+                                        e[2] + static_cast<int32_t>(d[2] / len * 100)),
+                                  10, 32000);
         View view;
         if (make_view(cam, W, H, view) != Status::ok) continue;  // up along the view
         const Transform model = turned(rng(), rng(), rng(), units(c[0], c[1], c[2]));
@@ -265,14 +274,8 @@ TEST_CASE("placements far outside the world range draw as the double reference d
         const Status s = project_vertices(placed, mesh.positions, {verts.data(), verts.size()});
         CAPTURE(n);
         CHECK(s == (any_wrap ? Status::out_of_range : Status::ok));
-        std::vector<Rgb888> px(W * H);
-        std::vector<uint32_t> depth(W * H);
-        const auto f = frame_view<Rgb888Format, uint32_t>(px.data(), depth.data(), W, H);
-        clear(f, Rgb{0, 0, 0});
-        DrawOptions opt;
-        opt.shade = Shade::id;
-        opt.cull = false;
-        const FrameStats st = draw_zbuffer(placed, mesh, {verts.data(), verts.size()}, f, opt);
+        FrameStats st;
+        const std::vector<Rgb888> px = zbuffer_frame(placed, mesh, {verts.data(), verts.size()}, W, H, st);
         REQUIRE(st.ok());
         if (any_wrap) {
             ++refused;
@@ -301,13 +304,7 @@ TEST_CASE("draw_bsp and order_bsp refuse a model transform that carries the tree
     std::vector<uint32_t> stack(4096);
     BspTree tree;
     REQUIRE(bsp_load(blob, {stack.data(), stack.size()}, tree) == Status::ok);
-    Camera cam;
-    cam.eye = units(-8000, 0, 0);
-    cam.target = units(0, 0, 0);
-    cam.up = units(0, 1, 0);
-    cam.fovy = Angle::from_degrees(Q16::from_int(20));
-    cam.near = Q16::from_int(1);
-    cam.far = Q16::from_int(32000);
+    const Camera cam = camera(units(-8000, 0, 0), units(0, 0, 0), 20, 32000);
     constexpr int W = 32, H = 24;
     View view;
     REQUIRE(make_view(cam, W, H, view) == Status::ok);
