@@ -81,8 +81,9 @@ inline View with_model(const View& v, const Transform& model) {
 /// Whether `to_view` (a View's, with or without a model) keeps every view coordinate of every point with
 /// |coordinates| <= 2^bits raw within int32, in O(1): |t_i| + sum_j |R_ij| 2^bits / 2^30 + 1 (the floor)
 /// below 2^31 for each row i (the largest |coordinate| over that cube). Returns invalid_argument for a
-/// matrix entry beyond +-1 (no rotation; the 32-bit transforms rely on it), else ok or out_of_range.
-inline Status check_view_range(const Transform& to_view, int bits) {
+/// matrix entry beyond +-1 (no rotation; the 32-bit transforms rely on it), else ok or out_of_range. Out
+/// of line: a walk that calls it once keeps its registers for its loop.
+__attribute__((noinline)) inline Status check_view_range(const Transform& to_view, int bits) {
     const int32_t t[3] = {to_view.trans.x.raw(), to_view.trans.y.raw(), to_view.trans.z.raw()};
     Status s = Status::ok;
     for (int i = 0; i < 3; ++i) {

@@ -194,10 +194,6 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
         st.status = Status::invalid_argument;
         return st;
     }
-    // Every vertex and node box of a loaded tree lies in the cube of kBspWorldLimitRaw, which a model
-    // transform (with_model()) may carry where view coordinates wrap: then nothing is drawn.
-    st.status = check_view_range(view.to_view, kBspWorldLimitBits);
-    if (st.status != Status::ok) return st;
     if (tree.nodes.empty()) return st;
     // A node whose first subtree is being drawn waits in the stack (one entry per level at most) for its
     // triangles and then its other subtree, with kFront when the eye is on its front side and kPlane when
@@ -286,6 +282,12 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
 template <class Format, class Depth>
 FrameStats draw_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
                     const FrameView<Format, Depth>& frame, const DrawOptions& opt, Span<uint32_t> stack) {
+    // Every vertex and node box of a loaded tree lies in the cube of kBspWorldLimitRaw, which a model
+    // transform (with_model()) may carry where view coordinates wrap: then nothing is drawn. Checked
+    // here, not in the walk, whose loop then keeps its registers.
+    FrameStats st;
+    st.status = check_view_range(view.to_view, kBspWorldLimitBits);
+    if (st.status != Status::ok) return st;
     return detail::walk_bsp<false>(view, eye, tree, verts, frame, opt, stack, nullptr);
 }
 
@@ -295,12 +297,14 @@ template <class Format, class Depth>
 FrameStats draw_bsp_front(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
                           const FrameView<Format, Depth>& frame, const DrawOptions& opt, Span<uint32_t> stack,
                           Span<uint32_t> coverage) {
+    FrameStats st;
     Coverage cov;
     if (!cov.reset(coverage, frame.width, frame.y0, frame.y1)) {
-        FrameStats st;
         st.status = Status::invalid_argument;
         return st;
     }
+    st.status = check_view_range(view.to_view, kBspWorldLimitBits);  // as draw_bsp()
+    if (st.status != Status::ok) return st;
     return detail::walk_bsp<true>(view, eye, tree, verts, frame, opt, stack, &cov);
 }
 
