@@ -7,7 +7,7 @@
 namespace hider {
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-/// HIDER_V7M_PIXEL(entry, skip): one pixel of HIDER_V7M_ROWS's four-pixel turn, entered at local label
+/// HIDER_V7M_PIXEL(entry, skip): one pixel of HIDER_V7M_ROWS's 16-pixel turn, entered at local label
 /// `entry`: the depth at r9 (post-incremented) against z = lr's top half, on a pass both stores (colour at
 /// r9 + r7, r10), then z += dzdx (r8); r12 scratch.
 #define HIDER_V7M_PIXEL(entry, skip) \
@@ -26,7 +26,7 @@ namespace hider {
 /// the colour offset less 2, r8 dzdx, r10 the colour; at sp the middle row's depth pointer, the rows after the
 /// switch (-1: none) and the depth row after the last. Exit: the record (r0) holds the next row's edges
 /// and depth, r12 that row's depth pointer (every other register clobbered). r6 must be at least 1 (the
-/// row loop tests after its first row). Uses local labels 71..88 and the operands ra, n_left, n_x, n_g,
+/// row loop tests after its first row). Uses local labels 71..88 and 100..116, and the operands ra, n_left, n_x, n_g,
 /// n_a, n_z, n_dz.
 #define HIDER_V7M_ROWS \
     "72:\n\t"                                /* row */ \
@@ -34,16 +34,29 @@ namespace hider {
     "ble    74f\n\t"                         /* empty span */ \
     "mov    r9, r1\n\t"                      /* p = lp */ \
     "mov    lr, r3\n\t"                      /* z = lz */ \
-    "ubfx   r11, r11, #1, #2\n\t"            /* pixels mod 4: where to enter the four-pixel turn */ \
+    "ubfx   r11, r11, #1, #4\n\t"            /* pixels mod 16: where to enter the 16-pixel turn */ \
     "tbb    [pc, r11]\n"                      \
     "88:\n\t"                                \
-    ".byte  (80f - 88b) / 2, (83f - 88b) / 2, (82f - 88b) / 2, (81f - 88b) / 2\n" \
-    HIDER_V7M_PIXEL(80, 84)                  \
-    HIDER_V7M_PIXEL(81, 85)                  \
-    HIDER_V7M_PIXEL(82, 86)                  \
-    HIDER_V7M_PIXEL(83, 87)                  \
+    ".byte  (100f - 88b) / 2, (115f - 88b) / 2, (114f - 88b) / 2, (113f - 88b) / 2, (112f - 88b) / 2, (111f - 88b) / 2, (110f - 88b) / 2, (109f - 88b) / 2\n\t" \
+    ".byte  (108f - 88b) / 2, (107f - 88b) / 2, (106f - 88b) / 2, (105f - 88b) / 2, (104f - 88b) / 2, (103f - 88b) / 2, (102f - 88b) / 2, (101f - 88b) / 2\n" \
+    HIDER_V7M_PIXEL(100, 116)                 \
+    HIDER_V7M_PIXEL(101, 116)                 \
+    HIDER_V7M_PIXEL(102, 116)                 \
+    HIDER_V7M_PIXEL(103, 116)                 \
+    HIDER_V7M_PIXEL(104, 116)                 \
+    HIDER_V7M_PIXEL(105, 116)                 \
+    HIDER_V7M_PIXEL(106, 116)                 \
+    HIDER_V7M_PIXEL(107, 116)                 \
+    HIDER_V7M_PIXEL(108, 116)                 \
+    HIDER_V7M_PIXEL(109, 116)                 \
+    HIDER_V7M_PIXEL(110, 116)                 \
+    HIDER_V7M_PIXEL(111, 116)                 \
+    HIDER_V7M_PIXEL(112, 116)                 \
+    HIDER_V7M_PIXEL(113, 116)                 \
+    HIDER_V7M_PIXEL(114, 116)                 \
+    HIDER_V7M_PIXEL(115, 116)                 \
     "cmp    r9, r4\n\t"                      \
-    "bne    80b\n"                            \
+    "bne    100b\n"                           \
     "74:\n\t"                                /* left edge: g += m, p += step, z += dz_row, then correct */ \
     "ldmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
     "adds   r2, r2, r11\n\t" \
@@ -101,9 +114,9 @@ namespace hider {
 /// Thumb-2. In the row loop: r0 the right edge's constants (offset 36) with the left edge's just below
 /// (load-multiple decrement-before) and `next` above, r1..r5 lp lg lz rp rg, r6 rows left in this
 /// phase, r7 colour offset less 2, r8 dz, r10 colour; on the stack the middle row's depth pointer, the
-/// rows after the switch (-1: none) and the depth row after the last. Pixel loop, four pixels a turn
-/// (a table branch enters a span of 4k + j pixels at the (4 - j)-th, Duff-style, so short spans pay one
-/// loop test a row rather than one a pair): r9 the depth pointer, post-incremented, ending at rp (r4),
+/// rows after the switch (-1: none) and the depth row after the last. Pixel loop, 16 pixels a turn
+/// (a table branch enters a span of 16k + j pixels at the (16 - j)-th, Duff-style, so short spans pay one
+/// loop test a row rather than one every four): r9 the depth pointer, post-incremented, ending at rp (r4),
 /// the colour at r9 + r7, lr z, r12 scratch.
 HIDER_NAKED inline uint16_t* run_kernel_triangle_v7m(KernelTriangle*, uint16_t*, int32_t,
                                                                           const KernelTarget*) {
