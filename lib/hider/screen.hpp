@@ -39,6 +39,21 @@ struct ScreenVertex {
 };
 static_assert(sizeof(ScreenVertex) == 8, "ScreenVertex is two halfwords and a word");
 
+/// 1 when none of the first n vertices has z == 0 (outside a clip plane, or hand-made with z == 0): the
+/// Cortex-M3 triangle loops then skip their per-triangle clip test (a vertex serves about six triangles).
+/// About 2.5 instructions a vertex on the M3.
+inline uint32_t all_projected(const ScreenVertex* v, size_t n) {
+    // Eight a turn; written as the loop's condition so each test is a forward branch out (ldr, cbz).
+    const ScreenVertex* const block_end = v + (n & ~size_t{7});
+    while (v != block_end && v[0].z != 0 && v[1].z != 0 && v[2].z != 0 && v[3].z != 0 && v[4].z != 0 &&
+           v[5].z != 0 && v[6].z != 0 && v[7].z != 0)
+        v += 8;
+    if (v != block_end) return 0;
+    for (n &= 7; n != 0; --n, ++v)
+        if (v->z == 0) return 0;
+    return 1;
+}
+
 /// Smallest and largest depth among drawable projected vertices (for depth shading).
 struct DepthRange {
     uint32_t min = kDepthFar, max = kDepthNear;

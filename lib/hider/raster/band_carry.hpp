@@ -61,13 +61,14 @@ __attribute__((noinline)) inline uint32_t resume_carried(CarriedSlots& cs, uint3
 /// slots. A class rather than lambdas: the per-triangle code reaches the band's state through `this`
 /// (GCC rebuilt a closure of sixteen references per triangle). kAsmLoop: on ARMv7-M, runs of listed
 /// triangles go through draw_band_v7m() (headlight shading with normals); false keeps it out (the
-/// kernelcheck firmware compares both).
+/// kernelcheck firmware compares both); `projected` (all_projected() of the vertices) spares the
+/// assembly its per-triangle clip test.
 template <bool kAsmLoop>
 class KernelBands {
 public:
     KernelBands(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
                 const FrameView<Rgb565Format, uint16_t>& buffers, const DrawOptions& opt, const BinnedScratch& scratch,
-                BinnedStats& out, FrameStats& st)
+                BinnedStats& out, FrameStats& st, uint32_t projected)
         : view_(view), mesh_(mesh), verts_(verts), buffers_(buffers), opt_(opt), shading_(view, opt), out_(out), st_(st),
           next_(scratch.next.data()), head_(scratch.head.data()), pool_(scratch.carried.data()),
           free_base_(scratch.slots.data() + 2 * scratch.carried.size()),
@@ -94,6 +95,9 @@ public:
         loop_.target = bt_.target;
         loop_.pool = pool_;
         loop_.free_base = free_base_;
+        loop_.projected = projected;
+#else
+        (void)projected;
 #endif
     }
 

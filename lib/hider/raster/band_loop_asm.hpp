@@ -32,6 +32,8 @@ struct BandLoopArm {
     uint32_t drawn;                   ///< 84, counted up
     const uint8_t* cur;               ///< 88, in and out: this band's carried slots still to resume
     const uint8_t* cur_end;           ///< 92
+    uint32_t projected;               ///< 96: 1 when no vertex is outside a clip plane (all_projected())
+    uintptr_t head;                   ///< 100: set by draw_band_v7m(): its loop head for `projected`
 };
 static_assert(sizeof(void*) != 4 ||
                   (offsetof(BandLoopArm, verts) == 4 && offsetof(BandLoopArm, next) == 8 && offsetof(BandLoopArm, io) == 12 &&
@@ -42,7 +44,8 @@ static_assert(sizeof(void*) != 4 ||
                    offsetof(BandLoopArm, free_base) == 68 && offsetof(BandLoopArm, free_top) == 72 &&
                    offsetof(BandLoopArm, nxt) == 76 && offsetof(BandLoopArm, count_from) == 80 &&
                    offsetof(BandLoopArm, drawn) == 84 && offsetof(BandLoopArm, cur) == 88 &&
-                   offsetof(BandLoopArm, cur_end) == 92),
+                   offsetof(BandLoopArm, cur_end) == 92 && offsetof(BandLoopArm, projected) == 96 &&
+                   offsetof(BandLoopArm, head) == 100),
               "band loop layout: every offset the assembly uses");
 static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records are 96 bytes");
 /// draw_band_v7m() hands a listed triangle back with this bit set when its set-up said generic.
@@ -56,8 +59,9 @@ static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(Ker
 /// carried set-ups are done, else a listed triangle it hands back (a vertex outside a clip plane, no free
 /// slot, a generic set-up: with kGenericHandBack set), the carried ones before it resumed. Every listed triangle has a non-zero
 /// area and is not culled (bin_triangles()). Registers: r4 the listed triangle, r5 d, r6 the next carried
-/// triangle (0xFFFF: none), r7 the vertices, r8 the triangles, r9 d->io, r10 the area, r11 the slot's
-/// record; on the stack the three vertex pointers, then d and the listed triangle. A run of resumes
+/// triangle (0xFFFF: none), r7 the vertices, r8 the triangles, r9 d->next, r10 the area, r11 the slot's
+/// record; on the stack three words for the resumes' row loop, then d and the listed triangle. The loop
+/// comes back to its head through d->head: without the clip test when d->projected. A run of resumes
 /// keeps its state on the stack and in d (the slot order pointer at sp + 12) and draws each record's
 /// rows with run_kernel_triangle_v7m()'s row loop (HIDER_V7M_ROWS) inline: every one is on the band's
 /// first row.
@@ -71,7 +75,7 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "str    r5, [sp, #16]\n\t"
         "ldr    r8, [r5, #0]\n\t"
         "ldr    r7, [r5, #4]\n\t"
-        "ldr    r9, [r5, #12]\n\t"
+        "ldr    r9, [r5, #8]\n\t"              // d->next
         "movw   r6, #0xFFFF\n\t"
         "ldr    r0, [r5, #88]\n\t"
         "ldr    r1, [r5, #92]\n\t"
@@ -83,6 +87,18 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "add    r0, r1, r0, lsl #5\n\t"
         "ldrh   r6, [r0, %[tri]]\n"              // the next carried triangle
         "1:\n\t"
+        "ldr    r0, [r5, #96]\n\t"              // the loop head: with the clip test unless every vertex
+        "cbnz   r0, 25f\n\t"                    // is projected (a Thumb address: the loop comes back
+        "movw   r0, #:lower16:(21f + 1)\n\t"    // through it with a load into pc)
+        "movt   r0, #:upper16:(21f + 1)\n\t"
+        "b      26f\n"
+        "25:\n\t"
+        "movw   r0, #:lower16:(24f + 1)\n\t"
+        "movt   r0, #:upper16:(24f + 1)\n"
+        "26:\n\t"
+        "str    r0, [r5, #100]\n\t"
+        "ldr    pc, [r5, #100]\n"
+        "21:\n\t"
         "cmp    r4, r6\n\t"
         "bhs    50f\n\t"                        // the carried triangle first, or the list's end
         "add    r0, r4, r4, lsl #1\n\t"
@@ -99,6 +115,34 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "cbz    r3, 91f\n\t"
         "ldr    r3, [r2, #4]\n\t"
         "cbz    r3, 91f\n\t"
+        "b      4f\n"
+        "91:\n\t"
+        "b      90f\n"                           // within the reach of cbz
+        "24:\n\t"                               // every vertex projected: no clip test
+        "cmp    r4, r6\n\t"
+        "bhs    50f\n\t"
+        "add    r0, r4, r4, lsl #1\n\t"
+        "add    r12, r8, r0, lsl #1\n\t"
+        "ldrh   r0, [r12]\n\t"
+        "ldrh   r1, [r12, #2]\n\t"
+        "ldrh   r2, [r12, #4]\n\t"
+        "add    r0, r7, r0, lsl #3\n\t"
+        "add    r1, r7, r1, lsl #3\n\t"
+        "add    r2, r7, r2, lsl #3\n"
+        "4:\n\t"                                // signed_area() as HIDER_V7M_AREA, the pointers kept
+        "ldr    r3, [r0]\n\t"                   // x | y << 16 of each
+        "ldr    r12, [r1]\n\t"
+        "ldr    r11, [r2]\n\t"
+        "sxth   lr, r3\n\t"                     // ax
+        "asr    r3, r3, #16\n\t"                // ay
+        "sxth   r10, r12\n\t"
+        "sub    r10, r10, lr\n\t"               // bx - ax
+        "rsb    r12, r3, r12, asr #16\n\t"      // by - ay
+        "rsb    r3, r3, r11, asr #16\n\t"       // cy - ay
+        "mul    r10, r10, r3\n\t"
+        "sxth   r11, r11\n\t"
+        "sub    r11, r11, lr\n\t"               // cx - ax
+        "mls    r10, r11, r12, r10\n\t"         // signed_area(a, b, c)
         "ldrd   r12, r3, [r5, #68]\n\t"         // free_base, free_top
         "cmp    r3, r12\n\t"
         "beq    90f\n\t"                        // no free slot: back to C++ (the spare)
@@ -106,21 +150,16 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "ldr    r12, [r5, #64]\n\t"
         "add    r3, r3, r3, lsl #1\n\t"
         "add    r11, r12, r3, lsl #5\n\t"       // its record: pool + 96 s
-        HIDER_V7M_AREA
-        "strd   r10, r11, [r9, %[io_area]]\n\t" // io->area, io->out
-        "ldm    sp, {r0, r1, r2}\n\t"
-        "mov    r3, r9\n\t"
+        "ldr    r3, [r5, #12]\n\t"              // d->io
+        "strd   r10, r11, [r3, %[io_area]]\n\t" // io->area, io->out
         "bl     %c[setup]\n\t"
         "cmp    r0, #1\n\t"
         "beq    3f\n\t"
         "cmp    r0, #0\n\t"
         "bne    92f\n"                          // generic: back to C++, flagged
         "8:\n\t"                                // the next listed triangle
-        "ldr    r0, [r5, #8]\n\t"
-        "ldrh   r4, [r0, r4, lsl #1]\n\t"
-        "b      1b\n"
-        "91:\n\t"
-        "b      90f\n"                           // within the reach of cbz
+        "ldrh   r4, [r9, r4, lsl #1]\n\t"
+        "ldr    pc, [r5, #100]\n"                // the loop head
         "3:\n\t"
         "ldrsh  r0, [r11, %[top]]\n\t"
         "ldrd   r1, r2, [r5, #80]\n\t"          // count_from, drawn
@@ -239,8 +278,8 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "mov    r5, r12\n\t"
         "ldr    r8, [r5, #0]\n\t"
         "ldr    r7, [r5, #4]\n\t"
-        "ldr    r9, [r5, #12]\n\t"
-        "b      1b\n"
+        "ldr    r9, [r5, #8]\n\t"              // d->next
+        "ldr    pc, [r5, #100]\n"
         :
         : [setup] "i"(kernel_setup_v7m), [kernel] "i"(run_kernel_triangle_v7m),
           [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),

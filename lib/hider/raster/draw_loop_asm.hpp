@@ -22,7 +22,7 @@ struct DrawLoopArm {
     uint32_t drawn;              ///< 16, counted up (kernel set-ups only: whole frames)
     KernelSetupIo* io;           ///< 20 (io->out is the triangle record)
     intptr_t normals_offset;     ///< 24: bytes from a Tri to its Normal14 (both 6 bytes)
-    int32_t unused;              ///< 28
+    uint32_t projected;          ///< 28: 1 when no vertex is outside a clip plane (all_projected(); ARMv7-M only)
     int32_t view_z[3];           ///< 32, 36, 40
     uint32_t base_r, base_g, base_b;  ///< 44, 48, 52
     uint16_t* depth;             ///< 56
@@ -254,7 +254,7 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
 
 /// HIDER_V7M_COLOR565: FaceShading::color565() of the face whose Normal14 r1 points to, back facing when
 /// r10 >= 0, into r1 (r2, r3 and lr clobbered); the asm statement gives the offsets of the view's z row
-/// and the base colour from r5 as operands view_z0..2 and base_r, base_g, base_b.
+/// and the base colour from r5 as operands view_z0..2 and base_r, base_g, base_b. Uses local label 117.
 #define HIDER_V7M_COLOR565 \
     "ldrsh  r2, [r1]\n\t" \
     "ldr    r3, [r5, %[view_z0]]\n\t" \
@@ -265,16 +265,12 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
     "ldrsh  lr, [r1, #4]\n\t" \
     "ldr    r3, [r5, %[view_z2]]\n\t" \
     "mla    r2, r3, lr, r2\n\t" \
-    "asr    r2, r2, #12\n\t" \
     "cmp    r10, #0\n\t" \
-    "it     ge\n\t" \
-    "rsbge  r2, r2, #0\n\t"            /* a back face: -N.z */ \
-    "cmp    r2, #0\n\t" \
-    "it     lt\n\t" \
-    "movlt  r2, #0\n\t" \
-    "cmp    r2, #65536\n\t" \
-    "it     gt\n\t" \
-    "movgt  r2, #65536\n\t" \
+    "blt    117f\n\t"                   /* a front face */ \
+    "bfc    r2, #0, #12\n\t"            /* a back face: -(s >> 12) = -(s with bits 0..11 cleared) >> 12 */ \
+    "neg    r2, r2\n" \
+    "117:\n\t" \
+    "usat   r2, #16, r2, asr #12\n\t"   /* clamped to [0, 2^16 - 1]: 2^16 gives the same 8-bit channels */ \
     "mov    r3, #32768\n\t" \
     "ldr    r1, [r5, %[base_r]]\n\t" \
     "mla    r1, r2, r1, r3\n\t" \
@@ -288,9 +284,11 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
     "mla    lr, r2, lr, r3\n\t" \
     "orr    r1, r1, lr, lsr #19\n\t"   /* blue */
 
-/// The same loop in Thumb-2 around kernel_setup_v7m() and run_kernel_triangle_v7m(). Registers: r4 the
-/// triangle, r5 d, r6 the end, r7 the vertices, r8 the cull flag, r9 d->io, r10 the area, r11 the faces
-/// culled in this call; on the stack the three vertex pointers.
+/// The same loop in Thumb-2 around kernel_setup_v7m() and run_kernel_triangle_v7m(), in two copies: with
+/// culling on and every vertex projected (d->projected), a loop without the clip-plane and cull-flag
+/// tests; else the general one. Registers: r4 the triangle, r5 d, r6 the end, r7 the vertices, r8 the
+/// running loop's tail (Thumb address: the drawn path returns through it), r9 d->io, r10 the area, r11 the
+/// faces culled in this call; on the stack the three vertex pointers.
 HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
@@ -300,9 +298,36 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "mov    r5, r1\n\t"
         "ldr    r6, [r5, #0]\n\t"
         "ldr    r7, [r5, #4]\n\t"
-        "ldr    r8, [r5, #8]\n\t"
         "ldr    r9, [r5, #20]\n\t"
-        "movs   r11, #0\n"
+        "movs   r11, #0\n\t"
+        "cmp    r4, r6\n\t"
+        "beq    90f\n\t"
+        "ldr    r0, [r5, #8]\n\t"
+        "ldr    r1, [r5, #28]\n\t"
+        "ands   r0, r0, r1\n\t"
+        "beq    10f\n\t"                      // not culling, or a vertex outside a clip plane
+        "movw   r8, #:lower16:(28f + 1)\n\t"   // a Thumb address (adr could miss: the section may sit at 2 mod 4)
+        "movt   r8, #:upper16:(28f + 1)\n"
+        "20:\n\t"                              // culling, every vertex projected
+        "ldrh   r0, [r4]\n\t"
+        "ldrh   r1, [r4, #2]\n\t"
+        "ldrh   r2, [r4, #4]\n\t"
+        "add    r0, r7, r0, lsl #3\n\t"
+        "add    r1, r7, r1, lsl #3\n\t"
+        "add    r2, r7, r2, lsl #3\n\t"
+        HIDER_V7M_AREA
+        "cmp    r10, #0\n\t"
+        "bmi    2f\n\t"                       // counter-clockwise: drawn
+        "it     ne\n\t"
+        "addne  r11, r11, #1\n"                 // culled (zero: nothing)
+        "28:\n\t"
+        "adds   r4, r4, #6\n\t"
+        "cmp    r4, r6\n\t"
+        "bne    20b\n\t"
+        "b      90f\n"
+        "10:\n\t"
+        "movw   r8, #:lower16:(8f + 1)\n\t"   // a Thumb address (adr could miss: the section may sit at 2 mod 4)
+        "movt   r8, #:upper16:(8f + 1)\n"
         "1:\n\t"
         "cmp    r4, r6\n\t"
         "beq    90f\n\t"
@@ -325,12 +350,14 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "cmp    r10, #0\n\t"
         "beq    8f\n\t"                         // zero: nothing
         "bmi    2f\n\t"                         // counter-clockwise: drawn
-        "cmp    r8, #0\n\t"
-        "beq    2f\n\t"                         // not culling: drawn
+        "ldr    r0, [r5, #8]\n\t"
+        "cbz    r0, 2f\n\t"                     // not culling: drawn
         "adds   r11, r11, #1\n"                  // culled
         "8:\n\t"
         "adds   r4, r4, #6\n\t"
         "b      1b\n"
+        "9:\n\t"
+        "bx     r8\n"                            // the next triangle, in the running loop
         "2:\n\t"
         "str    r10, [r9, #4]\n\t"              // io->area
         "ldm    sp, {r0, r1, r2}\n\t"
@@ -339,7 +366,7 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "cmp    r0, #1\n\t"
         "beq    3f\n\t"
         "cmp    r0, #0\n\t"
-        "beq    8b\n\t"                         // none
+        "beq    9b\n\t"                         // none
         "b      90f\n"                           // generic: back to C++
         "3:\n\t"
         "ldr    r0, [r5, #16]\n\t"
@@ -349,7 +376,7 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "ldrsh  r0, [r12, #58]\n\t"             // row
         "ldrsh  r1, [r12, #62]\n\t"             // end
         "cmp    r0, r1\n\t"
-        "bge    8b\n\t"                         // no row
+        "bge    9b\n\t"                         // no row
         // FaceShading::color565(), as in draw_flat_v6m.
         "ldr    r1, [r5, #24]\n\t"
         "add    r1, r1, r4\n\t"                 // the triangle's normal
@@ -364,7 +391,7 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "ldr    r2, [r5, #68]\n\t"
         "ldr    r3, [r5, #72]\n\t"
         "bl     %c[kernel]\n\t"
-        "b      8b\n"
+        "bx     r8\n"
         "90:\n\t"
         "ldr    r0, [r5, #12]\n\t"
         "add    r0, r0, r11\n\t"

@@ -231,6 +231,9 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
         if (whole_frame && opt.shade == Shade::headlight && !mesh.normals.empty()) {
             const Tri* const tris = mesh.tris.data();
             DrawLoopArm d = draw_loop_arm(tris, mesh, verts, shading, opt.cull, io, depth, y0, stride, y1, target);
+#if !defined(__ARM_ARCH_6M__)
+            d.projected = all_projected(verts.data(), mesh.positions.size());
+#endif
             for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st, draw, [&](size_t t) {
 #if defined(__ARM_ARCH_6M__)
                 return static_cast<size_t>(draw_flat_v6m(tris + t, &d) - tris);
