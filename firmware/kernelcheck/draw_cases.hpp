@@ -1,7 +1,7 @@
 // Random small scenes shared by the kernelcheck firmware and its host twin: each case is a view of a frame
 // up to 24 x 24 pixels (random camera, field of view, near and far) and kDrawTriangles triangles over
 // kVertexBatch positions placed around it (mostly on screen, some past the guard band or behind the eye,
-// so some triangles are clipped), with random normals, culled or not. run_draw_cases() draws each case
+// so some triangles are clipped; in odd cases all on screen), with random normals, culled or not. run_draw_cases() draws each case
 // into kernelcheck's buffers with draw_flat_kernel() through `draw` (on Cortex-M the assembly draw loop)
 // and through `twin` (the C++ loop) and folds the frame and the statistics into one digest per case.
 #pragma once
@@ -23,7 +23,9 @@ struct DrawCase {
     bool cull;
 };
 
-inline void make_draw_case(Rng& rng, DrawCase& c) {
+/// One case; on_screen keeps every vertex in front of the eye and inside the guard band (no triangle
+/// clipped: the Cortex-M3 loops' path without a clip test).
+inline void make_draw_case(Rng& rng, DrawCase& c, bool on_screen = false) {
     using hider::Q16;
     for (;;) {
         hider::Camera cam;
@@ -42,7 +44,8 @@ inline void make_draw_case(Rng& rng, DrawCase& c) {
     }
     const hider::View& v = c.view;
     for (hider::Vec3q16& p : c.p) {
-        const uint32_t kind = rng.next() % 8;
+        uint32_t kind = rng.next() % 8;
+        if (on_screen && kind < 2) kind = 2;
         int64_t w = v.near_raw + static_cast<int64_t>(rng.next() % static_cast<uint32_t>(v.far_raw - v.near_raw + 1));
         if (kind == 0) w = -w / 4;  // behind the eye
         // Subpixel screen positions: mostly over the frame, some past the guard band.
@@ -72,7 +75,7 @@ int run_draw_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
     static DrawCase c;
     static hider::ScreenVertex verts[kVertexBatch];
     for (int i = 0; i < kDrawCases; ++i) {
-        make_draw_case(rng, c);
+        make_draw_case(rng, c, (i & 1) != 0);  // odd cases: every vertex projected
         (void)hider::project_vertices(c.view, {c.p, kVertexBatch}, {verts, kVertexBatch});
         hider::Mesh mesh;
         mesh.positions = {c.p, kVertexBatch};
