@@ -171,6 +171,7 @@ inline void fill_words(void* p, size_t n, uint32_t word) {
         detail::fill_words_v7m(w, w + blocks * 96, word);
         w += blocks * 96;
         n -= blocks * 96;
+        if (n == 0) return;  // whole blocks: the shipped frames and bands (320x240, 160 x 6 rows)
     }
 #elif defined(__arm__) && defined(__thumb__)
     // Cortex-M0/M0+: eight 7-register store-multiples per 56 words (GCC -Os emits one str per word, and

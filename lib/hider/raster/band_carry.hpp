@@ -93,6 +93,8 @@ public:
         loop_.base_g = opt.base.g;
         loop_.base_b = opt.base.b;
         loop_.target = bt_.target;
+        loop_.color_less_2 = bt_.target.color_offset - 2;
+        loop_.stride_bytes = bt_.target.stride_bytes;
         loop_.pool = pool_;
         loop_.free_base = free_base_;
         loop_.projected = projected;

@@ -34,6 +34,8 @@ struct BandLoopArm {
     const uint8_t* cur_end;           ///< 92
     uint32_t projected;               ///< 96: 1 when no vertex is outside a clip plane (all_projected())
     uintptr_t head;                   ///< 100: set by draw_band_v7m(): its loop head for `projected`
+    intptr_t color_less_2;            ///< 104: target.color_offset - 2 (the row loop's post-increment)
+    int32_t stride_bytes;             ///< 108: target.stride_bytes, next to it for one load
 };
 static_assert(sizeof(void*) != 4 ||
                   (offsetof(BandLoopArm, verts) == 4 && offsetof(BandLoopArm, next) == 8 && offsetof(BandLoopArm, io) == 12 &&
@@ -45,7 +47,8 @@ static_assert(sizeof(void*) != 4 ||
                    offsetof(BandLoopArm, nxt) == 76 && offsetof(BandLoopArm, count_from) == 80 &&
                    offsetof(BandLoopArm, drawn) == 84 && offsetof(BandLoopArm, cur) == 88 &&
                    offsetof(BandLoopArm, cur_end) == 92 && offsetof(BandLoopArm, projected) == 96 &&
-                   offsetof(BandLoopArm, head) == 100),
+                   offsetof(BandLoopArm, head) == 100 && offsetof(BandLoopArm, color_less_2) == 104 &&
+                   offsetof(BandLoopArm, stride_bytes) == 108),
               "band loop layout: every offset the assembly uses");
 static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records are 96 bytes");
 /// draw_band_v7m() hands a listed triangle back with this bit set when its set-up said generic.
@@ -225,8 +228,7 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "ldrsh  r5, [r0, %[mid]]\n\t"
         "ldrd   r4, r2, [r12, #48]\n\t"         // y0, y1
         "ldr    r9, [r12, #44]\n\t"             // the depth row of y0
-        "ldrd   r7, r3, [r12, #56]\n\t"         // colour offset, stride
-        "sub    r7, r7, #2\n\t"                 // less HIDER_V7M_ROWS's post-increment
+        "ldrd   r7, r3, [r12, #104]\n\t"        // colour offset less HIDER_V7M_ROWS's post-increment, stride
         "cmp    r6, r2\n\t"
         "it     gt\n\t"
         "movgt  r6, r2\n\t"                     // stop = min(end, y1)

@@ -10,10 +10,10 @@ namespace hider {
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 /// Returns the KernelSetup value. Stack while the plane is computed: sorted vertices and rows (10 words)
-/// above v0 v1 v2 |area| (4 words); during the walkers the plane (5 words) below them. The walker is a
-/// local subroutine (label 80): in r5 xu, r7 yu, r8 xl, r9 yl, r3 row, r10 x_origin, r11 y_origin;
-/// out r0 px, r1 g - a, r2 a, r3 m, r12 q; the edge stores (84 left, 86 right) turn px and q into the
-/// kernel's bytes (2 px, 2 q + stride).
+/// above v0 v1 v2 |area| (4 words); during the walkers the plane (5 words) below them. The walker is an
+/// assembler macro expanded at each of its three uses (hider_walk: no call and return): in r5 xu, r7 yu,
+/// r8 xl, r9 yl, r3 row, r10 x_origin, r11 y_origin; out r0 px, r1 g - a, r2 a, r3 m, r12 q; the edge
+/// stores (hider_left, hider_right) turn px and q into the kernel's bytes (2 px, 2 q + stride).
 HIDER_NAKED inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVertex*,
                                                                   const ScreenVertex*, KernelSetupIo*) {
     __asm__ volatile(
@@ -54,6 +54,80 @@ HIDER_NAKED inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVe
         "8:\n\t"
         "eor    \\lo, r2, r11\n\t"
         "sub    \\lo, \\lo, r11\n\t"
+        ".endm\n\t"
+        // Walker (edge.hpp), inline: in r5 xu, r7 yu, r8 xl, r9 yl, r3 row; out r0 px, r1 g - a, r2 a,
+        // r3 m, r12 q (local labels 81..89).
+        ".macro hider_walk\n\t"
+        "sub    r8, r8, r5\n\t"               // dx
+        "sub    r9, r9, r7\n\t"               // dy
+        "lsl    r2, r9, #4\n\t"               // a = 16 dy
+        "add    r12, r11, r3, lsl #4\n\t"     // row centre
+        "sub    r12, r12, r7\n\t"
+        "sub    r0, r10, r5\n\t"
+        "mul    r0, r9, r0\n\t"
+        "mls    r3, r8, r12, r0\n\t"          // g0 = dy (x_origin - xu) - dx (yc - yu)
+        "cmp    r3, #0\n\t"
+        "blt    81f\n\t"
+        "udiv   r0, r3, r2\n\t"               // px = -floor(g0 / a)
+        "neg    r0, r0\n\t"
+        "b      82f\n"
+        "81:\n\t"
+        "mvn    r0, r3\n\t"
+        "udiv   r0, r0, r2\n\t"
+        "add    r0, r0, #1\n"
+        "82:\n\t"
+        "mla    r1, r0, r2, r3\n\t"           // g = g0 + px a
+        "sub    r1, r1, r2\n\t"               // biased by -a
+        "lsl    r3, r8, #4\n\t"
+        "negs   r3, r3\n\t"                  // dg = -16 dx
+        "blt    83f\n\t"
+        "cmp    r3, r2\n\t"
+        "bge    88f\n\t"
+        "movs   r12, #0\n\t"                  // 0 <= dg < a: q = 0, m = dg
+        "b      87f\n"
+        "83:\n\t"
+        "cmn    r3, r2\n\t"
+        "blt    89f\n\t"
+        "movs   r12, #1\n\t"                  // -a <= dg < 0: q = 1, m = dg + a
+        "add    r3, r3, r2\n\t"
+        "b      87f\n"
+        "88:\n\t"
+        "udiv   r12, r3, r2\n\t"              // dg >= a: q = -floor(dg / a)
+        "neg    r12, r12\n\t"
+        "mla    r3, r12, r2, r3\n\t"
+        "b      87f\n"
+        "89:\n\t"
+        "mvn    r12, r3\n\t"                  // dg < -a
+        "udiv   r12, r12, r2\n\t"
+        "add    r12, r12, #1\n\t"
+        "mla    r3, r12, r2, r3\n"
+        "87:\n\t"
+        ".endm\n\t"
+        // Left edge store: r0 px, r1 g - a, r2 a, r3 m, r12 q, r9 its row; depth from the plane at sp.
+        ".macro hider_left\n\t"
+        "lsl    r8, r0, #1\n\t"
+        "strd   r8, r1, [r6, %[lx]]\n\t"
+        "ldr    r8, [r4, %[stride]]\n\t"
+        "add    r8, r8, r12, lsl #1\n\t"
+        "add    r1, r6, %[la]\n\t"
+        "stm    r1, {r2, r3, r8}\n\t"
+        "ldm    sp, {r1, r2, r3, r5, r7}\n\t"  // dzdx ref_px z_ref dzdy ref_py
+        "sub    r0, r0, r2\n\t"
+        "mla    r3, r1, r0, r3\n\t"
+        "sub    r9, r9, r7\n\t"
+        "mla    r3, r5, r9, r3\n\t"
+        "mla    r5, r1, r12, r5\n\t"
+        "str    r3, [r6, %[lz]]\n\t"
+        "str    r5, [r6, %[ldz]]\n\t"
+        ".endm\n\t"
+        // Right edge store.
+        ".macro hider_right\n\t"
+        "lsl    r8, r0, #1\n\t"
+        "strd   r8, r1, [r6, %[rx]]\n\t"
+        "ldr    r8, [r4, %[stride]]\n\t"
+        "add    r8, r8, r12, lsl #1\n\t"
+        "add    r1, r6, %[ra]\n\t"
+        "stm    r1, {r2, r3, r8}\n\t"
         ".endm\n\t"
         "push   {r4-r11, lr}\n\t"
         "ldm    r3, {r4, r5, r6}\n\t"         // band, area, out
@@ -213,15 +287,15 @@ HIDER_NAKED inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVe
         "ldrd   r5, r7, [sp, #32]\n\t"        // xt yt
         "ldrd   r8, r9, [sp, #48]\n\t"        // xb yb
         "ldr    r3, [sp, #28]\n\t"            // y0
-        "bl     80f\n\t"
+        "hider_walk\n\t"
         "ldr    lr, [sp, #24]\n\t"
         "cmp    lr, #0\n\t"
         "bne    10f\n\t"
         "ldr    r9, [sp, #28]\n\t"
-        "bl     84f\n\t"                      // left, with its depth
+        "hider_left\n\t"                      // left, with its depth
         "b      11f\n"
         "10:\n\t"
-        "bl     86f\n"                        // right
+        "hider_right\n"                        // right
         "11:\n\t"
         // The short edge on row y0: top -> mid above the middle row, mid -> bottom from it on.
         "ldrd   r3, r1, [sp, #20]\n\t"        // mid, odd
@@ -236,15 +310,15 @@ HIDER_NAKED inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVe
         "ldrd   r8, r9, [sp, #48]\n\t"        // xb yb
         "13:\n\t"
         "mov    r3, r2\n\t"
-        "bl     80f\n\t"
+        "hider_walk\n\t"
         "ldr    lr, [sp, #24]\n\t"
         "cmp    lr, #0\n\t"
         "beq    14f\n\t"
         "ldr    r9, [sp, #28]\n\t"
-        "bl     84f\n\t"                      // left
+        "hider_left\n\t"                      // left
         "b      15f\n"
         "14:\n\t"
-        "bl     86f\n"                        // right
+        "hider_right\n"                        // right
         "15:\n\t"
         // The lower short edge from the middle row, when it starts inside [y0, y1).
         "ldr    r1, [sp, #24]\n\t"
@@ -258,7 +332,7 @@ HIDER_NAKED inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVe
         "bge    16f\n\t"                      // mid >= y1: the lower edge never runs
         "ldrd   r5, r7, [sp, #40]\n\t"        // xm ym
         "ldrd   r8, r9, [sp, #48]\n\t"        // xb yb
-        "bl     80f\n\t"
+        "hider_walk\n\t"
         "lsl    r8, r0, #1\n\t"
         "strd   r8, r1, [r6, %[next_x]]\n\t"
         "ldr    r8, [r4, %[stride]]\n\t"
@@ -296,80 +370,10 @@ HIDER_NAKED inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVe
         "movs   r0, #2\n\t"                   // generic: a depth step of 2^31 or more
         "add    sp, sp, #56\n\t"
         "pop    {r4-r11, pc}\n"
-        // Walker (edge.hpp): in r5 xu, r7 yu, r8 xl, r9 yl, r3 row; out r0 px, r1 g - a, r2 a, r3 m, r12 q.
-        "80:\n\t"
-        "sub    r8, r8, r5\n\t"               // dx
-        "sub    r9, r9, r7\n\t"               // dy
-        "lsl    r2, r9, #4\n\t"               // a = 16 dy
-        "add    r12, r11, r3, lsl #4\n\t"     // row centre
-        "sub    r12, r12, r7\n\t"
-        "sub    r0, r10, r5\n\t"
-        "mul    r0, r9, r0\n\t"
-        "mls    r3, r8, r12, r0\n\t"          // g0 = dy (x_origin - xu) - dx (yc - yu)
-        "cmp    r3, #0\n\t"
-        "blt    81f\n\t"
-        "udiv   r0, r3, r2\n\t"               // px = -floor(g0 / a)
-        "neg    r0, r0\n\t"
-        "b      82f\n"
-        "81:\n\t"
-        "mvn    r0, r3\n\t"
-        "udiv   r0, r0, r2\n\t"
-        "add    r0, r0, #1\n"
-        "82:\n\t"
-        "mla    r1, r0, r2, r3\n\t"           // g = g0 + px a
-        "sub    r1, r1, r2\n\t"               // biased by -a
-        "lsl    r3, r8, #4\n\t"
-        "neg    r3, r3\n\t"                   // dg = -16 dx
-        "cmp    r3, #0\n\t"
-        "blt    83f\n\t"
-        "cmp    r3, r2\n\t"
-        "bge    88f\n\t"
-        "movs   r12, #0\n\t"                  // 0 <= dg < a: q = 0, m = dg
-        "bx     lr\n"
-        "83:\n\t"
-        "cmn    r3, r2\n\t"
-        "blt    89f\n\t"
-        "movs   r12, #1\n\t"                  // -a <= dg < 0: q = 1, m = dg + a
-        "add    r3, r3, r2\n\t"
-        "bx     lr\n"
-        "88:\n\t"
-        "udiv   r12, r3, r2\n\t"              // dg >= a: q = -floor(dg / a)
-        "neg    r12, r12\n\t"
-        "mla    r3, r12, r2, r3\n\t"
-        "bx     lr\n"
-        "89:\n\t"
-        "mvn    r12, r3\n\t"                  // dg < -a
-        "udiv   r12, r12, r2\n\t"
-        "add    r12, r12, #1\n\t"
-        "mla    r3, r12, r2, r3\n\t"
-        "bx     lr\n"
-        // Left edge store: r0 px, r1 g - a, r2 a, r3 m, r12 q, r9 its row; depth from the plane at sp.
-        "84:\n\t"
-        "lsl    r8, r0, #1\n\t"
-        "strd   r8, r1, [r6, %[lx]]\n\t"
-        "ldr    r8, [r4, %[stride]]\n\t"
-        "add    r8, r8, r12, lsl #1\n\t"
-        "add    r1, r6, %[la]\n\t"
-        "stm    r1, {r2, r3, r8}\n\t"
-        "ldm    sp, {r1, r2, r3, r5, r7}\n\t"  // dzdx ref_px z_ref dzdy ref_py
-        "sub    r0, r0, r2\n\t"
-        "mla    r3, r1, r0, r3\n\t"
-        "sub    r9, r9, r7\n\t"
-        "mla    r3, r5, r9, r3\n\t"
-        "mla    r5, r1, r12, r5\n\t"
-        "str    r3, [r6, %[lz]]\n\t"
-        "str    r5, [r6, %[ldz]]\n\t"
-        "bx     lr\n"
-        // Right edge store.
-        "86:\n\t"
-        "lsl    r8, r0, #1\n\t"
-        "strd   r8, r1, [r6, %[rx]]\n\t"
-        "ldr    r8, [r4, %[stride]]\n\t"
-        "add    r8, r8, r12, lsl #1\n\t"
-        "add    r1, r6, %[ra]\n\t"
-        "stm    r1, {r2, r3, r8}\n\t"
-        "bx     lr\n"
-        ".purgem hider_divr\n"
+        ".purgem hider_divr\n\t"
+        ".purgem hider_walk\n\t"
+        ".purgem hider_left\n\t"
+        ".purgem hider_right\n"
         :
         : [y_first] "i"(offsetof(KernelBand, y_first)), [x_last] "i"(offsetof(KernelBand, x_last)),
           [row_from] "i"(offsetof(KernelBand, row_from)), [stride] "i"(offsetof(KernelBand, stride_bytes)),
