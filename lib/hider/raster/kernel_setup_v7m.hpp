@@ -233,29 +233,27 @@ HIDER_NAKED inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVe
         "ldrsh  r12, [r2]\n\t"
         "ldrsh  lr, [r2, #2]\n\t"
         "ldr    r2, [r2, #4]\n\t"
-        "sub    r1, r1, r5\n\t"               // dx1
-        "sub    r10, r10, r7\n\t"             // dy1
-        "sub    r12, r12, r5\n\t"             // dx2
-        "sub    lr, lr, r7\n\t"               // dy2
+        "lsl    r1, r1, #4\n\t"               // the differences times 16 (below 2^20): the
+        "sub    r1, r1, r5, lsl #4\n\t"       // numerators come out whole, no 64-bit shift
+        "lsl    r10, r10, #4\n\t"
+        "sub    r10, r10, r7, lsl #4\n\t"     // 16 dy1
+        "lsl    r12, r12, #4\n\t"
+        "sub    r12, r12, r5, lsl #4\n\t"     // 16 dx2
+        "lsl    lr, lr, #4\n\t"
+        "sub    lr, lr, r7, lsl #4\n\t"       // 16 dy2
         "eor    r8, r8, #0x80000000\n\t"      // s = z - 2^31
         "eor    r11, r11, #0x80000000\n\t"
         "eor    r2, r2, #0x80000000\n\t"
-        "sub    r3, r10, lr\n\t"              // npx / 16 = s0 (dy1 - dy2) + s1 dy2 - s2 dy1
+        "sub    r3, r10, lr\n\t"              // npx = 16 (s0 (dy1 - dy2) + s1 dy2 - s2 dy1)
         "smull  r0, r3, r8, r3\n\t"
         "smlal  r0, r3, r11, lr\n\t"
         "neg    r10, r10\n\t"
         "smlal  r0, r3, r2, r10\n\t"
-        "sub    lr, r12, r1\n\t"              // nqy / 16 = s0 (dx2 - dx1) + s2 dx1 - s1 dx2
+        "sub    lr, r12, r1\n\t"              // nqy = 16 (s0 (dx2 - dx1) + s2 dx1 - s1 dx2)
         "smull  r10, lr, r8, lr\n\t"
         "smlal  r10, lr, r2, r1\n\t"
         "neg    r12, r12\n\t"
         "smlal  r10, lr, r11, r12\n\t"
-        "lsl    r3, r3, #4\n\t"
-        "orr    r3, r3, r0, lsr #28\n\t"
-        "lsl    r0, r0, #4\n\t"
-        "lsl    lr, lr, #4\n\t"
-        "orr    lr, lr, r10, lsr #28\n\t"
-        "lsl    r10, r10, #4\n\t"
         "hider_divr r0, r3\n\t"               // dzdx
         "hider_divr r10, lr\n\t"              // dzdy
         "ldrd   r1, r2, [r4]\n\t"             // reference pixel: the cell holding v0
