@@ -108,11 +108,12 @@ __attribute__((always_inline)) inline ScreenXY screen_xy(const ScreenVertex& v) 
 /// does on a whole frame. band_scale = ceil(2^20 / rows): band = first row * band_scale >> 20, exact for
 /// rows of frames up to 1,024. Out of line with few live values, so the loop stays in registers. kAsm: on
 /// ARMv7-M the whole triangles go through bin_triangles_v7m() (false keeps it out: kernelcheck compares
-/// both), without a clip test when `projected` (all_projected() of the vertices; ignored elsewhere).
+/// both), without a clip test when every vertex is projected (all_projected()); returns that flag there
+/// for the band loop (0 elsewhere).
 template <bool kAsm = true>
-__attribute__((noinline)) void bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
-                                             const BandBounds& bb, int32_t height, uint32_t band_scale, uint16_t* next,
-                                             uint16_t* head, uint32_t projected, FrameStats& st) {
+__attribute__((noinline)) uint32_t bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
+                                                 const BandBounds& bb, int32_t height, uint32_t band_scale, uint16_t* next,
+                                                 uint16_t* head, FrameStats& st) {
     const ScreenVertex* const vp = verts.data();
     // first_row_in_frame() with the rounding folded into the origin: rows from (y - y_lift) >> 4, y_lift
     // = y_origin - 15.
@@ -123,6 +124,7 @@ __attribute__((noinline)) void bin_triangles(const View& view, const Mesh& mesh,
     const ClippedBinning clipped{view, mesh, verts, cull, bb, height, st};
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
     if constexpr (kAsm) {
+        const uint32_t projected = all_projected(vp, mesh.positions.size());  // one scan a frame
         BinLoopArm d{mesh.tris.data(), vp, y_lift, last, cull_above, band_scale, next, head, 0, projected};
         for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); (i = bin_triangles_v7m(i, &d)) != 0;) {
             --i;  // a vertex of triangle i lies outside a clip plane
@@ -133,7 +135,7 @@ __attribute__((noinline)) void bin_triangles(const View& view, const Mesh& mesh,
             head[band] = static_cast<uint16_t>(i);
         }
         st.triangles_culled += d.culled;
-        return;
+        return projected;
     }
 #endif
     const Tri* tri = mesh.tris.data() + mesh.tris.size();
@@ -163,6 +165,7 @@ __attribute__((noinline)) void bin_triangles(const View& view, const Mesh& mesh,
         head[band] = static_cast<uint16_t>(i);
     }
     st.triangles_culled += culled;
+    return 0;
 }
 }  // namespace detail
 

@@ -79,13 +79,8 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
     st.triangles_in = static_cast<uint32_t>(tri_count);
     const BandBounds bb = band_bounds(band_view<Format, Depth>(nullptr, nullptr, buffers.width, height, 0, height));
     const uint32_t band_scale = ((uint32_t{1} << 20) + static_cast<uint32_t>(rows) - 1) / static_cast<uint32_t>(rows);
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-    const uint32_t projected = kAsmLoop ? all_projected(verts.data(), mesh.positions.size()) : 0;  // one scan a frame
-#else
-    const uint32_t projected = 0;
-#endif
-    bin_triangles<kAsmLoop>(view, mesh, verts, opt.cull, bb, height, band_scale, scratch.next.data(), scratch.head.data(),
-                            projected, st);
+    const uint32_t projected = bin_triangles<kAsmLoop>(view, mesh, verts, opt.cull, bb, height, band_scale,
+                                                       scratch.next.data(), scratch.head.data(), st);
     BinnedStats local;
     BinnedStats& out = bs != nullptr ? *bs : local;
     if constexpr (is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2) {
