@@ -40,8 +40,8 @@ struct ScreenVertex {
 static_assert(sizeof(ScreenVertex) == 8, "ScreenVertex is two halfwords and a word");
 
 /// 1 when none of the first n vertices has z == 0 (outside a clip plane, or hand-made with z == 0): the
-/// Cortex-M3 triangle loops then skip their per-triangle clip test (a vertex serves about six triangles).
-/// About 2.5 instructions a vertex on the M3.
+/// Cortex-M3 triangle loops then skip their per-triangle clip test (a vertex serves about six triangles,
+/// so one scan a frame costs less than the tests).
 inline uint32_t all_projected(const ScreenVertex* v, size_t n) {
     // Eight a turn; written as the loop's condition so each test is a forward branch out (ldr, cbz).
     const ScreenVertex* const block_end = v + (n & ~size_t{7});
