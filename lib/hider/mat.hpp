@@ -145,14 +145,17 @@ constexpr Vec3q16 apply_inverse(const Transform& t, const Vec3q16& p) {
     return {Q16::from_raw(out[0]), Q16::from_raw(out[1]), Q16::from_raw(out[2])};
 }
 
-/// Matrix product a * b (Q30, floored per entry).
+/// Matrix product a * b (Q30, floored per entry, then clamped to +-1: the floored sum of two rotations'
+/// products can pass -1 by a raw unit, e.g. look_at((100, 0, -100) -> origin) after rotation_y(45
+/// degrees), and check_view_range() refuses an entry beyond +-1 as no rotation).
 constexpr Mat3 mul(const Mat3& a, const Mat3& b) {
     Mat3 r{};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
             int64_t acc = 0;
             for (int k = 0; k < 3; ++k) acc += mul_wide(a.m[i][k].raw(), b.m[k][j].raw());
-            r.m[i][j] = Q30::from_raw(static_cast<int32_t>(acc >> 30));
+            const int64_t e = acc >> 30;
+            r.m[i][j] = Q30::from_raw(static_cast<int32_t>(e < -Q30::kOne ? -Q30::kOne : (e > Q30::kOne ? Q30::kOne : e)));
         }
     return r;
 }

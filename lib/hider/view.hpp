@@ -111,8 +111,8 @@ inline Status check_view_range(const Transform& to_view, Span<const Vec3q16> pos
     for (const Vec3q16& p : positions) {
         const Vec3i64 w = apply_wide(to_view, p);
         const int64_t c[3] = {w.x, w.y, w.z};
-        for (const int64_t e : c)
-            if (e < INT32_MIN || e > INT32_MAX) return Status::out_of_range;
+        for (const int64_t e : c)  // INT32_MIN too: to_view_point() negates z (w = -z), and x, y alike
+            if (e <= INT32_MIN || e > INT32_MAX) return Status::out_of_range;
     }
     return Status::ok;
 }

@@ -35,7 +35,7 @@ int64_t exact_coordinate(const Transform& t, int row, const Vec3q16& p) {
 bool wraps(const Transform& t, const Vec3q16& p) {
     for (int row = 0; row < 3; ++row) {
         const int64_t c = exact_coordinate(t, row, p);
-        if (c < INT32_MIN || c > INT32_MAX) return true;
+        if (c <= INT32_MIN || c > INT32_MAX) return true;  // INT32_MIN: w = -z would overflow
     }
     return false;
 }
@@ -110,13 +110,14 @@ TEST_CASE("check_view_range: the O(1) bound's edge, matrix entries, and the exac
             CHECK(check_view_range(t, kWorldLimitBits) == Status::out_of_range);
             CHECK(check_view_range(t, kWorldLimitBits - 2) == Status::ok);  // the BSP's smaller cube
             // Past the bound, the positions decide exactly: the origin is fine; a position at the cube's
-            // side reaches INT32_MAX (or INT32_MIN) with the translation below and wraps one raw unit further.
+            // side reaches INT32_MAX (or -INT32_MAX) with the translation below and is refused one raw unit further.
             const Vec3q16 origin[1] = {units(0, 0, 0)};
             CHECK(check_view_range(t, Span<const Vec3q16>{origin, 1}) == Status::ok);
             Vec3q16 p[1] = {};
             Q16* pc = axis == 0 ? &p[0].x : axis == 1 ? &p[0].y : &p[0].z;
             *pc = Q16::from_raw(sign * (kWorldLimitRaw - 1));
-            const int32_t last = sign > 0 ? INT32_MAX - (kWorldLimitRaw - 1) : INT32_MIN + (kWorldLimitRaw - 1);
+            // (-INT32_MAX, not INT32_MIN, on the negative side: to_view_point() negates z.)
+            const int32_t last = sign * (INT32_MAX - (kWorldLimitRaw - 1));
             *c = Q16::from_raw(last);
             CHECK(check_view_range(t, kWorldLimitBits) == Status::out_of_range);
             CHECK(check_view_range(t, Span<const Vec3q16>{p, 1}) == Status::ok);
