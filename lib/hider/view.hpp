@@ -72,9 +72,22 @@ inline Status make_view(const Camera& cam, int32_t width, int32_t height, View& 
 /// transform is a rotation and a translation, and the placed mesh lies in the world range, which
 /// validate(mesh, model) checks (mesh.hpp; with_model() cannot see the mesh). Where a placement would
 /// wrap view coordinates, project_vertices() and the BSP walks refuse it (check_view_range()).
+/// compose() takes the model's translation through apply(), which wraps modulo 2^32 like the points: a
+/// model whose origin lies 2^15 units or more from the eye along a view axis would compose to a
+/// translation the check below cannot tell from a near one (44,000 units behind the eye became 25,536 in
+/// front, drawn with status ok). Such a model gives a view that every draw call refuses as out_of_range
+/// (no rotation, translation (INT32_MIN, 0, 0): every position's view x is INT32_MIN), even where some of
+/// its positions would come back within int32.
 inline View with_model(const View& v, const Transform& model) {
     View r = v;
     r.to_view = compose(v.to_view, model);
+    const Vec3i64 t = apply_wide(v.to_view, model.trans);
+    const int64_t c[3] = {t.x, t.y, t.z};
+    for (const int64_t e : c)
+        if (e < INT32_MIN || e > INT32_MAX) {
+            r.to_view.rot = Mat3{};
+            r.to_view.trans = {Q16::from_raw(INT32_MIN), Q16::from_raw(0), Q16::from_raw(0)};
+        }
     return r;
 }
 
@@ -117,16 +130,22 @@ inline Status check_view_range(const Transform& to_view, Span<const Vec3q16> pos
     return Status::ok;
 }
 
+/// -z modulo 2^32: a view z of INT32_MIN (refused by check_view_range(), which project_vertices() runs
+/// after its loop on RV32 and the host) gives INT32_MIN without signed overflow.
+__attribute__((always_inline)) constexpr int32_t negate_wrapping(int32_t z) {
+    return static_cast<int32_t>(0u - static_cast<uint32_t>(z));
+}
+
 /// View-space position of p. Precondition: |p| components below kWorldLimitRaw.
 __attribute__((always_inline)) inline ViewPoint to_view_point(const View& v, Vec3q16 p) {
     const Vec3q16 q = apply(v.to_view, p);
-    return {q.x.raw(), q.y.raw(), -q.z.raw()};
+    return {q.x.raw(), q.y.raw(), negate_wrapping(q.z.raw())};
 }
 
 /// to_view_point() through a PreparedTransform of v.to_view (many points, one view).
 __attribute__((always_inline)) inline ViewPoint to_view_point(const PreparedTransform& t, const Vec3q16& p) {
     const Vec3q16 q = t.apply(p);
-    return {q.x.raw(), q.y.raw(), -q.z.raw()};
+    return {q.x.raw(), q.y.raw(), negate_wrapping(q.z.raw())};
 }
 
 /// The products x k and y k of a view point, which the clip tests and the projection both need.

@@ -175,7 +175,7 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
     for (size_t i = 0; i < positions.size(); ++i) {
         if constexpr (kSlow64BitDivide && kHardwareDivide32) {  // the transform inline, then the common case
             const Vec3q16 q = apply_inline(view.to_view, positions[i]);
-            const ViewPoint p{q.x.raw(), q.y.raw(), -q.z.raw()};
+            const ViewPoint p{q.x.raw(), q.y.raw(), negate_wrapping(q.z.raw())};
             if (!detail::project_common(view, p, out[i])) detail::project_one(view, p, out[i]);
         } else {
             detail::project_one(view, to_view_point(to_view, positions[i]), out[i]);
