@@ -93,9 +93,10 @@ inline View with_model(const View& v, const Transform& model) {
 
 /// Whether `to_view` (a View's, with or without a model) keeps every view coordinate of every point with
 /// |coordinates| <= 2^bits raw within int32, in O(1): |t_i| + sum_j |R_ij| 2^bits / 2^30 + 1 (the floor)
-/// below 2^31 for each row i (the largest |coordinate| over that cube). Returns invalid_argument for a
-/// matrix entry beyond +-1 (no rotation; the 32-bit transforms rely on it), else ok or out_of_range. Out
-/// of line: a walk that calls it once keeps its registers for its loop.
+/// at most INT32_MAX for each row i (the largest |coordinate| over that cube; INT32_MIN is excluded, since
+/// w = -z must not overflow). Precondition: 0 <= bits <= 29. Returns invalid_argument for a matrix entry
+/// beyond +-1 (no rotation; the 32-bit transforms rely on it), else ok or out_of_range. Out of line: a
+/// walk that calls it once keeps its registers for its loop.
 __attribute__((noinline)) inline Status check_view_range(const Transform& to_view, int bits) {
     const int32_t t[3] = {to_view.trans.x.raw(), to_view.trans.y.raw(), to_view.trans.z.raw()};
     Status s = Status::ok;
@@ -115,9 +116,10 @@ __attribute__((noinline)) inline Status check_view_range(const Transform& to_vie
 /// Whether `to_view` keeps every view coordinate of `positions` (each inside the world range:
 /// validate(mesh)) within int32. apply() wraps modulo 2^32, so a model (with_model()) that carries a mesh
 /// 2^15 units from the eye would draw it elsewhere with status ok; the drawing that follows the transform
-/// is exact for any int32 view coordinate. O(1) for any placement the world range allows (eye and mesh
-/// inside it: at most 2 sqrt(3) 2^13 units apart); otherwise each position is transformed exactly in 64
-/// bits. Returns invalid_argument for a matrix entry beyond +-1, out_of_range where a coordinate wraps.
+/// is exact for any int32 view coordinate but INT32_MIN. O(1) without a model (eye and mesh in the world
+/// range: at most 2 sqrt(3) 2^13 units apart) and while a model's origin stays within about 14,000 units
+/// of the eye along each view axis; otherwise each position is transformed exactly in 64 bits. Returns
+/// invalid_argument for a matrix entry beyond +-1, out_of_range where a coordinate wraps.
 inline Status check_view_range(const Transform& to_view, Span<const Vec3q16> positions) {
     const Status s = check_view_range(to_view, kWorldLimitBits);
     if (s != Status::out_of_range) return s;

@@ -1,9 +1,8 @@
-// Red-team pass over 88166bf: draw_bsp() under a far with_model() placement that check_view_range()
-// accepts (every view coordinate about 20,000 units, the tree's cube within int32) but whose eye in the
-// tree's coordinates, apply_inverse(model, eye) as walk.hpp asks, lies 34,641 units from the tree's
-// origin along its x axis: past 2^15 units, so it wraps to the other side of the tree (apply_inverse()'s
-// precondition, which no draw call checks). The side tests then order the box from the wrong side:
-// 50 of 163 pixels show a far face, status ok.
+// draw_bsp() under a far with_model() placement that check_view_range() accepts (every view coordinate
+// about 20,000 units, the tree's cube within int32) but whose eye in the tree's coordinates,
+// apply_inverse(model, eye) as walk.hpp asks, lies 34,641 units from the tree's origin along its x axis:
+// past 2^15 units, so it wraps to the other side of the tree. The side tests ordered the box from the
+// wrong side (50 of 163 pixels showed a far face, status ok); check_bsp_view() now refuses the eye.
 #include <hider/bsp/walk.hpp>
 #include <hider/raster/zbuffer.hpp>
 
@@ -109,9 +108,11 @@ TEST_CASE("draw_bsp under a far placement: the eye in the tree's coordinates pas
     std::vector<ScreenVertex> walk_verts(tree.vertices.size());
     mark_unprojected({walk_verts.data(), walk_verts.size()});
     const FrameStats st = draw_bsp(placed, eye, tree, {walk_verts.data(), walk_verts.size()}, bf, opt, {stack.data(), stack.size()});
-    if (st.ok()) {
-        CHECK(ref::compare_ids(ids_of(b), zids, W, H).off_edge_mismatch == 0);  // was 50 of the 163 pixels
-    } else {
-        CHECK(st.status == Status::out_of_range);
-    }
+    // The view puts that eye 2^32 raw units from its origin: check_bsp_view() refuses it, nothing drawn
+    // (was 50 of the 163 pixels wrong, status ok).
+    CHECK(st.status == Status::invalid_argument);
+    CHECK(st.nodes_visited == 0);
+    long drawn = 0;
+    for (const uint32_t v : ids_of(b)) drawn += v != 0;
+    CHECK(drawn == 0);
 }

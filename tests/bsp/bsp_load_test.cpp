@@ -583,6 +583,7 @@ TEST_CASE("bsp_load's BspLoadInfo names each refusal and where it was found") {
     expect(f.bytes, Status::bad_data, BspProblem::triangle, t, 0);
     // Node 1 without a parent (the root's children skip it): met out of preorder.
     expect(test::hand_blob({{2, kBspNone}, {kBspNone, kBspNone}, {kBspNone, kBspNone}}, 2), Status::bad_data, BspProblem::shape, 2, 0);
+    expect(test::hand_blob({{kBspNone, kBspNone}, {kBspNone, kBspNone}}, 1), Status::bad_data, BspProblem::shape, 1, 0);  // node 1: no parent
     expect(test::hand_blob({{1, kBspNone}, {kBspNone, kBspNone}}, 1), Status::bad_data, BspProblem::depth, 2, 1);
     expect(test::hand_blob({{1, kBspNone}, {kBspNone, kBspNone}}, 3), Status::bad_data, BspProblem::depth, 2, 3);
     expect(test::chain_blob(40), Status::capacity_exceeded, BspProblem::too_deep, 39, 40, bsp_stack_entries(39));

@@ -1,8 +1,8 @@
 // check_view_range() and its callers: a model transform (with_model()) can carry a valid mesh so far
-// from the eye that apply()'s view coordinates wrap modulo 2^32, which drew it in the wrong place with
-// status ok (red-team pass over the public API: 1,508 of 3,072 pixels where the reference draws none).
-// project_vertices(), draw_bsp() and order_bsp() now refuse such a view; placements that do not wrap,
-// even far outside the world range, draw as the double reference does.
+// from the eye that apply()'s view coordinates wrap modulo 2^32. project_vertices(), draw_bsp() and
+// order_bsp() refuse such a view and draw nothing; placements that do not wrap, even far outside the
+// world range, draw as the double reference does. The O(1) bound is checked at its edge and against
+// exact view coordinates on random placements.
 #include <hider/bsp/order.hpp>
 #include <hider/bsp/walk.hpp>
 #include <hider/raster/zbuffer.hpp>
@@ -326,6 +326,14 @@ TEST_CASE("draw_bsp and order_bsp refuse a model transform that carries the tree
     CHECK(painted(px) > 0);
     CHECK(order_bsp(edge, apply_inverse(model, cam.eye), tree, {verts.data(), verts.size()}, opt, {stack.data(), stack.size()}, list).ok());
     CHECK(list.size() > 0);
+    // The world eye is not the view's: refused by every walk (check_bsp_view()).
+    CHECK(draw_bsp(edge, cam.eye, tree, {verts.data(), verts.size()}, f, opt, {stack.data(), stack.size()}).status ==
+          Status::invalid_argument);
+    CHECK(draw_bsp_front(edge, cam.eye, tree, {verts.data(), verts.size()}, f, opt, {stack.data(), stack.size()},
+                         {coverage.data(), coverage.size()})
+              .status == Status::invalid_argument);
+    CHECK(order_bsp(edge, cam.eye, tree, {verts.data(), verts.size()}, opt, {stack.data(), stack.size()}, list).status ==
+          Status::invalid_argument);
     // 31,000 units along the view: the cube's far side passes 2^15 units.
     model.trans = units(23000, 0, 0);
     const View beyond = with_model(view, model);

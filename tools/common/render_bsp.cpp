@@ -109,7 +109,7 @@ std::string bsp_load_message(Status s, const BspLoadInfo& info) {
         case BspProblem::triangle: m += " " + std::to_string(info.index); break;
         case BspProblem::shape: m += " (at node " + std::to_string(info.index) + ")"; break;
         case BspProblem::depth:
-            m += " (header " + std::to_string(info.value) + ", tree " + (info.index > info.value ? "more than " : "") +
+            m += " (header " + std::to_string(info.value) + ", tree " + (info.index > info.value ? "at least " : "") +
                  std::to_string(info.index) + ")";
             break;
         case BspProblem::size: m += " (the header's counts give " + std::to_string(info.value) + " bytes)"; break;

@@ -16,7 +16,7 @@ bool render_bsp(const Scene& scene, const std::vector<uint8_t>& blob, const Rend
                 std::string& error);
 
 /// What bsp_load() refused in a blob, for a message: "checksum mismatch (corrupted)", "another BSP format
-/// version (1; this hider reads 2): rebuild it with hider-bsp", "invalid node 17 (status bad_data)".
+/// version (1; this hider reads 2): rebuild it with hider-bsp", "invalid node 17 (status bad data)".
 std::string bsp_load_message(Status s, const BspLoadInfo& info);
 
 /// A blob copied to 8-byte aligned memory (the walks read it in place).

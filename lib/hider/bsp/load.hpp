@@ -49,8 +49,10 @@ enum class BspProblem : uint8_t {
     node,           ///< a node's index, child, box, cell label or normal is wrong (index: the node)
     triangle,       ///< a triangle's vertex index or face bits are wrong (index: the triangle)
     shape,          ///< the nodes are not a tree stored in preorder (index: the node met)
-    depth,          ///< the header's depth is not the tree's (value: the header's; index: the tree's)
-    too_deep,       ///< the tree is deeper than the stack holds (value: the level; capacity_exceeded)
+    depth,          ///< the header's depth is not the tree's (value: the header's; index: the tree's depth,
+                    ///< or the first level past the header's where the walk met one)
+    too_deep,       ///< the tree is deeper than the stack holds (index: the node, value: its level;
+                    ///< capacity_exceeded)
 };
 
 /// Details of a refused blob: the problem, the node, triangle or vertex it was found at, and a value.

@@ -75,20 +75,20 @@ inline void node_rows(const View& view, const PreparedTransform& to_view, const 
 /// wholly outside (once per frame). A full list: capacity_exceeded, the walk goes on and
 /// `list.size() + list.dropped()` entries were needed; the list then lacks the nearest nodes.
 /// Returns invalid_argument (list empty) for an unusable view, too few vertices or too small a stack,
-/// or a tree with more than 2^29 - 1 nodes; check_view_range()'s errors as draw_bsp(). Borrows everything
-/// for the call.
+/// or a tree with more than 2^29 - 1 nodes, after check_bsp_view()'s errors as draw_bsp(). Borrows
+/// everything for the call.
 inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
                             const DrawOptions& opt, Span<uint32_t> stack, BoundedList<BspDrawEntry>& list) {
     FrameStats st;
     list.clear();
+    st.status = check_bsp_view(view, eye);  // as draw_bsp()
+    if (st.status != Status::ok) return st;
     if (view.width < 1 || view.height < 1 || view.width > kMaxFrameSide || view.height > kMaxFrameSide ||
         verts.size() < tree.vertices.size() ||
         stack.size() < bsp_stack_entries(tree.max_depth) || tree.nodes.size() > kBspListIndex) {
         st.status = Status::invalid_argument;
         return st;
     }
-    st.status = check_view_range(view.to_view, kBspWorldLimitBits);  // as in walk_bsp()
-    if (st.status != Status::ok) return st;
     if (tree.nodes.empty()) return st;
     // Stack entries as in walk_bsp(): a node whose far subtree is being listed waits for its triangles
     // and near subtree, with kBspListFront (the eye on its front side), kPlane (in its plane) and kInside

@@ -268,25 +268,41 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
 
 }  // namespace detail
 
+/// How far (raw Q16, per axis) the view transform may put the walk's eye from the view's origin: the
+/// roundings of apply_inverse() and compose() move it by a few tens of raw units at most.
+constexpr int32_t kBspEyeSlackRaw = 256;
+
+/// The checks every BSP walk makes of its view and eye before it starts (out of line, once a call):
+/// check_view_range() for the cube of kBspWorldLimitRaw, which holds every vertex and node box of a
+/// loaded tree (out_of_range where a model transform carries it so far that view coordinates could
+/// wrap: a margin beyond the tree itself), and that the view transform takes `eye` to the view's origin
+/// within kBspEyeSlackRaw, exactly in 64 bits (invalid_argument otherwise: the world eye under a model
+/// transform, or an apply_inverse() that wrapped, would order the tree from the wrong side).
+__attribute__((noinline)) inline Status check_bsp_view(const View& view, const Vec3q16& eye) {
+    const Status s = check_view_range(view.to_view, kBspWorldLimitBits);
+    if (s != Status::ok) return s;
+    const Vec3i64 at = apply_wide(view.to_view, eye);
+    const int64_t c[3] = {at.x, at.y, at.z};
+    for (const int64_t e : c)
+        if (e < -kBspEyeSlackRaw || e > kBspEyeSlackRaw) return Status::invalid_argument;
+    return Status::ok;
+}
+
 /// Draws `tree` back to front into the band (the caller cleared it); `eye` is the camera's eye in the
 /// tree's coordinates: as make_view took it, or with a model transform (view = with_model(v, model))
-/// apply_inverse(model, eye), since the side tests compare it with the tree's planes (the world eye
-/// orders a turned tree wrongly, status ok). `verts` (one per tree vertex) holds the vertices projected
+/// apply_inverse(model, eye), since the side tests compare it with the tree's planes (check_bsp_view()
+/// refuses an eye the view does not put at its origin, such as the world eye under a turned model). `verts` (one per tree vertex) holds the vertices projected
 /// for the same view: either all of them by project_vertices() (needed for Shade::depth's range), or,
 /// marked once per frame by mark_unprojected(), each projected here when a triangle first needs it (a
 /// walk that skips most of the tree projects only what it draws). `stack` holds
 /// bsp_stack_entries(tree.max_depth) entries.
-/// Returns invalid_argument for an unusable frame, too few vertices or too small a stack, and
-/// check_view_range()'s errors for the tree's cube (a model transform carrying it where view coordinates
-/// wrap; nothing drawn). Counts nodes visited and subtrees skipped.
+/// Returns check_bsp_view()'s errors (nothing drawn), then invalid_argument for an unusable frame, too
+/// few vertices or too small a stack. Counts nodes visited and subtrees skipped.
 template <class Format, class Depth>
 FrameStats draw_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, Span<ScreenVertex> verts,
                     const FrameView<Format, Depth>& frame, const DrawOptions& opt, Span<uint32_t> stack) {
-    // Every vertex and node box of a loaded tree lies in the cube of kBspWorldLimitRaw, which a model
-    // transform (with_model()) may carry where view coordinates wrap: then nothing is drawn. Checked
-    // here, not in the walk, whose loop then keeps its registers.
-    FrameStats st;
-    st.status = check_view_range(view.to_view, kBspWorldLimitBits);
+    FrameStats st;  // checked here, not in the walk, whose loop then keeps its registers
+    st.status = check_bsp_view(view, eye);
     if (st.status != Status::ok) return st;
     return detail::walk_bsp<false>(view, eye, tree, verts, frame, opt, stack, nullptr);
 }
@@ -298,13 +314,13 @@ FrameStats draw_bsp_front(const View& view, const Vec3q16& eye, const BspTree& t
                           const FrameView<Format, Depth>& frame, const DrawOptions& opt, Span<uint32_t> stack,
                           Span<uint32_t> coverage) {
     FrameStats st;
+    st.status = check_bsp_view(view, eye);  // as draw_bsp()
+    if (st.status != Status::ok) return st;
     Coverage cov;
     if (!cov.reset(coverage, frame.width, frame.y0, frame.y1)) {
         st.status = Status::invalid_argument;
         return st;
     }
-    st.status = check_view_range(view.to_view, kBspWorldLimitBits);  // as draw_bsp()
-    if (st.status != Status::ok) return st;
     return detail::walk_bsp<true>(view, eye, tree, verts, frame, opt, stack, &cov);
 }
 

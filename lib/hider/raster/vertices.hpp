@@ -166,7 +166,7 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
                                DepthRange* range = nullptr) {
     if (out.size() < positions.size()) return Status::invalid_argument;
 #if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-    // Checked first: ARMv6-M's 32-bit transform must not meet a coordinate that overflows.
+    // Checked first on ARM: ARMv6-M's 32-bit transform must not meet a coordinate that overflows.
     const Status placed = detail::check_placement(view, positions, out, range);
     if (placed != Status::ok) return placed;
     detail::project_all(view, positions, out.data());
@@ -193,10 +193,10 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
         *range = r;
     }
 #if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-    return Status::ok;
+    return Status::ok;  // checked before the loop
 #else
-    // Checked last: apply() wraps here without overflow (64-bit sums, unsigned adds), and the loop above
-    // keeps the registers it had without the call before it.
+    // Checked last elsewhere: apply() wraps here without overflow (64-bit sums, unsigned adds, z negated
+    // modulo 2^32), and the loop above keeps the registers it had without the call before it.
     return detail::check_placement(view, positions, out, range);
 #endif
 }
