@@ -2,7 +2,8 @@
 // from the eye that apply()'s view coordinates wrap modulo 2^32. project_vertices(), draw_bsp() and
 // order_bsp() refuse such a view and draw nothing; placements that do not wrap, even far outside the
 // world range, draw as the double reference does. The O(1) bound is checked at its edge and against
-// exact view coordinates on random placements.
+// exact view coordinates on random placements; three cases a red team found in the first version: a
+// translation that wraps inside compose(), a view z of INT32_MIN, and a composed entry just past -1.
 #include <hider/bsp/order.hpp>
 #include <hider/bsp/walk.hpp>
 #include <hider/raster/zbuffer.hpp>
@@ -89,9 +90,56 @@ std::vector<Rgb888> zbuffer_frame(const View& view, const Mesh& mesh, Span<const
     return px;
 }
 
+/// A cube of side 2 half units about the origin, twelve triangles.
+struct Cube {
+    std::vector<Vec3q16> pos;
+    std::vector<Tri> tris;
+    explicit Cube(int32_t half) {
+        for (int k = 0; k < 8; ++k) pos.push_back(units(k & 1 ? half : -half, k & 2 ? half : -half, k & 4 ? half : -half));
+        const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+        for (const auto& q : quads) {
+            tris.push_back({{uint16_t(q[0]), uint16_t(q[1]), uint16_t(q[2])}});
+            tris.push_back({{uint16_t(q[0]), uint16_t(q[2]), uint16_t(q[3])}});
+        }
+    }
+    Mesh mesh() const { return Mesh{{pos.data(), pos.size()}, {tris.data(), tris.size()}, {}, {}}; }
+};
+
 long painted(const std::vector<Rgb888>& px) {
     long n = 0;
     for (const Rgb888& c : px) n += (c.r | c.g | c.b) != 0;
+    return n;
+}
+
+/// The z-buffer's face ids of `mesh` under `model` (48 x 36, near 1) and the double reference's.
+struct Drawn {
+    Status projected = Status::ok;
+    FrameStats st;
+    std::vector<uint32_t> ids, want;
+};
+Drawn draw_placed(const Camera& cam, const Mesh& mesh, const Transform& model, double fovy_deg, double far) {
+    constexpr int W = 48, H = 36;
+    Drawn d;
+    View view;
+    REQUIRE(make_view(cam, W, H, view) == Status::ok);
+    const View placed = with_model(view, model);
+    std::vector<ScreenVertex> verts(mesh.positions.size());
+    d.projected = project_vertices(placed, mesh.positions, {verts.data(), verts.size()});
+    d.ids = ids_of(zbuffer_frame(placed, mesh, {verts.data(), verts.size()}, W, H, d.st));
+    std::vector<ref::RefTriangle> rt;
+    for (size_t t = 0; t < mesh.tris.size(); ++t) {
+        ref::RefTriangle r{};
+        for (int k = 0; k < 3; ++k) r.v[k] = placed_d(model, mesh.positions[mesh.tris[t].v[k]]);
+        r.id = static_cast<uint32_t>(t + 1);
+        rt.push_back(r);
+    }
+    d.want = ref::render_ids(rt, ref::RefCamera{to_d(cam.eye), to_d(cam.target), to_d(cam.up), fovy_deg, 1.0, far, W, H}, false);
+    return d;
+}
+
+long nonzero(const std::vector<uint32_t>& ids) {
+    long n = 0;
+    for (const uint32_t v : ids) n += v != 0;
     return n;
 }
 
@@ -231,15 +279,9 @@ TEST_CASE("placements far outside the world range draw as the double reference d
     // A cube 2,000 units wide placed 9,000 to 40,000 units from a random eye, in a random direction the
     // camera looks along: those that stay inside int32 in view space must give the reference's picture
     // (exact drawing past the world range), those that leave it must be refused and draw nothing.
-    std::vector<Vec3q16> pos;
-    for (int k = 0; k < 8; ++k) pos.push_back(units(k & 1 ? 1000 : -1000, k & 2 ? 1000 : -1000, k & 4 ? 1000 : -1000));
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-    std::vector<Tri> tris;
-    for (const auto& q : quads) {
-        tris.push_back({{uint16_t(q[0]), uint16_t(q[1]), uint16_t(q[2])}});
-        tris.push_back({{uint16_t(q[0]), uint16_t(q[2]), uint16_t(q[3])}});
-    }
-    const Mesh mesh{{pos.data(), pos.size()}, {tris.data(), tris.size()}, {}, {}};
+    const Cube cube(1000);
+    const std::vector<Vec3q16>& pos = cube.pos;
+    const Mesh mesh = cube.mesh();
     REQUIRE(validate(mesh) == Status::ok);
     constexpr int W = 48, H = 36;
     std::mt19937 rng(7);
@@ -271,26 +313,17 @@ TEST_CASE("placements far outside the world range draw as the double reference d
         const View placed = with_model(view, model);
         bool any_wrap = false;
         for (const Vec3q16& p : pos) any_wrap = any_wrap || wraps(placed.to_view, p);
-        std::vector<ScreenVertex> verts(pos.size());
-        const Status s = project_vertices(placed, mesh.positions, {verts.data(), verts.size()});
         CAPTURE(n);
-        CHECK(s == (any_wrap ? Status::out_of_range : Status::ok));
-        FrameStats st;
-        const std::vector<Rgb888> px = zbuffer_frame(placed, mesh, {verts.data(), verts.size()}, W, H, st);
-        REQUIRE(st.ok());
+        const Drawn dr = draw_placed(cam, mesh, model, 10.0, 32000.0);
+        CHECK(dr.projected == (any_wrap ? Status::out_of_range : Status::ok));
+        REQUIRE(dr.st.ok());
         if (any_wrap) {
             ++refused;
-            CHECK(painted(px) == 0);
+            CHECK(nonzero(dr.ids) == 0);
             continue;
         }
-        std::vector<ref::RefTriangle> rt;
-        for (size_t i = 0; i < tris.size(); ++i)
-            rt.push_back({{placed_d(model, pos[tris[i].v[0]]), placed_d(model, pos[tris[i].v[1]]), placed_d(model, pos[tris[i].v[2]])},
-                          static_cast<uint32_t>(i + 1)});
-        const ref::RefCamera rc{to_d(cam.eye), to_d(cam.target), to_d(cam.up), 10.0, 1.0, 32000.0, W, H};
-        const ref::Agreement ag = ref::compare_ids(ids_of(px), ref::render_ids(rt, rc, false), W, H);
-        wrong += ag.off_edge_mismatch;
-        if (painted(px) > 0) ++drawn; else ++empty;
+        wrong += ref::compare_ids(dr.ids, dr.want, W, H).off_edge_mismatch;
+        if (nonzero(dr.ids) > 0) ++drawn; else ++empty;
     }
     MESSAGE("drawn " << drawn << ", refused " << refused << ", skipped " << skipped << ", empty " << empty << ", off-edge pixels unlike the reference " << wrong);
     CHECK(wrong == 0);
@@ -354,4 +387,60 @@ TEST_CASE("draw_bsp and order_bsp refuse a model transform that carries the tree
     scaled.to_view.rot.m[1][1] = Q30::from_raw(Q30::kOne + 1);
     st = draw_bsp(scaled, cam.eye, tree, {verts.data(), verts.size()}, f, opt, {stack.data(), stack.size()});
     CHECK(st.status == Status::invalid_argument);
+}
+
+TEST_CASE("with_model(): a translation that wraps in compose() is not taken for a placement in front of the eye") {
+    // A 2,000-unit square 4,000 units along +z in the model; the eye at z = -8,000 looks down -z and the
+    // model moves the square 32,000 units along +z: 44,000 units behind the eye. compose() wraps that
+    // translation (40,000 units, past 2^15) to 25,536 units in front, where every vertex is an int32.
+    const Vec3q16 pos[4] = {units(-1000, -1000, 4000), units(1000, -1000, 4000), units(1000, 1000, 4000), units(-1000, 1000, 4000)};
+    const Tri tris[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
+    const Mesh mesh{{pos, 4}, {tris, 2}, {}, {}};
+    REQUIRE(validate(mesh) == Status::ok);
+    Transform model;
+    model.trans = units(0, 0, 32000);
+    const Drawn d = draw_placed(camera(units(0, 0, -8000), units(0, 0, -8100), 10, 32000), mesh, model, 10.0, 32000.0);
+    REQUIRE(nonzero(d.want) == 0);  // behind the eye
+    CHECK(d.st.ok());
+    CHECK(d.projected == Status::out_of_range);  // was ok
+    CHECK(nonzero(d.ids) == 0);                  // was 400 pixels of the square
+}
+
+TEST_CASE("check_view_range(): a view z of INT32_MIN, which to_view_point() cannot negate, is refused or drawn right") {
+    // One vertex exactly 2^15 units ahead (view z = INT32_MIN raw, beyond the far plane), two 24,768 units
+    // ahead: the far plane should cut the tip off; the negated INT32_MIN put it behind the near plane.
+    const Vec3q16 pos[3] = {units(0, 0, 0), units(-1000, -1000, 8000), units(1000, -1000, 8000)};
+    const Tri tris[1] = {{{0, 1, 2}}};
+    const Mesh mesh{{pos, 3}, {tris, 1}, {}, {}};
+    REQUIRE(validate(mesh) == Status::ok);
+    Transform model;
+    model.trans = {Q16::from_int(0), Q16::from_int(0), Q16::from_raw(INT32_MIN)};
+    const Drawn d = draw_placed(camera(units(0, 0, 0), units(0, 0, -100), 10, 32000), mesh, model, 10.0, 32000.0);
+    CHECK(d.st.ok());
+    if (d.projected == Status::ok) {
+        const ref::Agreement ag = ref::compare_ids(d.ids, d.want, 48, 36);
+        CHECK(ag.off_edge_mismatch == 0);  // was 232 (a wedge below the triangle)
+    } else {
+        CHECK(d.projected == Status::out_of_range);
+        CHECK(nonzero(d.ids) == 0);
+    }
+}
+
+TEST_CASE("with_model(): a rotation composed with the view's is not refused for an entry one raw unit past +-1") {
+    // A cube at the origin seen from (100, 0, -100), the model turned 45 degrees about y: compose()
+    // floors an entry to -2^30 - 1, and check_view_range() called that no rotation (invalid_argument).
+    const Cube cube(20);
+    const Mesh mesh = cube.mesh();
+    Transform model;
+    model.rot = rotation_y(Angle::from_bam(0x20000000u));  // 45 degrees
+    REQUIRE(validate(mesh, model) == Status::ok);
+    const Camera cam = camera(units(100, 0, -100), units(0, 0, 0), 60, 1000);
+    View view;
+    REQUIRE(make_view(cam, 48, 36, view) == Status::ok);
+    CHECK(check_view_range(with_model(view, model).to_view, kWorldLimitBits) == Status::ok);  // was invalid_argument
+    const Drawn d = draw_placed(cam, mesh, model, 60.0, 1000.0);
+    CHECK(d.projected == Status::ok);
+    CHECK(d.st.ok());
+    CHECK(nonzero(d.ids) > 50);  // was 0 (100 before the range check)
+    CHECK(ref::compare_ids(d.ids, d.want, 48, 36).off_edge_mismatch == 0);
 }
