@@ -22,41 +22,43 @@ namespace hider {
     "add    lr, lr, r8\n"
 
 /// HIDER_V7M_ROWS: the row loop of run_kernel_triangle_v7m(), shared with draw_band_v7m()'s resumes
-/// (band_loop_asm.hpp). Entry: r0 the record + ra, r1..r5 lp lg lz rp rg, r6 rows before a switch, r7
-/// the colour offset less 2, r8 dzdx, r10 the colour; at sp the middle row's depth pointer, the rows after the
-/// switch (-1: none) and the depth row after the last. Exit: the record (r0) holds the next row's edges
-/// and depth, r12 that row's depth pointer (every other register clobbered). r6 must be at least 1 (the
-/// row loop tests after its first row). Uses local labels 71..88 and 100..116, and the operands ra, n_left, n_x, n_g,
-/// n_a, n_z, n_dz.
+/// (band_loop_asm.hpp). Entry: r0 the record + ra, r1..r5 lp lg lz rp rg, r6 rows before a switch, r7 the colour offset less 2, r8 dzdx, r10 the colour; at sp the middle row's depth pointer,
+/// the rows after the switch (-1: none) and the depth row after the last. Exit: the record (r0) holds the
+/// next row's edges and depth, r12 that row's depth pointer (every other register clobbered). r6 must be
+/// at least 1 (the row loop tests after its first row). A span of 0 to 16 pixels (one unsigned compare)
+/// enters a straight run of 16 pixels by a table branch at the (17 - n)-th and falls out of it into the
+/// edge steps; a longer one takes a 16-pixel loop entered Duff-style, a reversed one (rp < lp) none. Uses local labels 71..89 and
+/// 100..116 and 200..215, and the operands ra, n_left, n_x, n_g, n_a, n_z, n_dz.
 #define HIDER_V7M_ROWS \
     "72:\n\t"                                /* row */ \
-    "subs   r11, r4, r1\n\t"                 /* rp - lp: twice the pixels */ \
-    "ble    74f\n\t"                         /* empty span */ \
+    "sub    r11, r4, r1\n\t"                 /* rp - lp: twice the pixels */ \
+    "cmp    r11, #32\n\t" \
+    "bhi    73f\n\t"                         /* more than 16, or rp < lp */ \
     "mov    r9, r1\n\t"                      /* p = lp */ \
     "mov    lr, r3\n\t"                      /* z = lz */ \
-    "ubfx   r11, r11, #1, #4\n\t"            /* pixels mod 16: where to enter the 16-pixel turn */ \
-    "tbb    [pc, r11]\n"                      \
-    "88:\n\t"                                \
-    ".byte  (100f - 88b) / 2, (115f - 88b) / 2, (114f - 88b) / 2, (113f - 88b) / 2, (112f - 88b) / 2, (111f - 88b) / 2, (110f - 88b) / 2, (109f - 88b) / 2\n\t" \
-    ".byte  (108f - 88b) / 2, (107f - 88b) / 2, (106f - 88b) / 2, (105f - 88b) / 2, (104f - 88b) / 2, (103f - 88b) / 2, (102f - 88b) / 2, (101f - 88b) / 2\n" \
-    HIDER_V7M_PIXEL(100, 116)                 \
-    HIDER_V7M_PIXEL(101, 116)                 \
-    HIDER_V7M_PIXEL(102, 116)                 \
-    HIDER_V7M_PIXEL(103, 116)                 \
-    HIDER_V7M_PIXEL(104, 116)                 \
-    HIDER_V7M_PIXEL(105, 116)                 \
-    HIDER_V7M_PIXEL(106, 116)                 \
-    HIDER_V7M_PIXEL(107, 116)                 \
-    HIDER_V7M_PIXEL(108, 116)                 \
-    HIDER_V7M_PIXEL(109, 116)                 \
-    HIDER_V7M_PIXEL(110, 116)                 \
-    HIDER_V7M_PIXEL(111, 116)                 \
-    HIDER_V7M_PIXEL(112, 116)                 \
-    HIDER_V7M_PIXEL(113, 116)                 \
-    HIDER_V7M_PIXEL(114, 116)                 \
-    HIDER_V7M_PIXEL(115, 116)                 \
-    "cmp    r9, r4\n\t"                      \
-    "bne    100b\n"                           \
+    "tbh    [pc, r11, lsl #1]\n"              /* n pixels: the halfword at 4 n */ \
+    "89:\n\t" \
+    ".hword (74f - 89b) / 2, 0, (215f - 89b) / 2, 0, (214f - 89b) / 2, 0, (213f - 89b) / 2, 0\n\t" \
+    ".hword (212f - 89b) / 2, 0, (211f - 89b) / 2, 0, (210f - 89b) / 2, 0, (209f - 89b) / 2, 0\n\t" \
+    ".hword (208f - 89b) / 2, 0, (207f - 89b) / 2, 0, (206f - 89b) / 2, 0, (205f - 89b) / 2, 0\n\t" \
+    ".hword (204f - 89b) / 2, 0, (203f - 89b) / 2, 0, (202f - 89b) / 2, 0, (201f - 89b) / 2, 0\n\t" \
+    ".hword (200f - 89b) / 2\n" \
+    HIDER_V7M_PIXEL(200, 116)                 \
+    HIDER_V7M_PIXEL(201, 116)                 \
+    HIDER_V7M_PIXEL(202, 116)                 \
+    HIDER_V7M_PIXEL(203, 116)                 \
+    HIDER_V7M_PIXEL(204, 116)                 \
+    HIDER_V7M_PIXEL(205, 116)                 \
+    HIDER_V7M_PIXEL(206, 116)                 \
+    HIDER_V7M_PIXEL(207, 116)                 \
+    HIDER_V7M_PIXEL(208, 116)                 \
+    HIDER_V7M_PIXEL(209, 116)                 \
+    HIDER_V7M_PIXEL(210, 116)                 \
+    HIDER_V7M_PIXEL(211, 116)                 \
+    HIDER_V7M_PIXEL(212, 116)                 \
+    HIDER_V7M_PIXEL(213, 116)                 \
+    HIDER_V7M_PIXEL(214, 116)                 \
+    HIDER_V7M_PIXEL(215, 116)                 \
     "74:\n\t"                                /* left edge: g += m, p += step, z += dz_row, then correct */ \
     "ldmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
     "adds   r2, r2, r11\n\t" \
@@ -103,7 +105,37 @@ namespace hider {
     "mov    r9, #-1\n\t" \
     "str    r9, [sp, #4]\n\t"                /* switched */ \
     "cmp    r6, #0\n\t" \
-    "bne    72b\n" \
+    "bne    72b\n\t" \
+    "b      78f\n" \
+    "73:\n\t"                                /* more than 16 pixels, or rp < lp */ \
+    "cmp    r11, #0\n\t" \
+    "blt    74b\n\t"                         /* none */ \
+    "mov    r9, r1\n\t" \
+    "mov    lr, r3\n\t" \
+    "ubfx   r11, r11, #1, #4\n\t"            /* pixels mod 16: where to enter the 16-pixel turn */ \
+    "tbb    [pc, r11]\n"                      \
+    "88:\n\t"                                \
+    ".byte  (100f - 88b) / 2, (115f - 88b) / 2, (114f - 88b) / 2, (113f - 88b) / 2, (112f - 88b) / 2, (111f - 88b) / 2, (110f - 88b) / 2, (109f - 88b) / 2\n\t" \
+    ".byte  (108f - 88b) / 2, (107f - 88b) / 2, (106f - 88b) / 2, (105f - 88b) / 2, (104f - 88b) / 2, (103f - 88b) / 2, (102f - 88b) / 2, (101f - 88b) / 2\n" \
+    HIDER_V7M_PIXEL(100, 116)                 \
+    HIDER_V7M_PIXEL(101, 116)                 \
+    HIDER_V7M_PIXEL(102, 116)                 \
+    HIDER_V7M_PIXEL(103, 116)                 \
+    HIDER_V7M_PIXEL(104, 116)                 \
+    HIDER_V7M_PIXEL(105, 116)                 \
+    HIDER_V7M_PIXEL(106, 116)                 \
+    HIDER_V7M_PIXEL(107, 116)                 \
+    HIDER_V7M_PIXEL(108, 116)                 \
+    HIDER_V7M_PIXEL(109, 116)                 \
+    HIDER_V7M_PIXEL(110, 116)                 \
+    HIDER_V7M_PIXEL(111, 116)                 \
+    HIDER_V7M_PIXEL(112, 116)                 \
+    HIDER_V7M_PIXEL(113, 116)                 \
+    HIDER_V7M_PIXEL(114, 116)                 \
+    HIDER_V7M_PIXEL(115, 116)                 \
+    "cmp    r9, r4\n\t"                      \
+    "bne    100b\n\t"                        \
+    "b      74b\n"                            \
     "78:\n\t" \
     "ldr    r12, [sp, #8]\n\t"               /* the depth row after the last */ \
     "sub    r1, r1, r12\n\t"                 /* back to offsets in that row */ \
