@@ -94,6 +94,7 @@ public:
         loop_.base_b = opt.base.b;
         loop_.target = bt_.target;
         loop_.color_less_2 = bt_.target.color_offset - 2;
+        kband_.color_less_2 = loop_.color_less_2;
         loop_.stride_bytes = bt_.target.stride_bytes;
         loop_.pool = pool_;
         loop_.free_base = free_base_;
@@ -121,6 +122,9 @@ public:
             loop_.depth = band_.depth;
             loop_.y0 = y0;
             loop_.y1 = y1;
+            kband_.depth_origin = reinterpret_cast<uintptr_t>(band_.depth) -
+                                  static_cast<uintptr_t>(y0) * static_cast<uintptr_t>(kband_.stride_bytes);
+            kband_.stop = y1;
             loop_.count_from = count_from_;
             loop_.drawn = 0;
             loop_.cur = cs_.cur;

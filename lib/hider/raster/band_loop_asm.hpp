@@ -63,9 +63,11 @@ static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(Ker
 /// slot, a generic set-up: with kGenericHandBack set), the carried ones before it resumed. Every listed triangle has a non-zero
 /// area and is not culled (bin_triangles()). Registers: r4 the listed triangle, r5 d, r6 the next carried
 /// triangle (0xFFFF: none), r7 the vertices, r8 the triangles, r9 d->next, r10 the area, r11 the slot's
-/// record; on the stack three words for the resumes' row loop, then d and the listed triangle. The loop
+/// record; on the stack three words for the resumes' row loop (the vertex pointers of a listed
+/// triangle through its colour), then d and the listed triangle. The loop
 /// comes back to its head through d->head: without the clip test when d->projected. A run of resumes
-/// keeps its state on the stack and in d (the slot order pointer at sp + 12) and draws each record's
+/// keeps its state on the stack and in d (the slot order pointer at sp + 12, and at sp + 24 where the
+/// record's slot goes after it: d->nxt or d->free_top) and draws each record's
 /// rows with run_kernel_triangle_v7m()'s row loop (HIDER_V7M_ROWS) inline: every one is on the band's
 /// first row.
 HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
@@ -153,9 +155,19 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "ldr    r12, [r5, #64]\n\t"
         "add    r3, r3, r3, lsl #1\n\t"
         "add    r11, r12, r3, lsl #5\n\t"       // its record: pool + 96 s
+        "stm    sp, {r0, r1, r2}\n\t"         // the vertices, through the colour
+        // FaceShading::color565(), as in draw_flat_v7m: first, so that the set-up draws at once.
+        "add    r1, r4, r4, lsl #1\n\t"
+        "add    r1, r8, r1, lsl #1\n\t"
+        "ldr    r2, [r5, #16]\n\t"
+        "add    r1, r1, r2\n\t"                 // the triangle's normal
+        HIDER_V7M_COLOR565
+        "str    r1, [r11, %[color]]\n\t"        // k.color
+        "strh   r4, [r11, %[tri]]\n\t"          // the mesh triangle
         "ldr    r3, [r5, #12]\n\t"              // d->io
         "strd   r10, r11, [r3, %[io_area]]\n\t" // io->area, io->out
-        "bl     %c[setup]\n\t"
+        "ldm    sp, {r0, r1, r2}\n\t"
+        "bl     %c[draw]\n\t"                   // set up, and the rows in this band drawn
         "cmp    r0, #1\n\t"
         "beq    3f\n\t"
         "cmp    r0, #0\n\t"
@@ -170,25 +182,8 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "itt    ge\n\t"
         "addge  r2, r2, #1\n\t"
         "strge  r2, [r5, #84]\n\t"              // drawn: its first row is in this band
-        // A set-up without a row in the band is rare: the kernel returns at once and the test after it
-        // keeps the slot free.
-        // FaceShading::color565(), as in draw_flat_v7m.
-        "add    r1, r4, r4, lsl #1\n\t"
-        "add    r1, r8, r1, lsl #1\n\t"
-        "ldr    r2, [r5, #16]\n\t"
-        "add    r1, r1, r2\n\t"                 // the triangle's normal
-        HIDER_V7M_COLOR565
-        "str    r1, [r11, %[color]]\n\t"        // k.color
-        "strh   r4, [r11, %[tri]]\n\t"          // the mesh triangle
-        "ldrsh  r0, [r11, %[row]]\n\t"
-        "ldrd   r2, r1, [r5, #44]\n\t"          // the band's first depth row, y0
-        "sub    r0, r0, r1\n\t"
-        "ldr    r1, [r5, #60]\n\t"
-        "mla    r1, r0, r1, r2\n\t"             // the depth row of `row`
-        "mov    r0, r11\n\t"
-        "ldr    r2, [r5, #52]\n\t"
-        "add    r3, r5, #56\n\t"
-        "bl     %c[kernel]\n\t"
+        // A set-up without a row in the band is rare: it returns at once and the test below keeps the
+        // slot free.
         "ldrsh  r0, [r11, %[row]]\n\t"
         "ldrsh  r1, [r11, %[end]]\n\t"
         "cmp    r0, r1\n\t"
@@ -230,8 +225,11 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "ldr    r9, [r12, #44]\n\t"             // the depth row of y0
         "ldrd   r7, r3, [r12, #104]\n\t"        // colour offset less HIDER_V7M_ROWS's post-increment, stride
         "cmp    r6, r2\n\t"
-        "it     gt\n\t"
+        "itte   gt\n\t"
         "movgt  r6, r2\n\t"                     // stop = min(end, y1)
+        "addgt  r8, r12, #76\n\t"               // rows remain: the slot goes to the next band's
+        "addle  r8, r12, #72\n\t"               // done: back to the free slots
+        "str    r8, [sp, #24]\n\t"
         "strh   r6, [r0, %[row]]\n\t"           // the row after this band
         "sub    r6, r6, r4\n\t"                 // n rows (a carried set-up has some left)
         "mla    r11, r6, r3, r9\n\t"            // the depth row after the last
@@ -255,14 +253,9 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "add    r4, r4, r9\n\t"                 // rp
         "add    r0, r0, %[ra]\n"
         HIDER_V7M_ROWS
-        "ldrsh  r1, [r0, %[row]]\n\t"
-        "ldrsh  r2, [r0, %[end]]\n\t"
         "ldrd   r10, r12, [sp, #12]\n\t"        // the slot order, d
         "ldrb   r11, [r10, #-1]\n\t"            // the record's slot
-        "cmp    r1, r2\n\t"
-        "ite    lt\n\t"
-        "addlt  r3, r12, #76\n\t"               // rows remain: to the next band's slots
-        "addge  r3, r12, #72\n\t"               // done: back to the free slots
+        "ldr    r3, [sp, #24]\n\t"              // where it goes
         "ldr    r2, [r3]\n\t"
         "strb   r11, [r2], #1\n\t"
         "str    r2, [r3]\n\t"
@@ -283,7 +276,7 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "ldr    r9, [r5, #8]\n\t"              // d->next
         "ldr    pc, [r5, #100]\n"
         :
-        : [setup] "i"(kernel_setup_v7m), [kernel] "i"(run_kernel_triangle_v7m),
+        : [draw] "i"(kernel_draw_v7m),
           [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
           [mid] "i"(offsetof(KernelTriangle, mid)), [end] "i"(offsetof(KernelTriangle, end)),
           [color] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, color)),

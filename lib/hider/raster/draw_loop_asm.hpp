@@ -358,40 +358,25 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "b      1b\n"
         "9:\n\t"
         "bx     r8\n"                            // the next triangle, in the running loop
-        "2:\n\t"
-        "str    r10, [r9, #4]\n\t"              // io->area
-        "ldm    sp, {r0, r1, r2}\n\t"
-        "mov    r3, r9\n\t"
-        "bl     %c[setup]\n\t"
-        "cmp    r0, #1\n\t"
-        "beq    3f\n\t"
-        "cmp    r0, #0\n\t"
-        "beq    9b\n\t"                         // none
-        "b      90f\n"                           // generic: back to C++
-        "3:\n\t"
-        "ldr    r0, [r5, #16]\n\t"
-        "adds   r0, r0, #1\n\t"
-        "str    r0, [r5, #16]\n\t"              // drawn
-        "ldr    r12, [r9, #8]\n\t"              // the triangle record
-        "ldrsh  r0, [r12, #58]\n\t"             // row
-        "ldrsh  r1, [r12, #62]\n\t"             // end
-        "cmp    r0, r1\n\t"
-        "bge    9b\n\t"                         // no row
-        // FaceShading::color565(), as in draw_flat_v6m.
+        "2:\n\t"                               // FaceShading::color565(), as in draw_flat_v6m
         "ldr    r1, [r5, #24]\n\t"
         "add    r1, r1, r4\n\t"                 // the triangle's normal
         HIDER_V7M_COLOR565
+        "ldr    r12, [r9, #8]\n\t"              // the triangle record
         "str    r1, [r12, #52]\n\t"             // k.color
-        "ldr    r1, [r5, #60]\n\t"
-        "sub    r0, r0, r1\n\t"
-        "ldr    r1, [r5, #64]\n\t"
-        "ldr    r2, [r5, #56]\n\t"
-        "mla    r1, r0, r1, r2\n\t"             // the depth row of `row`
-        "mov    r0, r12\n\t"
-        "ldr    r2, [r5, #68]\n\t"
-        "ldr    r3, [r5, #72]\n\t"
-        "bl     %c[kernel]\n\t"
+        "str    r10, [r9, #4]\n\t"              // io->area
+        "ldm    sp, {r0, r1, r2}\n\t"
+        "mov    r3, r9\n\t"
+        "bl     %c[draw]\n\t"                   // set up and drawn
+        "cmp    r0, #1\n\t"
+        "bne    3f\n\t"
+        "ldr    r0, [r5, #16]\n\t"
+        "adds   r0, r0, #1\n\t"
+        "str    r0, [r5, #16]\n\t"              // drawn
         "bx     r8\n"
+        "3:\n\t"
+        "cmp    r0, #0\n\t"
+        "beq    9b\n"                           // none
         "90:\n\t"
         "ldr    r0, [r5, #12]\n\t"
         "add    r0, r0, r11\n\t"
@@ -400,7 +385,7 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "add    sp, #12\n\t"
         "pop    {r4-r11, pc}\n"
         :
-        : [setup] "i"(kernel_setup_v7m), [kernel] "i"(run_kernel_triangle_v7m),
+        : [draw] "i"(kernel_draw_v7m),
           [view_z0] "i"(offsetof(detail::DrawLoopArm, view_z)), [view_z1] "i"(offsetof(detail::DrawLoopArm, view_z) + 4),
           [view_z2] "i"(offsetof(detail::DrawLoopArm, view_z) + 8), [base_r] "i"(offsetof(detail::DrawLoopArm, base_r)),
           [base_g] "i"(offsetof(detail::DrawLoopArm, base_g)), [base_b] "i"(offsetof(detail::DrawLoopArm, base_b)));

@@ -20,13 +20,20 @@ struct KernelBand {
     int32_t y_first, y_last;     ///< centres of the band's first and last row (the band test)
     int32_t row_from, row_end;   ///< rows to set up for: [row_from, row_end)
     int32_t stride_bytes;        ///< bytes from one depth row to the next
+    // Read by kernel_draw_v7m() only (the Cortex-M3 draw loops, which set them; kernel_band() zeroes them):
+    uintptr_t depth_origin;      ///< depth row of row 0 modulo 2^32: row_from's less row_from strides
+    int32_t stop;                ///< draw rows before this one (>= row_from)
+    intptr_t color_less_2;       ///< bytes from a depth element to its colour, less 2
 };
+static_assert(sizeof(void*) != 4 || (offsetof(KernelBand, stride_bytes) == 28 && offsetof(KernelBand, depth_origin) == 32 &&
+                                     offsetof(KernelBand, stop) == 36 && offsetof(KernelBand, color_less_2) == 40),
+              "kernel band layout");
 
 /// The constants of rows [row_begin, row_end) of a width x height frame with the given depth stride.
 inline KernelBand kernel_band(int32_t width, int32_t height, int32_t row_begin, int32_t row_end, int32_t stride_bytes) {
     const int32_t ox = pixel_centre_origin(width), oy = pixel_centre_origin(height);
     return {ox, oy, (width - 1) * kSubpixel + ox, row_begin * kSubpixel + oy, (row_end - 1) * kSubpixel + oy,
-            row_begin, row_end, stride_bytes};
+            row_begin, row_end, stride_bytes, 0, row_end, 0};
 }
 
 /// What kernel_setup() found.

@@ -201,8 +201,8 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
     const BandBounds bb = band_bounds(frame);
     const FaceShading shading(view, opt);
     const bool whole_frame = frame.y0 == 0 && frame.y1 == frame.height;
-    const KernelBand band = kernel_band(frame.width, frame.height, frame.y0, frame.y1,
-                                        frame.stride * static_cast<int32_t>(sizeof(uint16_t)));
+    KernelBand band = kernel_band(frame.width, frame.height, frame.y0, frame.y1,
+                                  frame.stride * static_cast<int32_t>(sizeof(uint16_t)));
     const KernelTarget target{static_cast<intptr_t>(reinterpret_cast<uintptr_t>(frame.color) -
                                                     reinterpret_cast<uintptr_t>(frame.depth)),
                               band.stride_bytes};
@@ -233,6 +233,9 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
             DrawLoopArm d = draw_loop_arm(tris, mesh, verts, shading, opt.cull, io, depth, y0, stride, y1, target);
 #if !defined(__ARM_ARCH_6M__)
             d.projected = all_projected(verts.data(), mesh.positions.size());
+            band.depth_origin = reinterpret_cast<uintptr_t>(depth) -
+                                static_cast<uintptr_t>(y0) * static_cast<uintptr_t>(band.stride_bytes);
+            band.color_less_2 = target.color_offset - 2;
 #endif
             for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st, draw, [&](size_t t) {
 #if defined(__ARM_ARCH_6M__)
