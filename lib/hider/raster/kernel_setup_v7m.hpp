@@ -10,48 +10,51 @@ namespace hider {
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 /// The Thumb-2 set-up's text, shared by kernel_setup_v7m() and kernel_draw_v7m(): HIDER_V7M_SETUP_MACROS
-/// (the assembler macros below), HIDER_V7M_SETUP (from the entry to the complete record, local label 16
-/// next, with r4 the band and r6 the record), HIDER_V7M_SETUP_EXITS (labels 90..93), HIDER_V7M_SETUP_PURGE
+/// (the assembler macros below), HIDER_V7M_SETUP (from the entry to the complete record: on to local label
+/// 16 without a lower short edge in [y0, end), to 17 with one; r4 the band, r6 the record), HIDER_V7M_SETUP_EXITS (labels 90..93), HIDER_V7M_SETUP_PURGE
 /// and the operands HIDER_V7M_SETUP_OPERANDS. Stack at 16: the plane (5 words), the rows (10: mid, odd,
 /// y0, xt, yt, xm, ym, xb, yb, y1), the vertices and |area| (4), then the nine saved registers.
 #define HIDER_V7M_SETUP_MACROS \
 /* Rounded quotient of the signed 64-bit \hi:\lo by d = r9 into \lo (|q| < 2^31, else generic); */ \
 /* scratch r1 r2 r11 r12. Small divisors: two 16-bit digits, one udiv each. */                     \
-    ".macro hider_divr lo, hi\n\t"                                                                 \
-    "asr    r11, \\hi, #31\n\t"                                                                    \
-    "eor    \\lo, \\lo, r11\n\t"                                                                   \
-    "eor    \\hi, \\hi, r11\n\t"                                                                   \
-    "subs   \\lo, \\lo, r11\n\t"                                                                   \
-    "sbc    \\hi, \\hi, r11\n\t"          /* |n| */                                                \
-    "adds   \\lo, \\lo, r9, lsr #1\n\t"                                                            \
-    "adc    \\hi, \\hi, #0\n\t"           /* m = |n| + d / 2 */                                    \
-    "lsl    r1, \\hi, #1\n\t"                                                                      \
-    "orr    r1, r1, \\lo, lsr #31\n\t"                                                             \
-    "cmp    r1, r9\n\t"                                                                            \
-    "bhs    93f\n\t"                      /* m / d >= 2^31 */                                      \
-    "cmp    r9, #0x10000\n\t"                                                                      \
-    "bhs    7f\n\t"                                                                                \
-    "lsl    r1, \\hi, #16\n\t"                                                                     \
-    "orr    r1, r1, \\lo, lsr #16\n\t"    /* m >> 16, below d 2^16 */                              \
-    "udiv   r2, r1, r9\n\t"                                                                        \
-    "mls    r1, r2, r9, r1\n\t"                                                                    \
-    "lsl    r1, r1, #16\n\t"                                                                       \
-    "bfi    r1, \\lo, #0, #16\n\t"                                                                 \
-    "udiv   r1, r1, r9\n\t"                                                                        \
-    "add    r2, r1, r2, lsl #16\n\t"                                                               \
-    "b      8f\n"                                                                                  \
-    "7:\n\t"                                                                                       \
-    "push   {r0, r3, lr}\n\t"                                                                      \
-    "mov    r0, \\lo\n\t"                                                                          \
-    "mov    r1, \\hi\n\t"                                                                          \
-    "mov    r2, r9\n\t"                                                                            \
-    "bl     hider_kernel_udiv64\n\t"                                                               \
-    "mov    r2, r0\n\t"                                                                            \
-    "pop    {r0, r3, lr}\n"                                                                        \
-    "8:\n\t"                                                                                       \
-    "eor    \\lo, r2, r11\n\t"                                                                     \
-    "sub    \\lo, \\lo, r11\n\t"                                                                   \
-    ".endm\n\t"                                                                                    \
+    ".macro hider_divr lo, hi, far, back\n\t"                                                       \
+    "asr    r11, \\hi, #31\n\t"                                                                     \
+    "eor    \\lo, \\lo, r11\n\t"                                                                    \
+    "eor    \\hi, \\hi, r11\n\t"                                                                    \
+    "subs   \\lo, \\lo, r11\n\t"                                                                    \
+    "sbc    \\hi, \\hi, r11\n\t"          /* |n| */                                                 \
+    "adds   \\lo, \\lo, r9, lsr #1\n\t"                                                             \
+    "adc    \\hi, \\hi, #0\n\t"           /* m = |n| + d / 2 */                                     \
+    "lsl    r1, \\hi, #1\n\t"                                                                       \
+    "orr    r1, r1, \\lo, lsr #31\n\t"                                                              \
+    "cmp    r1, r9\n\t"                                                                             \
+    "bhs    93f\n\t"                      /* m / d >= 2^31 */                                       \
+    "cmp    r9, #0x10000\n\t"                                                                       \
+    "bhs    \\far\\()f\n\t"               /* a large divisor: out of line (hider_divr_far) */       \
+    "lsl    r1, \\hi, #16\n\t"                                                                      \
+    "orr    r1, r1, \\lo, lsr #16\n\t"    /* m >> 16, below d 2^16 */                               \
+    "udiv   r2, r1, r9\n\t"                                                                         \
+    "mls    r1, r2, r9, r1\n\t"                                                                     \
+    "lsl    r1, r1, #16\n\t"                                                                        \
+    "bfi    r1, \\lo, #0, #16\n\t"                                                                  \
+    "udiv   r1, r1, r9\n\t"                                                                         \
+    "add    r2, r1, r2, lsl #16\n"                                                                  \
+    "\\back:\n\t"                                                                                   \
+    "eor    \\lo, r2, r11\n\t"                                                                      \
+    "sub    \\lo, \\lo, r11\n\t"                                                                    \
+    ".endm\n\t"                                                                                     \
+/* The large-divisor quotient of hider_divr, after the exits: back to its label `back` with q in r2. */ \
+    ".macro hider_divr_far lo, hi, far, back\n"                                                     \
+    "\\far:\n\t"                                                                                    \
+    "push   {r0, r3, lr}\n\t"                                                                       \
+    "mov    r0, \\lo\n\t"                                                                           \
+    "mov    r1, \\hi\n\t"                                                                           \
+    "mov    r2, r9\n\t"                                                                             \
+    "bl     hider_kernel_udiv64\n\t"                                                                \
+    "mov    r2, r0\n\t"                                                                             \
+    "pop    {r0, r3, lr}\n\t"                                                                       \
+    "b      \\back\\()b\n\t"                                                                        \
+    ".endm\n\t"                                                                                     \
 /* Walker (edge.hpp), inline: in r5 xu, r7 yu, r8 xl, r9 yl, r3 row; out r0 px, r1 g - a, r2 a, */ \
 /* r3 m, r12 q (local labels 81..89). */                                                           \
     ".macro hider_walk\n\t"                                                                        \
@@ -251,8 +254,8 @@ namespace hider {
     "smlal  r10, lr, r2, r1\n\t"                                                                     \
     "neg    r12, r12\n\t"                                                                            \
     "smlal  r10, lr, r11, r12\n\t"                                                                   \
-    "hider_divr r0, r3\n\t"               /* dzdx */                                                 \
-    "hider_divr r10, lr\n\t"              /* dzdy */                                                 \
+    "hider_divr r0, r3, 60, 61\n\t"       /* dzdx */                                                 \
+    "hider_divr r10, lr, 62, 63\n\t"      /* dzdy */                                                 \
     "ldrd   r1, r2, [r4]\n\t"             /* reference pixel: the cell holding v0 */                 \
     "sub    r5, r5, r1\n\t"                                                                          \
     "add    r3, r5, #8\n\t"                                                                          \
@@ -336,7 +339,7 @@ namespace hider {
     "stm    lr, {r2, r3, r8}\n\t"                                                                    \
     "ldr    lr, [sp, #24]\n\t"                                                                       \
     "cmp    lr, #0\n\t"                                                                              \
-    "beq    16f\n\t"                                                                                 \
+    "beq    17f\n\t"                                                                                 \
     "ldm    sp, {r1, r2, r3, r5, r7}\n\t" /* the next left edge's depth and depth step */            \
     "sub    r0, r0, r2\n\t"                                                                          \
     "mla    r3, r1, r0, r3\n\t"                                                                      \
@@ -344,7 +347,8 @@ namespace hider {
     "sub    r2, r2, r7\n\t"                                                                          \
     "mla    r3, r5, r2, r3\n\t"                                                                      \
     "mla    r5, r1, r12, r5\n\t"                                                                     \
-    "strd   r3, r5, [r6, %[next_z]]\n"
+    "strd   r3, r5, [r6, %[next_z]]\n\t"                                                          \
+    "b      17f\n"
 
 #define HIDER_V7M_SETUP_EXITS \
     "90:\n\t"                                                                         \
@@ -362,10 +366,13 @@ namespace hider {
     "93:\n\t"                                                                         \
     "movs   r0, #2\n\t"                   /* generic: a depth step of 2^31 or more */ \
     "add    sp, sp, #56\n\t"                                                          \
-    "pop    {r4-r11, pc}\n"
+    "pop    {r4-r11, pc}\n\t"                                                         \
+    "hider_divr_far r0, r3, 60, 61\n\t"                                               \
+    "hider_divr_far r10, lr, 62, 63\n"
 
 #define HIDER_V7M_SETUP_PURGE \
     ".purgem hider_divr\n\t" \
+    ".purgem hider_divr_far\n\t" \
     ".purgem hider_walk\n\t" \
     ".purgem hider_left\n\t" \
     ".purgem hider_right\n"
@@ -392,7 +399,8 @@ HIDER_NAKED inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVe
         ".syntax unified\n\t"
         HIDER_V7M_SETUP_MACROS
         HIDER_V7M_SETUP
-        "16:\n\t"
+        "16:\n"
+        "17:\n\t"
         "movs   r0, #1\n\t"                   // kernel
         "add    sp, sp, #76\n\t"
         "pop    {r4-r11, pc}\n"
@@ -413,7 +421,24 @@ HIDER_NAKED inline uint32_t kernel_draw_v7m(const ScreenVertex*, const ScreenVer
         ".syntax unified\n\t"
         HIDER_V7M_SETUP_MACROS
         HIDER_V7M_SETUP
-        "16:\n\t"                           // run_kernel_triangle_v7m()'s entry, from the set-up's frame
+        // run_kernel_triangle_v7m()'s entry, from the set-up's frame. 16: no switch to a lower short edge
+        // in this call; 17: a lower short edge from mid, y0 < mid < end (the switch, if mid <= stop).
+        "16:\n\t"
+        "ldr    r5, [sp, #28]\n\t"          // y0
+        "ldr    lr, [sp, #56]\n\t"          // end
+        "ldr    r2, [r4, %[b_stop]]\n\t"
+        "cmp    r2, lr\n\t"
+        "it     gt\n\t"
+        "movgt  r2, lr\n\t"                 // stop = min(end, band stop)
+        "subs   r11, r2, r5\n\t"            // n rows
+        "ble    95f\n\t"                    // none before the stop: `row` stays y0
+        "strh   r2, [r6, %[row]]\n\t"       // the row after this call
+        "ldrd   r12, r9, [r4, %[stride]]\n\t"  // stride, depth origin
+        "mla    r1, r5, r12, r9\n\t"        // the depth row of y0
+        "mla    r9, r11, r12, r1\n\t"       // the depth row after the last
+        "mov    r8, #-1\n\t"                // rows after a switch: none
+        "b      1f\n"
+        "17:\n\t"
         "ldr    r5, [sp, #28]\n\t"          // y0
         "ldr    lr, [sp, #56]\n\t"          // end
         "ldr    r2, [r4, %[b_stop]]\n\t"
@@ -428,10 +453,7 @@ HIDER_NAKED inline uint32_t kernel_draw_v7m(const ScreenVertex*, const ScreenVer
         "mla    r9, r11, r12, r1\n\t"       // the depth row after the last
         "mov    r8, #-1\n\t"                // rows after a switch: none
         "ldr    r3, [sp, #20]\n\t"          // mid
-        "subs   r7, r3, r5\n\t"             // m = mid - y0
-        "ble    1f\n\t"                     // on or below the middle row
-        "cmp    r3, lr\n\t"
-        "bge    1f\n\t"                     // no lower short edge
+        "sub    r7, r3, r5\n\t"             // m = mid - y0 > 0
         "cmp    r7, r11\n\t"
         "bgt    1f\n\t"                     // the middle row lies past this call
         "sub    r8, r11, r7\n\t"
