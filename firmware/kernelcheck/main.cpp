@@ -3,6 +3,9 @@
 //   assembly) and run_kernel_triangle_portable(), two calls each: same buffers and final state.
 // - kernelcheck::kSetupCases triangle set-ups (setup_cases.hpp) through kernel_setup() (the Thumb-2 set-up
 //   on ARMv7-M) and kernel_setup_portable(): same outcome and kernel fields for every case.
+// - On ARMv7-M, kernelcheck::kSetupCases set-ups of narrow frames through kernel_draw_v7m() (set-up and
+//   rows in one call) and through kernel_setup_portable() and run_kernel_triangle_portable(), with the
+//   band's stop above, inside and below the rows: same outcome, record and buffers (on the chip only).
 // - kernelcheck::kVertexCases batches of positions (vertex_cases.hpp) through project_vertices() (on
 //   ARMv6-M the Thumb-1 loop, on ARMv7-M the Thumb-2 loop, elsewhere project_common()) and the general
 //   per-position path: same vertices; the Thumb-1 loop must also refuse no position inside the view
@@ -63,6 +66,18 @@ int main() {
         sh::print("\n");
         return 1;
     }
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    const int draw_setup_case = kernelcheck::run_setup_draw_cases(
+        [](const hider::ScreenVertex& a, const hider::ScreenVertex& b, const hider::ScreenVertex& c,
+           hider::KernelSetupIo& io) { return static_cast<hider::KernelSetup>(hider::kernel_draw_v7m(&a, &b, &c, &io)); },
+        g_buffers);
+    if (draw_setup_case >= 0) {
+        sh::print("kernelcheck: kernel_draw_v7m differs from the portable set-up and kernel in case ");
+        sh::print_u32(static_cast<uint32_t>(draw_setup_case));
+        sh::print("\n");
+        return 1;
+    }
+#endif
     uint32_t refused_inside = 0, accepted = 0;
     const int vertex_case = kernelcheck::run_vertex_cases(
         [](const hider::View& v, const hider::Vec3q16* p, hider::ScreenVertex* out) {

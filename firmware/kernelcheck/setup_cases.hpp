@@ -115,4 +115,54 @@ int run_setup_cases(Setup&& setup, Twin&& twin, uint32_t* out) {
     return first_difference;
 }
 
+/// Digest of both buffers of `b`.
+inline uint32_t buffers_digest(const Buffers& b) {
+    Fnv fnv;
+    for (int32_t i = 0; i < kMaxRows * kWidth; ++i) fnv.add(b.depth[i] | uint32_t{b.color[i]} << 16);
+    return fnv.h;
+}
+
+/// A set-up that also draws (kernel_draw_v7m() on ARMv7-M) against kernel_setup_portable() and then
+/// run_kernel_triangle_portable(): set-up cases of frames at most kWidth wide, whose band stops from a row
+/// above the first one to kMaxRows rows below it (so that the middle row falls before, on and after the
+/// stop), drawn into `b` (random contents, the first row to draw on its first row): same outcome, record
+/// (setup_digest() of the state left) and buffers. `draw` is (a, b, c, io) -> KernelSetup with io.out's
+/// colour set. Returns the first case that differs, or -1.
+template <class Draw>
+int run_setup_draw_cases(Draw&& draw, Buffers& b) {
+    Rng rng{kSetupSeed ^ 0x9E3779B9u};
+    for (int i = 0; i < kSetupCases; ++i) {
+        SetupCase c{};
+        do c = make_setup_case(rng);
+        while ((c.band.x_last - c.band.x_origin) / hider::kSubpixel + 1 > kWidth);
+        hider::KernelBand& band = c.band;
+        band.stride_bytes = kWidth * 2;
+        hider::KernelTriangle u{};
+        u.k.color = rng.next() & 0xFFFFu;
+        hider::KernelTriangle t = u;
+        const hider::KernelSetup su = hider::kernel_setup_portable(c.v[0], c.v[1], c.v[2], c.area, band, u);
+        const int32_t first = su == hider::KernelSetup::kernel ? u.row : band.row_from;
+        band.stop = rng.range(first - 1, first + kMaxRows);
+        band.depth_origin = reinterpret_cast<uintptr_t>(b.depth) - static_cast<uintptr_t>(first) * (kWidth * 2);
+        band.color_less_2 = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(b.color) - reinterpret_cast<uintptr_t>(b.depth)) - 2;
+        const uint32_t seed = rng.next();
+        auto fill = [&] {
+            Rng r{seed | 1u};
+            for (int32_t k = 0; k < kMaxRows * kWidth; ++k) {
+                b.depth[k] = static_cast<uint16_t>(r.next());
+                b.color[k] = static_cast<uint16_t>(r.next());
+            }
+        };
+        fill();
+        if (su == hider::KernelSetup::kernel && u.row < u.end)
+            (void)hider::run_kernel_triangle_portable(u, b.depth, band.stop, {band.color_less_2 + 2, band.stride_bytes});
+        const uint32_t expect = setup_digest(su, u) ^ buffers_digest(b);
+        fill();
+        hider::KernelSetupIo io{&band, c.area, &t};
+        const hider::KernelSetup s = draw(c.v[0], c.v[1], c.v[2], io);
+        if (s != su || (setup_digest(s, t) ^ buffers_digest(b)) != expect) return i;
+    }
+    return -1;
+}
+
 }  // namespace kernelcheck
