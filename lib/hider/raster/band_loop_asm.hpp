@@ -63,8 +63,7 @@ static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(Ker
 /// slot, a generic set-up: with kGenericHandBack set), the carried ones before it resumed. Every listed triangle has a non-zero
 /// area and is not culled (bin_triangles()). Registers: r4 the listed triangle, r5 d, r6 the next carried
 /// triangle (0xFFFF: none), r7 the vertices, r8 the triangles, r9 d->next, r10 the area, r11 the slot's
-/// record; on the stack three words for the resumes' row loop (the vertex pointers of a listed
-/// triangle through its colour), then d and the listed triangle. The loop
+/// record; on the stack three words for the resumes' row loop, then d and the listed triangle. The loop
 /// comes back to its head through d->head: without the clip test when d->projected. A run of resumes
 /// keeps its state on the stack and in d (the slot order pointer at sp + 12, and at sp + 24 where the
 /// record's slot goes after it: d->nxt or d->free_top) and draws each record's
@@ -155,18 +154,18 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "ldr    r12, [r5, #64]\n\t"
         "add    r3, r3, r3, lsl #1\n\t"
         "add    r11, r12, r3, lsl #5\n\t"       // its record: pool + 96 s
-        "stm    sp, {r0, r1, r2}\n\t"         // the vertices, through the colour
-        // FaceShading::color565(), as in draw_flat_v7m: first, so that the set-up draws at once.
-        "add    r1, r4, r4, lsl #1\n\t"
-        "add    r1, r8, r1, lsl #1\n\t"
-        "ldr    r2, [r5, #16]\n\t"
-        "add    r1, r1, r2\n\t"                 // the triangle's normal
-        HIDER_V7M_COLOR565
-        "str    r1, [r11, %[color]]\n\t"        // k.color
+        // FaceShading::color565(), as in draw_flat_v7m: first, so that the set-up draws at once; the
+        // vertices stay in r0 r1 r2, r9 lends itself and comes back from d.
+        "add    r12, r4, r4, lsl #1\n\t"
+        "add    r12, r8, r12, lsl #1\n\t"
+        "ldr    r3, [r5, #16]\n\t"
+        "add    r12, r12, r3\n\t"               // the triangle's normal
+        HIDER_V7M_COLOR565_IN(r12, r9, r3, lr)
+        "ldr    r9, [r5, #8]\n\t"               // d->next
+        "str    r12, [r11, %[color]]\n\t"       // k.color
         "strh   r4, [r11, %[tri]]\n\t"          // the mesh triangle
         "ldr    r3, [r5, #12]\n\t"              // d->io
         "strd   r10, r11, [r3, %[io_area]]\n\t" // io->area, io->out
-        "ldm    sp, {r0, r1, r2}\n\t"
         "bl     %c[draw]\n\t"                   // set up, and the rows in this band drawn
         "cmp    r0, #1\n\t"
         "beq    3f\n\t"

@@ -252,37 +252,39 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
     "mul    r10, r12, r2\n\t" \
     "mls    r10, lr, r1, r10\n\t"     /* signed_area(a, b, c) */
 
-/// HIDER_V7M_COLOR565: FaceShading::color565() of the face whose Normal14 r1 points to, back facing when
-/// r10 >= 0, into r1 (r2, r3 and lr clobbered); the asm statement gives the offsets of the view's z row
-/// and the base colour from r5 as operands view_z0..2 and base_r, base_g, base_b. Uses local label 117.
-#define HIDER_V7M_COLOR565 \
-    "ldrsh  r2, [r1]\n\t" \
-    "ldr    r3, [r5, %[view_z0]]\n\t" \
-    "mul    r2, r3, r2\n\t" \
-    "ldrsh  lr, [r1, #2]\n\t" \
-    "ldr    r3, [r5, %[view_z1]]\n\t" \
-    "mla    r2, r3, lr, r2\n\t" \
-    "ldrsh  lr, [r1, #4]\n\t" \
-    "ldr    r3, [r5, %[view_z2]]\n\t" \
-    "mla    r2, r3, lr, r2\n\t" \
+/// HIDER_V7M_COLOR565_IN(n, b, t, u): FaceShading::color565() of the face whose Normal14 register n points
+/// to, back facing when r10 >= 0, into n (registers b, t and u clobbered); the asm statement gives the
+/// offsets of the view's z row and the base colour from r5 as operands view_z0..2 and base_r, base_g,
+/// base_b. Uses local label 117. HIDER_V7M_COLOR565 is it in r1 (r2, r3 and lr clobbered).
+#define HIDER_V7M_COLOR565_IN(n, b, t, u) \
+    "ldrsh  " #b ", [" #n "]\n\t" \
+    "ldr    " #t ", [r5, %[view_z0]]\n\t" \
+    "mul    " #b ", " #t ", " #b "\n\t" \
+    "ldrsh  " #u ", [" #n ", #2]\n\t" \
+    "ldr    " #t ", [r5, %[view_z1]]\n\t" \
+    "mla    " #b ", " #t ", " #u ", " #b "\n\t" \
+    "ldrsh  " #u ", [" #n ", #4]\n\t" \
+    "ldr    " #t ", [r5, %[view_z2]]\n\t" \
+    "mla    " #b ", " #t ", " #u ", " #b "\n\t" \
     "cmp    r10, #0\n\t" \
     "blt    117f\n\t"                   /* a front face */ \
-    "bfc    r2, #0, #12\n\t"            /* a back face: -(s >> 12) = -(s with bits 0..11 cleared) >> 12 */ \
-    "neg    r2, r2\n" \
+    "bfc    " #b ", #0, #12\n\t"        /* a back face: -(s >> 12) = -(s with bits 0..11 cleared) >> 12 */ \
+    "neg    " #b ", " #b "\n" \
     "117:\n\t" \
-    "usat   r2, #16, r2, asr #12\n\t"   /* clamped to [0, 2^16 - 1]: 2^16 gives the same 8-bit channels */ \
-    "mov    r3, #32768\n\t" \
-    "ldr    r1, [r5, %[base_r]]\n\t" \
-    "mla    r1, r2, r1, r3\n\t" \
-    "lsr    r1, r1, #19\n\t" \
-    "lsl    r1, r1, #11\n\t"           /* red */ \
-    "ldr    lr, [r5, %[base_g]]\n\t" \
-    "mla    lr, r2, lr, r3\n\t" \
-    "lsr    lr, lr, #18\n\t" \
-    "orr    r1, r1, lr, lsl #5\n\t"    /* green */ \
-    "ldr    lr, [r5, %[base_b]]\n\t" \
-    "mla    lr, r2, lr, r3\n\t" \
-    "orr    r1, r1, lr, lsr #19\n\t"   /* blue */
+    "usat   " #b ", #16, " #b ", asr #12\n\t"  /* clamped to [0, 2^16 - 1]: 2^16 gives the same 8-bit channels */ \
+    "mov    " #t ", #32768\n\t" \
+    "ldr    " #n ", [r5, %[base_r]]\n\t" \
+    "mla    " #n ", " #b ", " #n ", " #t "\n\t" \
+    "lsr    " #n ", " #n ", #19\n\t" \
+    "lsl    " #n ", " #n ", #11\n\t"    /* red */ \
+    "ldr    " #u ", [r5, %[base_g]]\n\t" \
+    "mla    " #u ", " #b ", " #u ", " #t "\n\t" \
+    "lsr    " #u ", " #u ", #18\n\t" \
+    "orr    " #n ", " #n ", " #u ", lsl #5\n\t"  /* green */ \
+    "ldr    " #u ", [r5, %[base_b]]\n\t" \
+    "mla    " #u ", " #b ", " #u ", " #t "\n\t" \
+    "orr    " #n ", " #n ", " #u ", lsr #19\n\t"  /* blue */
+#define HIDER_V7M_COLOR565 HIDER_V7M_COLOR565_IN(r1, r2, r3, lr)
 
 /// The same loop in Thumb-2 around kernel_setup_v7m() and run_kernel_triangle_v7m(), in two copies: with
 /// culling on and every vertex projected (d->projected), a loop without the clip-plane and cull-flag
