@@ -349,16 +349,17 @@ constexpr int32_t saturate32(int64_t v) {
     return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : static_cast<int32_t>(v));
 }
 
-/// Number of leading zero bits of a 64-bit value (64 for 0).
+/// Number of leading zero bits of a 64-bit value (64 for 0), in two clz32 steps.
 constexpr int clz64(uint64_t v) {
-    int n = 0;
-    if (v == 0) return 64;
-    while ((v & (uint64_t{1} << 63)) == 0) { v <<= 1; ++n; }
-    return n;
+    const uint32_t hi = static_cast<uint32_t>(v >> 32);
+    if (hi != 0) return clz32(hi);
+    const uint32_t lo = static_cast<uint32_t>(v);
+    return lo != 0 ? 32 + clz32(lo) : 64;
 }
 
-/// floor(sqrt(v)) for any 64-bit unsigned v; bit-by-bit, 32 iterations.
-constexpr uint32_t isqrt64(uint64_t v) {
+namespace detail {
+/// floor(sqrt(v)) bit by bit (32 iterations): builds the table below at compile time.
+constexpr uint32_t isqrt64_bits(uint64_t v) {
     uint64_t root = 0;
     uint64_t bit = uint64_t{1} << 62;
     while (bit > v) bit >>= 2;
@@ -368,6 +369,48 @@ constexpr uint32_t isqrt64(uint64_t v) {
         bit >>= 2;
     }
     return static_cast<uint32_t>(root);
+}
+
+/// 2^15 / sqrt(m) for m the middle of each 1/256-wide bucket of [1/4, 1): entry i is for
+/// X / 2^32 in [(64 + i) / 256, (65 + i) / 256). Built at compile time; 384 bytes.
+struct RsqrtTable {
+    uint16_t v[192];
+    constexpr RsqrtTable() : v() {
+        // 2^15 / sqrt((2 (64 + i) + 1) / 512) = sqrt(2^30 512 / (2 (64 + i) + 1)), floored.
+        for (uint32_t i = 0; i < 192; ++i) v[i] = static_cast<uint16_t>(isqrt64_bits((uint64_t{1} << 39) / (2 * (64 + i) + 1)));
+    }
+};
+inline constexpr RsqrtTable kRsqrtTable{};
+}  // namespace detail
+
+/// 2^30 / sqrt(x / 2^32) for x in [2^30, 2^32), i.e. 1 / sqrt(X) in Q30 for X = x / 2^32 in [1/4, 1):
+/// a result in (2^30, 2^31]. Table start (relative error < 2^-8), then two Newton steps
+/// y' = y + y (1 - X y^2) / 2 with rounded intermediates; |relative error| < 2^-29.5, about one LSB of
+/// the result (tests/ray/math_test.cpp checks every bucket).
+constexpr uint32_t rsqrt_q30(uint32_t x) {
+    uint32_t y = uint32_t{detail::kRsqrtTable.v[(x >> 24) - 64]} << 15;
+    for (int step = 0; step < 2; ++step) {
+        const uint32_t y2_q29 = static_cast<uint32_t>((mul_wide_u(y, y) + (uint64_t{1} << 30)) >> 31);  // y^2 <= 4
+        const uint64_t p_q61 = mul_wide_u(x, y2_q29);  // X y^2, about 2^61
+        const int32_t e_q30 = static_cast<int32_t>((static_cast<int64_t>((uint64_t{1} << 61) - p_q61) + (int64_t{1} << 30)) >> 31);
+        y = static_cast<uint32_t>(static_cast<int64_t>(y) + ((mul_wide(static_cast<int32_t>(y >> 1), e_q30) + (int64_t{1} << 29)) >> 30));
+    }
+    return y;
+}
+
+/// floor(sqrt(v)) for any 64-bit unsigned v: rsqrt_q30() of the normalised top word gives the root to
+/// about 2^-29, then the exact square decides the last unit or two (tests compare it with the
+/// bit-by-bit root).
+constexpr uint32_t isqrt64(uint64_t v) {
+    if (v == 0) return 0;
+    const int k = clz64(v) >> 1;                                      // v << 2k in [2^62, 2^64)
+    const uint32_t x = static_cast<uint32_t>((v << (2 * k)) >> 32);  // in [2^30, 2^32)
+    // sqrt(v << 2k) ~ sqrt(x) 2^16 = x rsqrt(x) 2^16 / 2^46.
+    uint64_t s = (mul_wide_u(x, rsqrt_q30(x)) >> 30) >> k;
+    if (s > 0xFFFFFFFFu) s = 0xFFFFFFFFu;
+    while (s * s > v) --s;
+    while (s < 0xFFFFFFFFu && (s + 1) * (s + 1) <= v) ++s;
+    return static_cast<uint32_t>(s);
 }
 
 /// Signed fixed-point number with F fraction bits held in an int32_t (value = raw / 2^F).

@@ -48,20 +48,40 @@ TEST_CASE("rsqrt_q30 is within 2^-29 relative of 1/sqrt(x) in every table bucket
     CHECK(worst < std::ldexp(1.0, -29));
 }
 
-TEST_CASE("isqrt64_fast equals the bit-by-bit isqrt64 exactly") {
-    CHECK(isqrt64_fast(0) == 0);
-    CHECK(isqrt64_fast(1) == 1);
-    CHECK(isqrt64_fast(UINT64_MAX) == 0xFFFFFFFFu);
+TEST_CASE("isqrt64 equals the bit-by-bit root exactly") {
+    auto bits = [](uint64_t v) {  // the classic digit-by-digit root, as a reference
+        uint64_t root = 0, bit = uint64_t{1} << 62;
+        while (bit > v) bit >>= 2;
+        for (; bit != 0; bit >>= 2) {
+            if (v >= root + bit) {
+                v -= root + bit;
+                root = (root >> 1) + bit;
+            } else {
+                root >>= 1;
+            }
+        }
+        return static_cast<uint32_t>(root);
+    };
+    CHECK(isqrt64(0) == 0);
+    CHECK(isqrt64(1) == 1);
+    CHECK(isqrt64(UINT64_MAX) == 0xFFFFFFFFu);
     for (uint64_t r : {uint64_t{1}, uint64_t{2}, uint64_t{3}, uint64_t{65535}, uint64_t{65536}, uint64_t{0xFFFFFFFFu},
                        uint64_t{0x80000000u}, uint64_t{12345678}}) {
-        CHECK(isqrt64_fast(r * r) == r);
-        CHECK(isqrt64_fast(r * r - 1) == r - 1);
-        if (r < 0xFFFFFFFFu) CHECK(isqrt64_fast(r * r + 2 * r) == r);  // (r + 1)^2 - 1
+        CHECK(isqrt64(r * r) == r);
+        CHECK(isqrt64(r * r - 1) == r - 1);
+        if (r < 0xFFFFFFFFu) CHECK(isqrt64(r * r + 2 * r) == r);  // (r + 1)^2 - 1
     }
     std::mt19937_64 rng(11);
     for (int i = 0; i < 200000; ++i) {
         const uint64_t v = rng() >> (rng() % 64);
-        REQUIRE(isqrt64_fast(v) == isqrt64(v));
+        REQUIRE(isqrt64(v) == bits(v));
+    }
+    for (uint64_t v = 0; v < 100000; ++v) REQUIRE(isqrt64(v) == bits(v));
+    for (uint64_t i = 0; i < 64; ++i) {  // both sides of every power of two
+        const uint64_t p = uint64_t{1} << i;
+        REQUIRE(isqrt64(p) == bits(p));
+        REQUIRE(isqrt64(p - 1) == bits(p - 1));
+        REQUIRE(isqrt64(p + 1) == bits(p + 1));
     }
 }
 

@@ -1,64 +1,13 @@
-// Integer helpers of the ray tracer: reciprocal square root (table + two Newton steps in 32x32->64
-// products), an exact floor square root built on it, unit vectors in Q30 and the mixed-format dot
-// products rays use (Q30 directions, Q16 positions). Costs are a few dozen instructions where a
-// 32x32->64 multiply is one instruction (Cortex-M3, RV32IM), no division. See CONVENTIONS.md.
+// Integer helpers of the ray tracer: unit vectors in Q30 from fixed.hpp's reciprocal square root (a few
+// dozen instructions where a 32x32->64 multiply is one instruction, Cortex-M3 and RV32IM, no division)
+// and the mixed-format dot products rays use (Q30 directions, Q16 positions). See CONVENTIONS.md.
 #pragma once
 #include <hider/vec.hpp>
 
 namespace hider::ray {
 
-/// Leading zero bits of v (64 for 0) in two clz32 steps (fixed.hpp's clz64 loops bit by bit).
-__attribute__((always_inline)) constexpr int leading_zeros64(uint64_t v) {
-    const uint32_t hi = static_cast<uint32_t>(v >> 32);
-    if (hi != 0) return clz32(hi);
-    const uint32_t lo = static_cast<uint32_t>(v);
-    return lo != 0 ? 32 + clz32(lo) : 64;
-}
-
 /// Number of significant bits of v (0 for 0).
-constexpr int bit_length64(uint64_t v) { return 64 - leading_zeros64(v); }
-
-namespace detail {
-/// 2^15 / sqrt(m) for m the middle of each 1/256-wide bucket of [1/4, 1): entry i is for
-/// X / 2^32 in [(64 + i) / 256, (65 + i) / 256). Built at compile time; 384 bytes.
-struct RsqrtTable {
-    uint16_t v[192];
-    constexpr RsqrtTable() : v() {
-        // 2^15 / sqrt((2 (64 + i) + 1) / 512) = sqrt(2^30 512 / (2 (64 + i) + 1)), floored.
-        for (uint32_t i = 0; i < 192; ++i) v[i] = static_cast<uint16_t>(isqrt64((uint64_t{1} << 39) / (2 * (64 + i) + 1)));
-    }
-};
-inline constexpr RsqrtTable kRsqrtTable{};
-}  // namespace detail
-
-/// 2^30 / sqrt(x / 2^32) for x in [2^30, 2^32), i.e. 1 / sqrt(X) in Q30 for X = x / 2^32 in [1/4, 1):
-/// a result in (2^30, 2^31]. Table start (relative error < 2^-8), then two Newton steps
-/// y' = y + y (1 - X y^2) / 2 with rounded intermediates; |relative error| < 2^-29.5, about one LSB of
-/// the result (tests/ray/math_test.cpp checks every bucket).
-constexpr uint32_t rsqrt_q30(uint32_t x) {
-    uint32_t y = uint32_t{detail::kRsqrtTable.v[(x >> 24) - 64]} << 15;
-    for (int step = 0; step < 2; ++step) {
-        const uint32_t y2_q29 = static_cast<uint32_t>((mul_wide_u(y, y) + (uint64_t{1} << 30)) >> 31);  // y^2 <= 4
-        const uint64_t p_q61 = mul_wide_u(x, y2_q29);  // X y^2, about 2^61
-        const int32_t e_q30 = static_cast<int32_t>((static_cast<int64_t>((uint64_t{1} << 61) - p_q61) + (int64_t{1} << 30)) >> 31);
-        y = static_cast<uint32_t>(static_cast<int64_t>(y) + ((mul_wide(static_cast<int32_t>(y >> 1), e_q30) + (int64_t{1} << 29)) >> 30));
-    }
-    return y;
-}
-
-/// floor(sqrt(v)) for any 64-bit v, equal to isqrt64(v) (tested): rsqrt_q30 of the normalised top
-/// word gives the root to about 2^-29, then the exact square decides the last unit or two.
-constexpr uint32_t isqrt64_fast(uint64_t v) {
-    if (v == 0) return 0;
-    const int k = leading_zeros64(v) >> 1;              // v << 2k in [2^62, 2^64)
-    const uint32_t x = static_cast<uint32_t>((v << (2 * k)) >> 32);  // in [2^30, 2^32)
-    // sqrt(v << 2k) ~ sqrt(x) 2^16 = x rsqrt(x) 2^16 / 2^46.
-    uint64_t s = (mul_wide_u(x, rsqrt_q30(x)) >> 30) >> k;
-    if (s > 0xFFFFFFFFu) s = 0xFFFFFFFFu;
-    while (s * s > v) --s;
-    while (s < 0xFFFFFFFFu && (s + 1) * (s + 1) <= v) ++s;
-    return static_cast<uint32_t>(s);
-}
+constexpr int bit_length64(uint64_t v) { return 64 - clz64(v); }
 
 namespace detail {
 /// round(|c| 2^e r / 2^31) with c's sign, for |c| < 2^30 and e in {0, 1}: one unsigned 32x32->64

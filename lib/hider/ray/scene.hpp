@@ -71,7 +71,7 @@ constexpr Sphere enclosing_sphere(Span<const Sphere> spheres) {
         const Vec3q16 d = s.centre - centre;
         const uint64_t d2 = static_cast<uint64_t>(mul_wide(d.x.raw(), d.x.raw())) + static_cast<uint64_t>(mul_wide(d.y.raw(), d.y.raw())) +
                             static_cast<uint64_t>(mul_wide(d.z.raw(), d.z.raw()));
-        const uint64_t root = isqrt64_fast(d2);
+        const uint64_t root = isqrt64(d2);
         radius = max(radius, static_cast<int64_t>(root + (root * root < d2 ? 1 : 0)) + s.radius.raw());
     }
     return {centre, Q16::from_raw(static_cast<int32_t>(min<int64_t>(radius, INT32_MAX))), 0};

@@ -38,7 +38,7 @@ inline bool intersect_sphere(const Ray& ray, const Sphere& s, int32_t t_min, int
     const int32_t qz = oc.z.raw() - round_q46_to_q16(mul_wide(b, ray.dir.z.raw()));
     const int64_t disc = mul_wide(s.radius.raw(), s.radius.raw()) - mul_wide(qx, qx) - mul_wide(qy, qy) - mul_wide(qz, qz);
     if (disc < 0) return false;
-    const int64_t h = isqrt64_fast(static_cast<uint64_t>(disc));
+    const int64_t h = isqrt64(static_cast<uint64_t>(disc));
     const int64_t t0 = int64_t{-b} - h, t1 = int64_t{-b} + h;
     if (t0 > t_min) {
         if (t0 >= t_max) return false;
