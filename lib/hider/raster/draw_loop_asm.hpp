@@ -286,11 +286,13 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
     "orr    " #n ", " #n ", " #u ", lsr #19\n\t"  /* blue */
 #define HIDER_V7M_COLOR565 HIDER_V7M_COLOR565_IN(r1, r2, r3, lr)
 
-/// The same loop in Thumb-2 around kernel_setup_v7m() and run_kernel_triangle_v7m(), in two copies: with
-/// culling on and every vertex projected (d->projected), a loop without the clip-plane and cull-flag
-/// tests; else the general one. Registers: r4 the triangle, r5 d, r6 the end, r7 the vertices, r8 the
-/// running loop's tail (Thumb address: the drawn path returns through it), r9 d->io, r10 the area, r11 the
-/// faces culled in this call; on the stack the three vertex pointers.
+/// The same loop in Thumb-2 around kernel_draw_v7m(), in two copies: with culling on and every vertex
+/// projected (d->projected), a loop without the clip-plane and cull-flag tests that loads each vertex's
+/// x | y by its index (its pointer is made only for a drawn face); else the general one. Each copy has
+/// its own drawn path: the colour, then one call that sets up and draws. Registers: r4 the triangle, r5
+/// d, r6 the end, r7 the vertices, r9 d->io, r10 the area, r11 the faces culled in this call; in the
+/// projected loop r0..r2 the vertex indices and r8 scratch; in the general one the three vertex
+/// pointers on the stack.
 HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
@@ -307,19 +309,26 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "ldr    r0, [r5, #8]\n\t"
         "ldr    r1, [r5, #28]\n\t"
         "ands   r0, r0, r1\n\t"
-        "beq    10f\n\t"                      // not culling, or a vertex outside a clip plane
-        "movw   r8, #:lower16:(28f + 1)\n\t"   // a Thumb address (adr could miss: the section may sit at 2 mod 4)
-        "movt   r8, #:upper16:(28f + 1)\n"
+        "beq    1f\n"                        // not culling, or a vertex outside a clip plane
         "20:\n\t"                              // culling, every vertex projected
         "ldrh   r0, [r4]\n\t"
         "ldrh   r1, [r4, #2]\n\t"
         "ldrh   r2, [r4, #4]\n\t"
-        "add    r0, r7, r0, lsl #3\n\t"
-        "add    r1, r7, r1, lsl #3\n\t"
-        "add    r2, r7, r2, lsl #3\n\t"
-        HIDER_V7M_AREA
+        "ldr    r3, [r7, r0, lsl #3]\n\t"     // x | y << 16 of each
+        "ldr    r12, [r7, r1, lsl #3]\n\t"
+        "ldr    lr, [r7, r2, lsl #3]\n\t"
+        "sxth   r8, r3\n\t"                    // ax
+        "asr    r3, r3, #16\n\t"               // ay
+        "sxth   r10, r12\n\t"
+        "sub    r10, r10, r8\n\t"              // bx - ax
+        "rsb    r12, r3, r12, asr #16\n\t"     // by - ay
+        "rsb    r3, r3, lr, asr #16\n\t"       // cy - ay
+        "mul    r10, r10, r3\n\t"
+        "sxth   lr, lr\n\t"
+        "sub    lr, lr, r8\n\t"                // cx - ax
+        "mls    r10, lr, r12, r10\n\t"         // signed_area(a, b, c), as HIDER_V7M_AREA
         "cmp    r10, #0\n\t"
-        "bmi    2f\n\t"                       // counter-clockwise: drawn
+        "bmi    21f\n\t"                       // counter-clockwise: drawn
         "it     ne\n\t"
         "addne  r11, r11, #1\n"                 // culled (zero: nothing)
         "28:\n\t"
@@ -327,9 +336,28 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "cmp    r4, r6\n\t"
         "bne    20b\n\t"
         "b      90f\n"
-        "10:\n\t"
-        "movw   r8, #:lower16:(8f + 1)\n\t"   // a Thumb address (adr could miss: the section may sit at 2 mod 4)
-        "movt   r8, #:upper16:(8f + 1)\n"
+        "21:\n\t"                              // FaceShading::color565(), as in draw_flat_v6m
+        "ldr    r12, [r5, #24]\n\t"
+        "add    r12, r12, r4\n\t"              // the triangle's normal
+        HIDER_V7M_COLOR565_IN(r12, r8, r3, lr)
+        "ldr    r3, [r9, #8]\n\t"              // the triangle record
+        "str    r12, [r3, #52]\n\t"            // k.color
+        "str    r10, [r9, #4]\n\t"             // io->area
+        "add    r0, r7, r0, lsl #3\n\t"
+        "add    r1, r7, r1, lsl #3\n\t"
+        "add    r2, r7, r2, lsl #3\n\t"
+        "mov    r3, r9\n\t"
+        "bl     %c[draw]\n\t"                  // set up and drawn
+        "cmp    r0, #1\n\t"
+        "bne    22f\n\t"
+        "ldr    r0, [r5, #16]\n\t"
+        "adds   r0, r0, #1\n\t"
+        "str    r0, [r5, #16]\n\t"             // drawn
+        "b      28b\n"
+        "22:\n\t"
+        "cmp    r0, #0\n\t"
+        "beq    28b\n\t"                       // none
+        "b      90f\n"                          // generic: back to C++
         "1:\n\t"
         "cmp    r4, r6\n\t"
         "beq    90f\n\t"
@@ -358,8 +386,6 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "8:\n\t"
         "adds   r4, r4, #6\n\t"
         "b      1b\n"
-        "9:\n\t"
-        "bx     r8\n"                            // the next triangle, in the running loop
         "2:\n\t"                               // FaceShading::color565(), as in draw_flat_v6m
         "ldr    r1, [r5, #24]\n\t"
         "add    r1, r1, r4\n\t"                 // the triangle's normal
@@ -375,10 +401,10 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "ldr    r0, [r5, #16]\n\t"
         "adds   r0, r0, #1\n\t"
         "str    r0, [r5, #16]\n\t"              // drawn
-        "bx     r8\n"
+        "b      8b\n"
         "3:\n\t"
         "cmp    r0, #0\n\t"
-        "beq    9b\n"                           // none
+        "beq    8b\n"                           // none
         "90:\n\t"
         "ldr    r0, [r5, #12]\n\t"
         "add    r0, r0, r11\n\t"
