@@ -1,6 +1,7 @@
 // The z-buffer's triangle loop for the row kernel on Cortex-M (Thumb-1 on ARMv6-M, Thumb-2 on ARMv7-M):
 // per mesh triangle the drawable test, the snapped area and the cull, then for the drawn ones the chip's
-// kernel set-up, the headlight colour (FaceShading::color565()) and its run_kernel_triangle. GCC kept
+// kernel set-up, the headlight colour (FaceShading::color565()) and its run_kernel_triangle (on ARMv7-M
+// the colour first, then kernel_draw_v7m(), which sets up and draws in one call). GCC kept
 // the loop's state on the stack (loads and stores around every face and call on the M0+); here the
 // triangle, the context and the vertex array stay in registers. Triangles
 // with a vertex outside a clip plane and those the set-up calls generic go back to the C++ loop

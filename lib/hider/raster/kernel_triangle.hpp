@@ -22,7 +22,7 @@ struct KernelBand {
     int32_t stride_bytes;        ///< bytes from one depth row to the next
     // Read by kernel_draw_v7m() only (the Cortex-M3 draw loops, which set them; kernel_band() zeroes them):
     uintptr_t depth_origin;      ///< depth row of row 0 modulo 2^32: row_from's less row_from strides
-    int32_t stop;                ///< draw rows before this one (>= row_from)
+    int32_t stop;                ///< draw rows before this one (none when it is at or above the first)
     intptr_t color_less_2;       ///< bytes from a depth element to its colour, less 2
 };
 static_assert(sizeof(void*) != 4 || (offsetof(KernelBand, stride_bytes) == 28 && offsetof(KernelBand, depth_origin) == 32 &&
