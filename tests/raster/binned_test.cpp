@@ -400,3 +400,24 @@ TEST_CASE("binned bands count no set-up again below the last band") {
         CHECK(generic.set_up_again == expected);
     }
 }
+
+TEST_CASE("the ARMv7-M binning loop's band of a subpixel row is exact for every band height of a 1,024-row frame") {
+    // The loop takes floor(v * band_scale_v(rows) / 2^32) for v = y - y_lift in [0, 16 * height - 1];
+    // the C++ loop the band of the row v >> 4. Checked on every v where the exact band steps (v = 16 rows q
+    // and the v below it) and at the ends.
+    int failures = 0;
+    for (uint32_t rows = 1; rows <= static_cast<uint32_t>(kMaxFrameSide); ++rows) {
+        const uint64_t scale = detail::band_scale_v(rows);
+        const uint32_t v_end = 16u * static_cast<uint32_t>(kMaxFrameSide);
+        auto check = [&](uint32_t v) {
+            const uint64_t band = (v * scale) >> 32;
+            if (band != (v >> 4) / rows) ++failures;
+        };
+        for (uint32_t step = 0; step < v_end; step += 16 * rows) {
+            check(step);
+            if (step > 0) check(step - 1);
+        }
+        check(v_end - 1);
+    }
+    CHECK(failures == 0);
+}

@@ -8,49 +8,55 @@
 namespace hider {
 
 namespace detail {
-/// Constants and in/out values of the binning loop (the layout is its contract).
+/// Constants and in/out values of the binning loop (the layout is its contract: the first five are one
+/// ldm of a binned triangle).
 struct BinLoopArm {
-    const Tri* tris;            ///< 0
-    const ScreenVertex* verts;  ///< 4
-    int32_t y_lift;             ///< 8: rows from (y - y_lift) >> 4
-    int32_t last;               ///< 12: the frame's last row
-    int32_t cull_above;         ///< 16: culled when the area is above it
-    uint32_t band_scale;        ///< 20: band = row * band_scale >> 20
-    uint16_t* next;             ///< 24
-    uint16_t* head;             ///< 28
+    int32_t y_lift;             ///< 0: v = y - y_lift; row (v >> 4)
+    int32_t v_last;             ///< 4: 16 height - 1: v clamped to [0, v_last], row to [0, height - 1]
+    uint32_t band_scale;        ///< 8: ceil(2^28 / band rows): band = v * band_scale >> 32 (umull)
+    uint16_t* head;             ///< 12
+    uint16_t* next;             ///< 16
+    const Tri* tris;            ///< 20
+    const ScreenVertex* verts;  ///< 24
+    int32_t cull_above;         ///< 28: culled when the area is above it
     uint32_t culled;            ///< 32, counted up
     uint32_t projected;         ///< 36: 1 when no vertex is outside a clip plane (all_projected()): no clip test
 };
 static_assert(sizeof(void*) != 4 ||
-                  (offsetof(BinLoopArm, verts) == 4 && offsetof(BinLoopArm, y_lift) == 8 && offsetof(BinLoopArm, last) == 12 &&
-                   offsetof(BinLoopArm, cull_above) == 16 && offsetof(BinLoopArm, band_scale) == 20 &&
-                   offsetof(BinLoopArm, next) == 24 && offsetof(BinLoopArm, head) == 28 && offsetof(BinLoopArm, culled) == 32 &&
-                   offsetof(BinLoopArm, projected) == 36),
+                  (offsetof(BinLoopArm, v_last) == 4 && offsetof(BinLoopArm, band_scale) == 8 &&
+                   offsetof(BinLoopArm, head) == 12 && offsetof(BinLoopArm, next) == 16 && offsetof(BinLoopArm, tris) == 20 &&
+                   offsetof(BinLoopArm, verts) == 24 && offsetof(BinLoopArm, cull_above) == 28 &&
+                   offsetof(BinLoopArm, culled) == 32 && offsetof(BinLoopArm, projected) == 36),
               "binning loop layout: every offset the assembly uses");
 static_assert(sizeof(Tri) == 6 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVertex, y) == 2 &&
                   offsetof(ScreenVertex, z) == 4 && kSubpixelBits == 4,
-              "the binning loop's strides and shifts");
+              "the binning loop's strides and offsets, and band_scale_v()'s 2^28 = 2^32 / 16");
+
+/// ceil(2^28 / rows): floor(v * it / 2^32) is floor(v / (16 rows)) for every v < 2^32 / (16 rows), so for
+/// every v of a frame of up to kMaxFrameSide rows (v < 2^14, rows <= 2^10): one umull gives the band of
+/// a subpixel row, without first shifting it to a pixel row.
+constexpr uint32_t band_scale_v(uint32_t rows) { return ((uint32_t{1} << 28) + rows - 1) / rows; }
 }  // namespace detail
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-/// HIDER_V7M_BIN_LINK: bin_triangles_v7m()'s loop from the vertex pointers r0 r1 r2 of a drawable triangle
-/// on: the area, the cull, the link into its band's list, the step to the triangle below (back to local
-/// label 1). Uses local labels 2, 5 and 6.
+/// HIDER_V7M_BIN_LINK: bin_triangles_v7m()'s loop from the vertex indices r0 r1 r2 of a drawable
+/// triangle on: the area, the cull, the link into its band's list, the step to the triangle below (back
+/// to local label 1; falls through when none is left). Uses local labels 0, 2, 4, 5 and 6.
 #define HIDER_V7M_BIN_LINK \
     "2:\n\t" \
-    "ldrsh  r3, [r0]\n\t"                    /* ax */ \
-    "ldrsh  r12, [r0, #2]\n\t"               /* ay */ \
-    "ldrsh  r0, [r1]\n\t"                    /* bx */ \
-    "ldrsh  r1, [r1, #2]\n\t"                /* by */ \
-    "ldrsh  lr, [r2]\n\t"                    /* cx */ \
-    "ldrsh  r2, [r2, #2]\n\t"                /* cy */ \
+    "ldrsh  r3, [r6, r0, lsl #3]\n\t"        /* ax */ \
+    "ldrsh  r12, [r7, r0, lsl #3]\n\t"       /* ay */ \
+    "ldrsh  r0, [r6, r1, lsl #3]\n\t"        /* bx */ \
+    "ldrsh  r1, [r7, r1, lsl #3]\n\t"        /* by */ \
+    "ldrsh  lr, [r6, r2, lsl #3]\n\t"        /* cx */ \
+    "ldrsh  r2, [r7, r2, lsl #3]\n\t"        /* cy */ \
     "sub    r0, r0, r3\n\t" \
     "sub    lr, lr, r3\n\t" \
     "sub    r3, r2, r12\n\t" \
     "mul    r0, r0, r3\n\t"                  /* (bx - ax) (cy - ay) */ \
     "sub    r3, r1, r12\n\t" \
     "mls    r0, lr, r3, r0\n\t"              /* - (cx - ax) (by - ay): signed_area() */ \
-    "cmp    r0, r9\n\t" \
+    "cmp    r0, r8\n\t" \
     "bgt    5f\n\t"                          /* culled (cull_above >= 0: never a zero area) */ \
     "cbz    r0, 6f\n\t"                      /* no area: not drawn */ \
     "cmp    r1, r12\n\t" \
@@ -59,32 +65,32 @@ static_assert(sizeof(Tri) == 6 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVe
     "cmp    r2, r12\n\t" \
     "it     lt\n\t" \
     "movlt  r12, r2\n\t"                     /* the top vertex's y */ \
-    "sub    r12, r12, r7\n\t" \
-    "asr    r12, r12, #4\n\t"                /* its first row */ \
-    "bic    r12, r12, r12, asr #31\n\t"      /* at least 0 */ \
-    "cmp    r12, r8\n\t" \
-    "it     gt\n\t" \
-    "movgt  r12, r8\n\t"                     /* at most the last row */ \
-    "ldrd   r0, r1, [r11, #20]\n\t"          /* band_scale, next */ \
-    "mul    r12, r12, r0\n\t" \
-    "lsr    r12, r12, #20\n\t"               /* its band */ \
-    "ldr    r2, [r11, #28]\n\t" \
-    "ldrh   r0, [r2, r12, lsl #1]\n\t" \
-    "strh   r0, [r1, r4, lsl #1]\n\t"        /* next[t] = head[band] */ \
-    "strh   r4, [r2, r12, lsl #1]\n\t"       /* head[band] = t */ \
-    "b      6f\n" \
-    "5:\n\t" \
-    "add    r10, r10, #1\n" \
+    "ldm    r11, {r0, r1, r2, r3, lr}\n\t"   /* y_lift, v_last, band_scale, head, next */ \
+    "sub    r12, r12, r0\n\t"                /* v */ \
+    "cmp    r12, r1\n\t" \
+    "bhi    4f\n"                            /* v < 0 or v > v_last: clamped */ \
+    "0:\n\t" \
+    "umull  r0, r1, r12, r2\n\t"             /* r1: its band */ \
+    "ldrh   r0, [r3, r1, lsl #1]\n\t" \
+    "strh   r0, [lr, r4, lsl #1]\n\t"        /* next[t] = head[band] */ \
+    "strh   r4, [r3, r1, lsl #1]\n"          /* head[band] = t */ \
     "6:\n\t" \
-    "sub    r5, r5, #6\n\t" \
+    "subs   r4, r4, #1\n\t" \
+    "bpl    1b\n\t" \
+    "b      7f\n" \
+    "4:\n\t" \
+    "bic    r12, r1, r12, asr #31\n\t"       /* 0 below, v_last above */ \
+    "b      0b\n" \
+    "5:\n\t" \
+    "add    r9, r9, #1\n\t" \
     "subs   r4, r4, #1\n\t" \
     "bpl    1b\n\t"
 
 /// bin_triangles()'s loop in Thumb-2: links triangles count - 1
 /// down to 0 as bin_triangles() does and counts the culled ones into d->culled; returns t + 1 for the
 /// first triangle t with a vertex outside a clip plane (bin_triangles() bins it in C++ and goes on from
-/// t), 0 when done. Registers: r4 the triangle, r5 its Tri, r6 the vertices, r7 y_lift, r8 the last row,
-/// r9 cull_above, r10 the culled count, r11 d.
+/// t), 0 when done. Registers: r4 the triangle, r5 its Tri, r6 r7 r10 the vertices' x, y and z, r8
+/// cull_above, r9 the culled count, r11 d.
 HIDER_NAKED inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
@@ -92,43 +98,39 @@ HIDER_NAKED inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
         "subs   r4, r0, #1\n\t"
         "bmi    9f\n\t"                          // no triangle left
         "mov    r11, r1\n\t"
-        "ldm    r11, {r5-r9}\n\t"               // tris, verts, y_lift, last, cull_above
-        "ldr    r10, [r11, #32]\n\t"
-        "add    r0, r4, r4, lsl #1\n\t"
-        "add    r5, r5, r0, lsl #1\n\t"         // tris + 6 t
+        "ldrd   r5, r6, [r11, #20]\n\t"          // tris, verts
+        "ldrd   r8, r9, [r11, #28]\n\t"          // cull_above, culled
+        "add    r0, r0, r0, lsl #1\n\t"
+        "add    r5, r5, r0, lsl #1\n\t"          // tris + 6 (t + 1): pre-decremented
+        "add    r7, r6, #2\n\t"
+        "add    r10, r6, #4\n\t"
         "ldr    r0, [r11, #36]\n\t"
         "cmp    r0, #0\n\t"
         "bne    3f\n"                            // every vertex projected: the loop without the clip test
         "1:\n\t"
-        "ldrh   r0, [r5]\n\t"
+        "ldrh   r0, [r5, #-6]!\n\t"
         "ldrh   r1, [r5, #2]\n\t"
         "ldrh   r2, [r5, #4]\n\t"
-        "add    r0, r6, r0, lsl #3\n\t"
-        "add    r1, r6, r1, lsl #3\n\t"
-        "add    r2, r6, r2, lsl #3\n\t"
-        "ldr    r3, [r0, #4]\n\t"
+        "ldr    r3, [r10, r0, lsl #3]\n\t"
         "cbz    r3, 8f\n\t"                      // z = 0: outside a clip plane
-        "ldr    r3, [r1, #4]\n\t"
+        "ldr    r3, [r10, r1, lsl #3]\n\t"
         "cbz    r3, 8f\n\t"
-        "ldr    r3, [r2, #4]\n\t"
+        "ldr    r3, [r10, r2, lsl #3]\n\t"
         "cbnz   r3, 2f\n"
         "8:\n\t"                                 // back to C++ with t + 1
-        "str    r10, [r11, #32]\n\t"
+        "str    r9, [r11, #32]\n\t"
         "add    r0, r4, #1\n\t"
         "pop    {r4-r11, pc}\n"
         HIDER_V7M_BIN_LINK
         "b      7f\n"
         "3:\n\t"
         "1:\n\t"
-        "ldrh   r0, [r5]\n\t"
+        "ldrh   r0, [r5, #-6]!\n\t"
         "ldrh   r1, [r5, #2]\n\t"
-        "ldrh   r2, [r5, #4]\n\t"
-        "add    r0, r6, r0, lsl #3\n\t"
-        "add    r1, r6, r1, lsl #3\n\t"
-        "add    r2, r6, r2, lsl #3\n"
+        "ldrh   r2, [r5, #4]\n"
         HIDER_V7M_BIN_LINK
         "7:\n\t"
-        "str    r10, [r11, #32]\n"
+        "str    r9, [r11, #32]\n"
         "9:\n\t"
         "mov    r0, #0\n\t"
         "pop    {r4-r11, pc}\n");

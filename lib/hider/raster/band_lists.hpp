@@ -105,14 +105,14 @@ __attribute__((always_inline)) inline ScreenXY screen_xy(const ScreenVertex& v) 
 
 /// Links every drawable triangle of the mesh (non-zero area, not culled) into the list of the band
 /// holding its first row, back to front so each list runs in mesh order; counts culled, clipped and outside triangles as draw_zbuffer()
-/// does on a whole frame. band_scale = ceil(2^20 / rows): band = first row * band_scale >> 20, exact for
-/// rows of frames up to 1,024. Out of line with few live values, so the loop stays in registers. kAsm: on
+/// does on a whole frame. `rows`: rows per band (band_scale = ceil(2^20 / rows): band = first row *
+/// band_scale >> 20, exact for frames of up to 1,024 rows). Out of line with few live values, so the loop stays in registers. kAsm: on
 /// ARMv7-M the whole triangles go through bin_triangles_v7m() (false keeps it out: kernelcheck compares
 /// both), without a clip test when every vertex is projected (all_projected()); returns that flag there
 /// for the band loop (0 elsewhere).
 template <bool kAsm = true>
 __attribute__((noinline)) uint32_t bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
-                                                 const BandBounds& bb, int32_t height, uint32_t band_scale, uint16_t* next,
+                                                 const BandBounds& bb, int32_t height, int32_t rows, uint16_t* next,
                                                  uint16_t* head, FrameStats& st) {
     const ScreenVertex* const vp = verts.data();
     // first_row_in_frame() with the rounding folded into the origin: rows from (y - y_lift) >> 4, y_lift
@@ -120,12 +120,14 @@ __attribute__((noinline)) uint32_t bin_triangles(const View& view, const Mesh& m
     const int32_t y_lift = bb.y_origin - (kSubpixel - 1), last = height - 1;
     // Culled: area > cull_above (0 when culling, else above every area).
     const int32_t cull_above = cull ? 0 : INT32_MAX;
+    const uint32_t band_scale = ((uint32_t{1} << 20) + static_cast<uint32_t>(rows) - 1) / static_cast<uint32_t>(rows);
     uint32_t culled = 0;
     const ClippedBinning clipped{view, mesh, verts, cull, bb, height, st};
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
     if constexpr (kAsm) {
         const uint32_t projected = all_projected(vp, mesh.positions.size());  // one scan a frame
-        BinLoopArm d{mesh.tris.data(), vp, y_lift, last, cull_above, band_scale, next, head, 0, projected};
+        BinLoopArm d{y_lift, height * kSubpixel - 1, band_scale_v(static_cast<uint32_t>(rows)), head, next,
+                     mesh.tris.data(), vp, cull_above, 0, projected};
         for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); (i = bin_triangles_v7m(i, &d)) != 0;) {
             --i;  // a vertex of triangle i lies outside a clip plane
             const int32_t first = first_row_clipped(clipped, i);

@@ -78,8 +78,7 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
     for (size_t b = 0; b < bands; ++b) scratch.head[b] = kNoTriangle;
     st.triangles_in = static_cast<uint32_t>(tri_count);
     const BandBounds bb = band_bounds(band_view<Format, Depth>(nullptr, nullptr, buffers.width, height, 0, height));
-    const uint32_t band_scale = ((uint32_t{1} << 20) + static_cast<uint32_t>(rows) - 1) / static_cast<uint32_t>(rows);
-    const uint32_t projected = bin_triangles<kAsmLoop>(view, mesh, verts, opt.cull, bb, height, band_scale,
+    const uint32_t projected = bin_triangles<kAsmLoop>(view, mesh, verts, opt.cull, bb, height, rows,
                                                        scratch.next.data(), scratch.head.data(), st);
     BinnedStats local;
     BinnedStats& out = bs != nullptr ? *bs : local;
