@@ -1,7 +1,9 @@
 // Random small scenes drawn band by band, shared by the kernelcheck firmware and its host twin. Each
 // case is a draw case (draw_cases.hpp: a frame up to 24 x 24, 40 random triangles, some clipped), a
-// quarter of its triangles repeating an earlier one so that depths tie, culled or not, drawn by the band
-// renderer (binned.hpp) in bands of 1 to 6 rows, rows 0 to 3 elements longer than the frame's width (the
+// quarter of its triangles repeating an earlier one so that depths tie, every other case with two
+// triangles wholly above or below the frame (place_off_frame()), culled or not, drawn by the band
+// renderer (binned.hpp; a quarter shaded by depth: the generic bands) in bands of 1 to 6 rows, rows 0 to
+// 3 elements longer than the frame's width (the
 // band buffer's stride: the pads must stay as they are), with 0 to 5 carried slots: set-ups are carried,
 // resumed, refused a slot and set up again. run_band_cases() draws each case through `draw` (on ARMv7-M
 // with the assembly band loop) and `twin` (the C++ loop) and digests every band, the frame's statistics
@@ -25,6 +27,25 @@ struct BandSetup {
     hider::BinnedScratch scratch;
 };
 
+/// Moves the last three positions of c wholly above (or below) the frame, in front of the eye and wide
+/// of its side columns but inside the guard band, and links two triangles to them, one of each winding:
+/// binned into the first (last) band by the clamp of their first row, where they find no row.
+inline void place_off_frame(Rng& rng, DrawCase& c, bool below) {
+    const hider::View& v = c.view;
+    const int64_t w = v.near_raw + static_cast<int64_t>(rng.next() % static_cast<uint32_t>(v.far_raw - v.near_raw + 1));
+    const int32_t side = below ? 1 : -1;
+    const int32_t reach_x = 8 * v.width + 16;  // subpixels from the frame's centre: past its side columns
+    const int32_t off_y = 8 * v.height + 16;   // past its top or bottom row
+    const int32_t sx[3] = {-reach_x - rng.range(0, 64), reach_x + rng.range(0, 64), rng.range(-reach_x, reach_x)};
+    const int32_t sy[3] = {side * (off_y + rng.range(0, 64)), side * (off_y + rng.range(0, 64)),
+                           side * (off_y + 64 + rng.range(0, 256))};
+    for (int k = 0; k < 3; ++k)
+        c.p[kVertexBatch - 3 + k] = world_of(v, int64_t{sx[k]} * 256 * w / v.k_q8, int64_t{-sy[k]} * 256 * w / v.k_q8, w);
+    constexpr uint16_t a = kVertexBatch - 3, b = kVertexBatch - 2, d = kVertexBatch - 1;
+    c.tris[rng.next() % kDrawTriangles] = {{a, b, d}};
+    c.tris[rng.next() % kDrawTriangles] = {{a, d, b}};
+}
+
 /// Draws every case through `draw` and `twin` (functions of (view, mesh, verts, setup, done, binned
 /// stats) returning the FrameStats), digests into out[kBandCases]; returns the first case whose digests
 /// differ, or -1.
@@ -47,6 +68,7 @@ int run_band_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
             const uint32_t to = 1 + rng.next() % (kDrawTriangles - 1);
             c.tris[to] = c.tris[rng.next() % to];
         }
+        if ((i & 1) != 0) place_off_frame(rng, c, (i & 2) != 0);
         c.cull = (rng.next() & 1u) != 0;  // half of them draw back faces too
         (void)hider::project_vertices(c.view, {c.p, kVertexBatch}, {verts, kVertexBatch});
         hider::Mesh mesh;
@@ -61,6 +83,7 @@ int run_band_cases(Draw&& draw, Twin&& twin, Buffers& b, uint32_t* out) {
         s.buffers.stride = c.view.width + rng.range(0, 3);  // 0 to 3 spare elements a row, never written
         s.opt.cull = c.cull;
         s.opt.base = {static_cast<uint8_t>(rng.next()), static_cast<uint8_t>(rng.next()), static_cast<uint8_t>(rng.next())};
+        if (i % 8 == 3 || i % 8 == 5) s.opt.shade = hider::Shade::depth;  // the generic bands, off-frame triangles below, above
         const size_t bands = static_cast<size_t>((c.view.height + s.buffers.y1 - 1) / s.buffers.y1);
         s.scratch = {{next, kDrawTriangles}, {head, bands}, {carried, slot_count}, {slots, 3 * slot_count}};
         uint32_t digests[2];
