@@ -69,16 +69,18 @@ public:
     KernelBands(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
                 const FrameView<Rgb565Format, uint16_t>& buffers, const DrawOptions& opt, const BinnedScratch& scratch,
                 BinnedStats& out, FrameStats& st, uint32_t projected)
-        : view_(view), mesh_(mesh), verts_(verts), buffers_(buffers), opt_(opt), shading_(view, opt), out_(out), st_(st),
+        : view_(view), mesh_(mesh), verts_(verts), opt_(opt), shading_(view, opt), out_(out), st_(st),
           next_(scratch.next.data()), head_(scratch.head.data()), pool_(scratch.carried.data()),
           free_base_(scratch.slots.data() + 2 * scratch.carried.size()),
           kband_(kernel_band(buffers.width, buffers.height, 0, buffers.height, buffers.stride * 2)),
           bt_{{static_cast<intptr_t>(reinterpret_cast<uintptr_t>(buffers.color) - reinterpret_cast<uintptr_t>(buffers.depth)),
                kband_.stride_bytes},
               buffers.depth, 0},
-          io_{&kband_, 0, &spare_} {
+          io_{&kband_, 0, &spare_},
+          band_(buffers),  // band() sets the rows
+          band_bb_(band_bounds(buffers)) {
         const uint8_t capacity = static_cast<uint8_t>(scratch.carried.size());
-        for (uint8_t k = 0; k < capacity; ++k) free_base_[k] = k;
+        for (uint32_t k = 0; k < capacity; ++k) free_base_[k] = static_cast<uint8_t>(k);
         cs_ = {pool_, scratch.slots.data(), scratch.slots.data(), scratch.slots.data() + capacity, free_base_ + capacity};
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
         use_asm_ = kAsmLoop && opt.shade == Shade::headlight && !mesh.normals.empty();
@@ -99,17 +101,46 @@ public:
         loop_.pool = pool_;
         loop_.free_base = free_base_;
         loop_.projected = projected;
+        loop_.depth = band_.depth;
 #else
         (void)projected;
 #endif
     }
 
-    /// Draws band b (rows [y0, y1)) after clearing it; false when done() refuses it.
+    /// Draws the frame's bands of `rows` rows (the last one may be shorter), each after clearing it to
+    /// `background`; false when done() refuses one (the bands before it drawn and counted). Out of line:
+    /// one call a frame, the band loop's values in registers, and draw_binned()'s stack frame as small as
+    /// without it (GCC inlines the constructor there).
     template <class BandDone>
-    bool band(size_t b, size_t bands, int32_t y0, int32_t y1, Rgb background, BandDone& done) {
-        band_ = band_in(buffers_, y0, y1);  // buffers' stride: the kernel's rows (kband_) are buffers' rows too
+    __attribute__((noinline)) bool draw(int32_t rows, int32_t height, Rgb background, BandDone& done) {
+        const size_t bands = static_cast<size_t>((height + rows - 1) / rows);
+        color_word_ = uint32_t{Rgb565Format::pack(background)} * 0x00010001u;
+        packed_ = band_.stride == band_.width &&
+                  ((reinterpret_cast<uintptr_t>(band_.color) | reinterpret_cast<uintptr_t>(band_.depth)) & 3u) == 0;
+        bool ok = true;
+        for (size_t b = 0; b < bands && ok; ++b) {
+            const int32_t y0 = static_cast<int32_t>(b) * rows;
+            ok = band(b, bands, y0, min(height, y0 + rows), background, done);
+        }
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+        st_.triangles_drawn += loop_.drawn;  // the assembly loop's, counted up by every band
+#endif
+        return ok;
+    }
+
+private:
+    /// Draws band b (rows [y0, y1)) after clearing it to `background` (the same in every band); false
+    /// when done() refuses it. In draw()'s loop.
+    template <class BandDone>
+    __attribute__((always_inline)) bool band(size_t b, size_t bands, int32_t y0, int32_t y1, const Rgb& background,
+                                             BandDone& done) {
+        // band_in(buffers, y0, y1) and its band_bounds(): only the rows change from band to band (buffers'
+        // stride: the kernel's rows (kband_) are buffers' rows too).
+        band_.y0 = y0;
+        band_.y1 = y1;
+        band_bb_.y_first = y0 * kSubpixel + band_bb_.y_origin;
+        band_bb_.y_last = (y1 - 1) * kSubpixel + band_bb_.y_origin;
         clear_band(background);
-        band_bb_ = band_bounds(band_);
         kband_.row_from = y0;
         bt_.row_end = y1;
         count_from_ = y0 == 0 ? INT32_MIN : y0;
@@ -119,14 +150,12 @@ public:
         uint8_t* const band_nxt = cs_.nxt;
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
         if (use_asm_) {  // the band in assembly but for the listed triangles it hands back
-            loop_.depth = band_.depth;
             loop_.y0 = y0;
             loop_.y1 = y1;
             kband_.depth_origin = reinterpret_cast<uintptr_t>(band_.depth) -
                                   static_cast<uintptr_t>(y0) * static_cast<uintptr_t>(kband_.stride_bytes);
             kband_.stop = y1;
             loop_.count_from = count_from_;
-            loop_.drawn = 0;
             loop_.cur = cs_.cur;
             loop_.cur_end = cs_.cur_end;
             for (uint32_t t = head_[b];;) {
@@ -143,7 +172,6 @@ public:
                 else new_triangle(tri);
             }
             cs_.cur = loop_.cur;
-            st_.triangles_drawn += loop_.drawn;
         } else
 #endif
         {
@@ -164,18 +192,16 @@ public:
         return done(band_);
     }
 
-private:
     /// clear() of the band: whole words straight to fill_words() when the rows are packed, both buffers
-    /// word-aligned and the band holds an even number of pixels (clear() and fill() cost a band more
-    /// around the stores).
-    void clear_band(Rgb background) {
+    /// word-aligned (packed_) and the band holds an even number of pixels (clear() and fill() cost a band
+    /// more around the stores).
+    void clear_band(const Rgb& background) {
         const size_t n = static_cast<size_t>(band_.width) * static_cast<size_t>(band_.rows());
-        if ((n & 1u) != 0 || band_.stride != band_.width ||
-            ((reinterpret_cast<uintptr_t>(band_.color) | reinterpret_cast<uintptr_t>(band_.depth)) & 3u) != 0) {
+        if ((n & 1u) != 0 || !packed_) {
             clear(band_, background);
             return;
         }
-        fill_words(band_.color, n / 2, uint32_t{Rgb565Format::pack(background)} * 0x00010001u);
+        fill_words(band_.color, n / 2, color_word_);
         fill_words(band_.depth, n / 2, 0xFFFFFFFFu);
     }
 
@@ -288,7 +314,6 @@ private:
     const View& view_;
     const Mesh& mesh_;
     Span<const ScreenVertex> verts_;
-    const FrameView<Rgb565Format, uint16_t>& buffers_;
     const DrawOptions& opt_;
     const FaceShading shading_;
     BinnedStats& out_;
@@ -302,12 +327,14 @@ private:
     KernelBandTarget bt_;
     KernelTriangle spare_;  // a set-up without a free slot: drawn here, set up again in the next band
     KernelSetupIo io_;
-    FrameView<Rgb565Format, uint16_t> band_{};
-    BandBounds band_bb_{};
+    FrameView<Rgb565Format, uint16_t> band_;  // the band's rows of buffers
+    BandBounds band_bb_;                      // band_bounds(band_)
+    uint32_t color_word_ = 0;  // two background pixels
     uint16_t* next_head_ = nullptr;
     uint16_t insert_prev_ = kNoTriangle;
     int32_t count_from_ = 0;  // a set-up counts as drawn in this band from this top row on (INT32_MIN: band 0)
     bool continues_ = false;
+    bool packed_ = false;  // clear_band(): rows packed and both buffers word-aligned
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
     bool use_asm_ = false;
     BandLoopArm loop_{};

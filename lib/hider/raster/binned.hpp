@@ -85,13 +85,7 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
     if constexpr (is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2) {
         if (opt.shade != Shade::depth) {
             KernelBands<kAsmLoop> kb(view, mesh, verts, buffers, opt, scratch, out, st, projected);
-            for (size_t b = 0; b < bands; ++b) {
-                const int32_t y0 = static_cast<int32_t>(b) * rows;
-                if (!kb.band(b, bands, y0, min(height, y0 + rows), background, done)) {
-                    st.status = Status::invalid_argument;
-                    break;
-                }
-            }
+            if (!kb.draw(rows, height, background, done)) st.status = Status::invalid_argument;
             return st;
         }
     }
