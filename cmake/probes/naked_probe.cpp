@@ -17,7 +17,7 @@ using namespace hider;
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 #define HIDER_NAKED_ROUTINES                                                                           \
-    X(kernel_setup_v7m) X(draw_flat_v7m) X(bin_triangles_v7m) X(project_common_v7m)  \
+    X(kernel_setup_v7m) X(kernel_draw_v7m) X(draw_flat_v7m) X(bin_triangles_v7m) X(project_common_v7m)  \
     X(run_kernel_triangle_v7m) X(draw_band_v7m) X(detail::fill_words_v7m)
 #elif defined(__ARM_ARCH_6M__)
 #define HIDER_NAKED_ROUTINES                                                                           \
