@@ -201,7 +201,7 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
     constexpr uint32_t kFront = 0x80000000u, kPlane = 0x40000000u, kIndex = kPlane - 1;
     const FaceShading shading(view, opt);
     const BandBounds bb = band_bounds(frame);
-    const PreparedTransform to_view(view.to_view);
+    const VertexProjector project(view);
     const BspFaces faces = bsp_walk_faces(view, eye, tree, opt, stack);
     size_t top = 0;
     uint32_t next = 0;  // the node to enter, or kBspNone: resume the top of the stack
@@ -253,7 +253,7 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
                 }
                 const uint32_t face = tri.face & kBspFaceMask;
                 for (uint32_t v : tri.v)
-                    if (unprojected(verts[v])) project_vertex(view, to_view, tree.vertices[v], verts[v]);
+                    if (unprojected(verts[v])) project(tree.vertices[v], verts[v]);
                 for_each_clipped(view, tree.vertices, Span<const ScreenVertex>{verts.data(), verts.size()}, tri.v[0], tri.v[1], tri.v[2], st,
                                  [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
                                      draw_node_triangle<kFrontToBack>(a, b, c, n, back, front, face, frame, bb, opt, shading, cov, st);

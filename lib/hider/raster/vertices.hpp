@@ -211,6 +211,37 @@ inline void project_vertex(const View& view, const PreparedTransform& to_view, c
     detail::project_one(view, p, out);
 }
 
+/// project_vertex() for one view and many single positions, prepared once: on ARMv7-M each position goes
+/// through the assembly vertex loop (project_vertices()'s, one position a call), the rare ones it refuses
+/// the general way. For walks that project only what they draw (draw_bsp()); same vertices as
+/// project_vertex().
+class VertexProjector {
+public:
+    explicit VertexProjector(const View& view)
+        : view_(view), to_view_(view.to_view)
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+          , prep_(detail::vertex_prep_v7m(view))
+#endif
+    {
+    }
+    /// Out of line: a walk's loop keeps its registers around the call.
+    __attribute__((noinline)) void operator()(const Vec3q16& position, ScreenVertex& out) const {
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+        if (project_common_v7m(&prep_, &position, &out, &position + 1) != &position + 1)
+            detail::project_one(view_, to_view_point(to_view_, position), out);
+#else
+        project_vertex(view_, to_view_, position, out);
+#endif
+    }
+
+private:
+    const View& view_;
+    PreparedTransform to_view_;
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    detail::VertexPrepV7m prep_;
+#endif
+};
+
 /// Marks every vertex as not projected yet (x = z = 0, which project_vertex() never gives: a drawable
 /// vertex has z != 0, an outside one x != 0), for a walk that projects on first use (draw_bsp()): once
 /// per frame, before the first band. All of each vertex goes to zero, two words at a time (fill_words()).
