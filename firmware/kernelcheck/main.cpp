@@ -3,6 +3,8 @@
 //   assembly) and run_kernel_triangle_portable(), two calls each: same buffers and final state.
 // - kernelcheck::kSetupCases triangle set-ups (setup_cases.hpp) through kernel_setup() (the Thumb-2 set-up
 //   on ARMv7-M) and kernel_setup_portable(): same outcome and kernel fields for every case.
+// - On ARMv7-M, kernelcheck::kDivrCases quotients through the set-up's rounded 64/32 division alone
+//   against div_round(), with numerators built to need the long division's digit corrections.
 // - On ARMv7-M, kernelcheck::kSetupCases set-ups of narrow frames through kernel_draw_v7m() (set-up and
 //   rows in one call) and through kernel_setup_portable() and run_kernel_triangle_portable(), with the
 //   band's stop above, inside and below the rows: same outcome, record and buffers (on the chip only).
@@ -29,6 +31,29 @@
 #include "semihost/semihost.hpp"
 
 namespace {
+
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+/// The Thumb-2 set-up's rounded quotient (its hider_divr and hider_divr_far macros) on its own:
+/// n = hi:lo, d in r2; INT32_MIN where the set-up would call the triangle generic.
+HIDER_NAKED int32_t divr_v7m(uint32_t, uint32_t, uint32_t) {
+    using namespace hider;  // the operands' names
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "push   {r4-r11, lr}\n\t"
+        "mov    r9, r2\n\t"
+        "mov    r3, r1\n\t"
+        HIDER_V7M_SETUP_MACROS
+        "hider_divr r0, r3, 60, 61\n\t"
+        "pop    {r4-r11, pc}\n"
+        "93:\n\t"
+        "mov    r0, #0x80000000\n\t"
+        "pop    {r4-r11, pc}\n\t"
+        "hider_divr_far r0, r3, 60, 61\n\t"
+        HIDER_V7M_SETUP_PURGE
+        :
+        : HIDER_V7M_SETUP_OPERANDS);
+}
+#endif
 
 constexpr int kDrawAt = kernelcheck::kCases + kernelcheck::kSetupCases + kernelcheck::kVertexCases;
 constexpr int kBandAt = kDrawAt + kernelcheck::kDrawCases;
@@ -67,6 +92,13 @@ int main() {
         return 1;
     }
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+    const int divr_case = kernelcheck::run_divr_cases(divr_v7m);
+    if (divr_case >= 0) {
+        sh::print("kernelcheck: the set-up's rounded quotient differs from div_round in case ");
+        sh::print_u32(static_cast<uint32_t>(divr_case));
+        sh::print("\n");
+        return 1;
+    }
     const int draw_setup_case = kernelcheck::run_setup_draw_cases(
         [](const hider::ScreenVertex& a, const hider::ScreenVertex& b, const hider::ScreenVertex& c,
            hider::KernelSetupIo& io) { return static_cast<hider::KernelSetup>(hider::kernel_draw_v7m(&a, &b, &c, &io)); },

@@ -115,6 +115,42 @@ int run_setup_cases(Setup&& setup, Twin&& twin, uint32_t* out) {
     return first_difference;
 }
 
+constexpr int kDivrCases = 200000;
+
+/// The set-up's rounded quotient (n / d rounded half away from zero, |result| < 2^31) against
+/// div_round(): random numerators and divisors of every size, and ones built as q d + r with q's 16-bit
+/// digits and r at their edges and divisors whose low half is near 0 or 0xFFFF, where the long
+/// division's digit estimates need their corrections. `divr` is (lo, hi, d) -> the quotient, or
+/// INT32_MIN when it says the quotient is 2^31 or more. Returns the first case that differs, or -1.
+template <class Divr>
+int run_divr_cases(Divr&& divr) {
+    Rng rng{0xD1A5C0DEu};
+    for (int i = 0; i < kDivrCases; ++i) {
+        uint32_t d = rng.next() >> (rng.next() % 32);
+        if (d == 0) d = 1;
+        if ((i & 3) == 1) d = (d | 0x80000000u) >> (rng.next() % 16);                       // a full top half
+        if ((i & 3) == 2) d = ((rng.next() | 0x8000u) << 16 | (rng.next() % 3 == 0 ? 0xFFFFu : rng.next() % 4)) >> (rng.next() % 16);
+        if (d == 0) d = 1;
+        uint64_t q = (uint64_t{rng.next()} << 32 | rng.next()) >> (33 + rng.next() % 32);  // below 2^31
+        if ((i & 7) >= 4) {                                                                 // digits at their edges
+            const uint32_t edges[] = {0u, 1u, 0x7FFEu, 0x7FFFu, 0xFFFEu, 0xFFFFu};
+            q = uint64_t{edges[rng.next() % 6] & 0x7FFFu} << 16 | edges[rng.next() % 6];
+        }
+        uint64_t r = rng.next() % d;
+        if ((i & 1) != 0) r = (rng.next() & 1u) != 0 ? d - 1 : d / 2;
+        const uint64_t m = q * d + r;
+        const int64_t n = (rng.next() & 1u) != 0 ? -static_cast<int64_t>(m) : static_cast<int64_t>(m);
+        const int64_t want = hider::div_round(n, static_cast<int64_t>(d));
+        const int32_t got = divr(static_cast<uint32_t>(static_cast<uint64_t>(n)), static_cast<uint32_t>(static_cast<uint64_t>(n) >> 32), d);
+        if (want >= 2147483648 || want <= -2147483648) {
+            if (got != INT32_MIN) return i;
+        } else if (got != want) {
+            return i;
+        }
+    }
+    return -1;
+}
+
 /// Digest of both buffers of `b`.
 inline uint32_t buffers_digest(const Buffers& b) {
     Fnv fnv;

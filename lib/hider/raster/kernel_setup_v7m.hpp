@@ -43,18 +43,53 @@ namespace hider {
     "eor    \\lo, r2, r11\n\t"                                                                      \
     "sub    \\lo, \\lo, r11\n\t"                                                                    \
     ".endm\n\t"                                                                                     \
-/* The large-divisor quotient of hider_divr, after the exits: back to its label `back` with q in r2. */ \
-    ".macro hider_divr_far lo, hi, far, back\n"                                                     \
-    "\\far:\n\t"                                                                                    \
-    "push   {r0, r3, lr}\n\t"                                                                       \
-    "mov    r0, \\lo\n\t"                                                                           \
-    "mov    r1, \\hi\n\t"                                                                           \
-    "mov    r2, r9\n\t"                                                                             \
-    "bl     hider_kernel_udiv64\n\t"                                                                \
-    "mov    r2, r0\n\t"                                                                             \
-    "pop    {r0, r3, lr}\n\t"                                                                       \
-    "b      \\back\\()b\n\t"                                                                        \
-    ".endm\n\t"                                                                                     \
+/* The large-divisor quotient of hider_divr, after the exits: m / d in two 16-bit digits of the normalised */ \
+/* divisor (Hacker's Delight divlu: each digit a udiv by its top half; the high one, below 2^15 as q < 2^31, */   \
+/* needs one correction at most, the low one two), q into r2, back to label `back`; r4-r7 saved around */       \
+/* it, r1 r12 and lo hi clobbered. Local labels 65, 69, 70. */                                              \
+    ".macro hider_divr_far lo, hi, far, back\n"                                                               \
+    "\\far:\n\t"                                                                                              \
+    "push   {r4-r7}\n\t"                                                                                      \
+    "clz    r12, r9\n\t"                  /* s */                                                             \
+    "lsl    r1, r9, r12\n\t"              /* v = d << s */                                                    \
+    "lsl    \\hi, \\hi, r12\n\t"                                                                              \
+    "rsb    r2, r12, #32\n\t"                                                                                 \
+    "lsr    r2, \\lo, r2\n\t"             /* lo >> (32 - s): 0 for s = 0 */                                   \
+    "orr    \\hi, \\hi, r2\n\t"           /* un32 */                                                          \
+    "lsl    r5, \\lo, r12\n\t"            /* un10 */                                                          \
+    "lsr    r12, r1, #16\n\t"             /* vn1 */                                                           \
+    "uxth   r4, r1\n\t"                   /* vn0 */                                                           \
+    "udiv   r2, \\hi, r12\n\t"            /* q1 */                                                            \
+    "mls    r6, r2, r12, \\hi\n"          /* rhat */                                                          \
+    "mul    r7, r2, r4\n\t"                                                                                   \
+    "lsr    \\lo, r5, #16\n\t"                                                                                \
+    "orr    \\lo, \\lo, r6, lsl #16\n\t"  /* rhat b + un1 */                                                  \
+    "cmp    r7, \\lo\n\t"                                                                                     \
+    "it     hi\n\t"                                                                                           \
+    "subhi  r2, r2, #1\n"                 /* one correction at most: q < 2^31 keeps q1 <= 2^15 */             \
+    "lsr    r7, r5, #16\n\t"                                                                                  \
+    "add    r7, r7, \\hi, lsl #16\n\t"                                                                        \
+    "mls    r7, r2, r1, r7\n\t"           /* un21 = un32 b + un1 - q1 v */                                    \
+    "udiv   \\hi, r7, r12\n\t"            /* q0 */                                                            \
+    "mls    r6, \\hi, r12, r7\n"          /* rhat */                                                          \
+    "69:\n\t"                                                                                                 \
+    "cmp    \\hi, #0x10000\n\t"                                                                               \
+    "bhs    70f\n\t"                                                                                          \
+    "mul    \\lo, \\hi, r4\n\t"                                                                               \
+    "uxth   r7, r5\n\t"                                                                                       \
+    "orr    r7, r7, r6, lsl #16\n\t"      /* rhat b + un0 */                                                  \
+    "cmp    \\lo, r7\n\t"                                                                                     \
+    "bls    65f\n"                                                                                            \
+    "70:\n\t"                                                                                                 \
+    "sub    \\hi, \\hi, #1\n\t"                                                                               \
+    "add    r6, r6, r12\n\t"                                                                                  \
+    "cmp    r6, #0x10000\n\t"                                                                                 \
+    "blo    69b\n"                                                                                            \
+    "65:\n\t"                                                                                                 \
+    "orr    r2, \\hi, r2, lsl #16\n\t"    /* q = q1 b + q0 */                                                 \
+    "pop    {r4-r7}\n\t"                                                                                      \
+    "b      \\back\\()b\n\t"                                                                                  \
+    ".endm\n\t"                                                                                               \
 /* Walker (edge.hpp), inline: in r5 xu, r7 yu, r8 xl, r9 yl, r3 row; out r0 px, r1 g - a, r2 a, */ \
 /* r3 m, r12 q (local labels 81..89). */                                                           \
     ".macro hider_walk\n\t"                                                                        \
