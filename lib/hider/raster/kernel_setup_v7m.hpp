@@ -305,10 +305,9 @@ namespace hider {
     "smull  r1, r2, r0, r5\n\t"           /* z_ref = z0 + round((dzdx ox + dzdy oy) / 16) */         \
     "smlal  r1, r2, r10, r7\n\t"                                                                     \
     "asr    r11, r2, #31\n\t"                                                                        \
-    "adds   r1, r1, #8\n\t"                                                                          \
-    "adc    r2, r2, #0\n\t"                                                                          \
+    "add    r11, r11, #8\n\t"            /* 8, less 1 below zero: halves away from zero */          \
     "adds   r1, r1, r11\n\t"                                                                         \
-    "adc    r2, r2, r11\n\t"                                                                         \
+    "adc    r2, r2, #0\n\t"                                                                          \
     "lsr    r1, r1, #4\n\t"                                                                          \
     "orr    r1, r1, r2, lsl #28\n\t"                                                                 \
     "eor    r8, r8, #0x80000000\n\t"                                                                 \
