@@ -11,9 +11,10 @@ namespace hider {
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 /// The Thumb-2 set-up's text, shared by kernel_setup_v7m() and kernel_draw_v7m(): HIDER_V7M_SETUP_MACROS
 /// (the assembler macros below), HIDER_V7M_SETUP (from the entry to the complete record: on to local label
-/// 16 without a lower short edge in [y0, end), to 17 with one; r4 the band, r6 the record), HIDER_V7M_SETUP_EXITS (labels 90..93), HIDER_V7M_SETUP_PURGE
-/// and the operands HIDER_V7M_SETUP_OPERANDS. Stack at 16: the plane (5 words), the rows (10: mid, odd,
-/// y0, xt, yt, xm, ym, xb, yb, y1), the vertices and |area| (4), then the nine saved registers.
+/// 16 without a lower short edge in [y0, end), to 17 with one and lr = end; r4 the band, r6 the record),
+/// HIDER_V7M_SETUP_EXITS (labels 90..93, then the large-divisor quotients), HIDER_V7M_SETUP_PURGE and the
+/// operands HIDER_V7M_SETUP_OPERANDS. Stack at 16: the plane (5 words), the rows (10: mid, odd, y0, xt,
+/// yt, xm, ym, xb, yb, y1), the vertices and |area| (4), then the nine saved registers.
 #define HIDER_V7M_SETUP_MACROS \
 /* Rounded quotient of the signed 64-bit \hi:\lo by d = r9 into \lo (|q| < 2^31, else generic); */ \
 /* scratch r1 r2 r11 r12. Small divisors: two 16-bit digits, one udiv each. */                     \
@@ -359,8 +360,8 @@ namespace hider {
     "ldr    r2, [sp, #28]\n\t"            /* y0 */                                                   \
     "cmp    r2, r3\n\t"                                                                              \
     "bge    16f\n\t"                      /* y0 >= mid: no upper part */                             \
-    "ldr    r2, [sp, #56]\n\t"            /* y1 */                                                   \
-    "cmp    r3, r2\n\t"                                                                              \
+    "ldr    lr, [sp, #56]\n\t"            /* y1, kept in lr for label 17 (the walker leaves it) */   \
+    "cmp    r3, lr\n\t"                                                                              \
     "bge    16f\n\t"                      /* mid >= y1: the lower edge never runs */                 \
     "ldrd   r5, r7, [sp, #40]\n\t"        /* xm ym */                                                \
     "ldrd   r8, r9, [sp, #48]\n\t"        /* xb yb */                                                \
@@ -369,10 +370,10 @@ namespace hider {
     "strd   r8, r1, [r6, %[next_x]]\n\t"                                                             \
     "ldr    r8, [r4, %[stride]]\n\t"                                                                 \
     "add    r8, r8, r12, lsl #1\n\t"      /* step = 2 q + stride */                                  \
-    "add    lr, r6, %[next_a]\n\t"                                                                   \
-    "stm    lr, {r2, r3, r8}\n\t"                                                                    \
-    "ldr    lr, [sp, #24]\n\t"                                                                       \
-    "cmp    lr, #0\n\t"                                                                              \
+    "add    r9, r6, %[next_a]\n\t"                                                                   \
+    "stm    r9, {r2, r3, r8}\n\t"                                                                    \
+    "ldr    r9, [sp, #24]\n\t"                                                                       \
+    "cmp    r9, #0\n\t"                                                                              \
     "beq    17f\n\t"                                                                                 \
     "ldm    sp, {r1, r2, r3, r5, r7}\n\t" /* the next left edge's depth and depth step */            \
     "sub    r0, r0, r2\n\t"                                                                          \
@@ -473,8 +474,7 @@ HIDER_NAKED inline uint32_t kernel_draw_v7m(const ScreenVertex*, const ScreenVer
         "mov    r8, #-1\n\t"                // rows after a switch: none
         "b      1f\n"
         "17:\n\t"
-        "ldr    r5, [sp, #28]\n\t"          // y0
-        "ldr    lr, [sp, #56]\n\t"          // end
+        "ldr    r5, [sp, #28]\n\t"          // y0; lr = end
         "ldr    r2, [r4, %[b_stop]]\n\t"
         "cmp    r2, lr\n\t"
         "it     gt\n\t"
