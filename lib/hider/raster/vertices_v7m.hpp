@@ -9,203 +9,184 @@ namespace hider {
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 namespace detail {
-/// Per-frame constants of the Thumb-2 vertex loop (the layout is its contract).
+/// Per-frame constants of the Thumb-2 vertex loop (the layout is its contract). Each row is a rotation
+/// row and the 64-bit sum it starts from (lo, hi), t 2^30, so that floor((start + row . p) / 2^30) is
+/// the coordinate with its translation. Row 2 is negated and starts at 2^30 - 1 - t_z 2^30:
+/// -floor(s / 2^30) = floor((-s + 2^30 - 1) / 2^30), so it gives w = -z.
 struct VertexPrepV7m {
-    int32_t row[3][4];         ///< 0, 16, 32: a rotation row and its translation; row 2 holds -t_z (w = -z)
-    int32_t near_raw;          ///< 48
-    int32_t far_fast;          ///< 52: min(far, 2^30 - 1), project_common()'s w limits in one
-    int32_t k_q8;              ///< 56
-    uint32_t guard;            ///< 60: kGuardBand 256
-    uint32_t scale_lo, scale_hi;  ///< 64, 68: depth_scale_q31
+    int32_t row[3][5];         ///< 0, 20, 40: three rotation entries, start lo, start hi (t)
+    int32_t near_lo;           ///< 60: max(near, kMinNearRaw): w from here ...
+    uint32_t span;             ///< 64: ... to here above it, min(far, 2^30 - 1) (project_common()'s limits)
+    int32_t k_q8;              ///< 68
+    uint32_t guard_lo;         ///< 72: kGuardBand 256 - 128
+    int32_t near_raw;          ///< 76
+    uint32_t z0_lo, z0_hi;     ///< 80, 84: 2 (2^31 scale + 2^30 + kDepthNear 2^31) modulo 2^64
+    uint32_t zs_lo, zs_hi;     ///< 88, 92: -2 scale modulo 2^64 (scale = depth_scale_q31)
 };
-static_assert(offsetof(VertexPrepV7m, near_raw) == 48 && offsetof(VertexPrepV7m, scale_lo) == 64,
+static_assert(offsetof(VertexPrepV7m, near_lo) == 60 && offsetof(VertexPrepV7m, near_raw) == 76 &&
+                  offsetof(VertexPrepV7m, zs_hi) == 92,
               "Thumb-2 vertex loop constants layout");
 static_assert(sizeof(Vec3q16) == 12 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVertex, y) == 2 &&
                   offsetof(ScreenVertex, z) == 4,
               "the Thumb-2 vertex loop's strides");
 
+/// The loop's constants for view v. Where project_common() takes no w (near beyond min(far, 2^30 - 1)),
+/// and for views make_view() does not give (near below 1, a negative k), every position gets
+/// w = near_lo - 1, which the loop refuses.
 inline VertexPrepV7m vertex_prep_v7m(const View& v) {
     VertexPrepV7m p{};
+    const int32_t far_fast = min(v.far_raw, (int32_t{1} << 30) - 1);
+    p.near_lo = max(v.near_raw, kMinNearRaw);
+    const bool none = v.near_raw < 1 || v.k_q8 < 0 || far_fast < p.near_lo;
     const int32_t t[3] = {v.to_view.trans.x.raw(), v.to_view.trans.y.raw(), v.to_view.trans.z.raw()};
     for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) p.row[i][j] = v.to_view.rot.m[i][j].raw();
-        p.row[i][3] = t[i];
+        for (int j = 0; j < 3; ++j) {
+            const uint32_t m = static_cast<uint32_t>(v.to_view.rot.m[i][j].raw());
+            p.row[i][j] = static_cast<int32_t>(i < 2 ? m : none ? 0u : 0u - m);
+        }
+        const int64_t start = i < 2 ? int64_t{t[i]} * (int64_t{1} << 30)
+                              : none ? int64_t{p.near_lo - 1} * (int64_t{1} << 30)
+                                     : (int64_t{1} << 30) - 1 - int64_t{t[2]} * (int64_t{1} << 30);
+        p.row[i][3] = static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(start)));
+        p.row[i][4] = static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(start) >> 32));
     }
-    p.row[2][3] = static_cast<int32_t>(0u - static_cast<uint32_t>(t[2]));
-    p.near_raw = v.near_raw;
-    p.far_fast = min(v.far_raw, (int32_t{1} << 30) - 1);
+    p.span = none ? 0u : static_cast<uint32_t>(far_fast - p.near_lo);
     p.k_q8 = v.k_q8;
-    p.guard = static_cast<uint32_t>(kGuardBand) * 256u;
-    p.scale_lo = static_cast<uint32_t>(v.depth_scale_q31);
-    p.scale_hi = static_cast<uint32_t>(v.depth_scale_q31 >> 32);
+    p.guard_lo = static_cast<uint32_t>(kGuardBand) * 256u - 128u;
+    p.near_raw = v.near_raw;
+    const uint64_t z0 = 2 * ((v.depth_scale_q31 << 31) + (uint64_t{1} << 30) + (uint64_t{kDepthNear} << 31));
+    const uint64_t zs = 0 - 2 * v.depth_scale_q31;
+    p.z0_lo = static_cast<uint32_t>(z0);
+    p.z0_hi = static_cast<uint32_t>(z0 >> 32);
+    p.zs_lo = static_cast<uint32_t>(zs);
+    p.zs_hi = static_cast<uint32_t>(zs >> 32);
     return p;
 }
 }  // namespace detail
 
 /// project_common() (vertices.hpp) in Thumb-2 for positions [p, end) until one it refuses; returns that
-/// one (end when it projected them all), having written the same vertices as project_common(). In
-/// assembly so that the transform's constants and the quotients stay in registers. Per vertex: the transform (three load-multiples of a row and
-/// its translation, nine long multiplies), w against near and min(far, 2^30 - 1), the guard band, the
-/// screen quotients with one division each, n 2^31 / w in two 16-bit digits (ratio_q31()), the depth.
-/// Registers: r0 the constants (+48 after the transform); on the stack p (advanced), out and end.
+/// one (end when it projected them all), having written the same vertices as project_common().
+/// Per vertex, with L = clz(w) (2 <= L <= 23 for near_lo <= w < 2^30) and v = w 2^(L-1) in [2^30, 2^31):
+/// - the transform: three load-multiples of a row and its start, three multiply-accumulates each;
+/// - near_lo <= w <= near_lo + span as one unsigned compare;
+/// - per screen coordinate c (x, and y negated): N = c k + 128 w - [c < 0], so that the rounded quotient
+///   (half away from zero) is floor(N / 256 w); the guard band (|c k| <= kGuardBand 256 w) is
+///   -(w g) - 1 <= N <= w (g + 256) with g = guard_lo, taken from N's high words against w g's (both
+///   inside its half: |hi| < hi(w g)), exactly where they are not;
+/// - d = floor(v / 2^14) in [2^16, 2^17) divides both quotients and n / w: e = N 2^(L-23) / d (signed
+///   division of floor(N / 2^(23-L))) is floor(N / 256 w) or one more, r = floor(N / 256) - e w in
+///   [-w, w) says which;
+/// - u = floor(n 2^31 / w) = floor(n 2^L 2^31 / 2 v) in three signed digits of 15, 14 and 2 bits, each
+///   a quotient by d that is the digit or one more, leaving a remainder in [-v, v); the last one's sign
+///   corrects u (n = w gives 2^31);
+/// - z = kDepthNear + (((2^31 - u) scale + 2^30) >> 31) as the high word of z0 + u zs.
+/// Registers: r0 the constants (+80 during the vertex), r1 p, r2 out, r3 end.
 HIDER_NAKED inline const Vec3q16* project_common_v7m(const detail::VertexPrepV7m*, const Vec3q16*,
                                                                           ScreenVertex*, const Vec3q16*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"
-        "push   {r1, r2, r3}\n\t"              // p, out, end
         "cmp    r1, r3\n\t"
         "beq    9f\n"
         "1:\n\t"
         "ldm    r1!, {r4, r5, r6}\n\t"         // x y z
-        "str    r1, [sp]\n\t"
-        ".irp   res, r1, r2, r3\n\t"            // each row: floor(sum / 2^30) (then + t)
-        "ldm    r0!, {r7, r8, r9, r10}\n\t"
-        "smull  r11, r12, r7, r4\n\t"
-        "smlal  r11, r12, r8, r5\n\t"
-        "smlal  r11, r12, r9, r6\n\t"
-        "lsr    r11, r11, #30\n\t"
-        "orr    r11, r11, r12, lsl #2\n\t"
-        ".ifnc  \\res, r3\n\t"
-        "add    \\res, r11, r10\n\t"           // x, y: + t
-        ".endif\n\t"
+        ".irp   res, r11, r12, lr\n\t"          // X, Y, w: (start + row . p) / 2^30, low word
+        "ldm    r0!, {r7, r8, r9, r10, \\res}\n\t"
+        "smlal  r10, \\res, r7, r4\n\t"
+        "smlal  r10, \\res, r8, r5\n\t"
+        "smlal  r10, \\res, r9, r6\n\t"
+        "lsl    \\res, \\res, #2\n\t"
+        "orr    \\res, \\res, r10, lsr #30\n\t"
         ".endr\n\t"
-        "sub    r3, r10, r11\n\t"               // w = -t_z - floor(sum / 2^30)
-        "ldm    r0, {r7, r8, r9, r10}\n\t"     // near, far_fast, k, guard
-        "cmp    r3, r7\n\t"
-        "blt    8f\n\t"
-        "cmp    r3, r8\n\t"
-        "bgt    8f\n\t"
-        "smull  r4, r5, r1, r9\n\t"            // xk
-        "smull  r6, r11, r2, r9\n\t"           // yk
-        "asr    r1, r5, #31\n\t"               // xk < 0: -1
-        "eor    r4, r4, r1\n\t"
-        "eor    r5, r5, r1\n\t"
-        "subs   r4, r4, r1\n\t"
-        "sbc    r5, r5, r1\n\t"                // |xk|
-        "asr    r2, r11, #31\n\t"
-        "eor    r6, r6, r2\n\t"
-        "eor    r11, r11, r2\n\t"
-        "subs   r6, r6, r2\n\t"
-        "sbc    r11, r11, r2\n\t"              // |yk|
-        "umull  r7, r8, r3, r10\n\t"           // the guard: w kGuardBand 256
-        "cmp    r7, r4\n\t"
-        "sbcs   r12, r8, r5\n\t"
-        "bcc    8f\n\t"                        // |xk| above it
-        "cmp    r7, r6\n\t"
-        "sbcs   r12, r8, r11\n\t"
-        "bcc    8f\n\t"
-        "clz    r7, r3\n\t"                    // leading zeros of w
-        "rsbs   r8, r7, #16\n\t"
-        "it     lt\n\t"
-        "movlt  r8, #0\n\t"                    // s
-        "sub    r9, r3, #1\n\t"
-        "lsr    r9, r9, r8\n\t"
-        "add    r9, r9, #1\n\t"                // W = ceil(w / 2^s)
-        "add    r10, r8, #8\n\t"               // t = s + 8
-        "rsb    r12, r10, #32\n\t"
-        "lsl    lr, r3, #7\n\t"
-        "adds   r4, r4, lr\n\t"
-        "adc    r5, r5, r3, lsr #25\n\t"       // |xk| + 128 w
-        "adds   r6, r6, lr\n\t"
-        "adc    r11, r11, r3, lsr #25\n\t"     // |yk| + 128 w
-        "lsr    lr, r4, r10\n\t"
-        "lsl    r8, r5, r12\n\t"
-        "orr    lr, lr, r8\n\t"
-        "udiv   lr, lr, r9\n\t"                // e
-        "lsr    r4, r4, #8\n\t"
-        "orr    r4, r4, r5, lsl #24\n\t"       // m
-        "mls    r4, lr, r3, r4\n\t"            // m - e w
-        "cmp    r4, r3\n\t"
-        "it     hs\n\t"
-        "addhs  lr, lr, #1\n\t"                // qx
-        "lsr    r4, r6, r10\n\t"
-        "lsl    r8, r11, r12\n\t"
-        "orr    r4, r4, r8\n\t"
-        "udiv   r4, r4, r9\n\t"
-        "lsr    r6, r6, #8\n\t"
-        "orr    r6, r6, r11, lsl #24\n\t"
-        "mls    r6, r4, r3, r6\n\t"
-        "cmp    r6, r3\n\t"
-        "it     hs\n\t"
-        "addhs  r4, r4, #1\n\t"                // qy
-        "eor    lr, lr, r1\n\t"
-        "sub    lr, lr, r1\n\t"                // x: -qx when xk < 0
-        "mvn    r2, r2\n\t"
-        "eor    r4, r4, r2\n\t"
-        "sub    r4, r4, r2\n\t"                // y: -qy unless yk < 0
-        "bfi    lr, r4, #16, #16\n\t"          // x | y << 16
-        "ldr    r8, [r0]\n\t"                  // near
-        "mov    r5, #0x80000000\n\t"           // u = 2^31 on the near plane
-        "cmp    r3, r8\n\t"
-        "ble    7f\n\t"
-        // u = ratio_q31(near, w, leading zeros of w): n 2^31 / w in two 16-bit digits.
-        "lsl    r9, r3, r7\n\t"                // v
-        "lsl    r8, r8, r7\n\t"                // nn
-        "lsr    r10, r9, #16\n\t"              // vn1
-        "uxth   r11, r9\n\t"                   // vn0
-        "lsr    r12, r8, #1\n\t"               // un32
-        "lsl    r8, r8, #31\n\t"
-        "lsr    r8, r8, #16\n\t"               // un1 = (nn & 1) << 15
-        "udiv   r1, r12, r10\n\t"              // q1
-        "mls    r2, r1, r10, r12\n"            // rhat
+        "ldm    r0!, {r4, r5, r6, r7}\n\t"     // near_lo, span, k, g
+        "sub    r8, lr, r4\n\t"
+        "cmp    r8, r5\n\t"
+        "bhi    8f\n\t"                        // w below near_lo or past the span
+        "umull  r4, r5, lr, r7\n\t"            // r5 = hi(w g)
+        "clz    r7, lr\n\t"                    // L
+        "asr    r9, r11, #31\n\t"
+        "adds   r10, r9, lr, lsl #7\n\t"
+        "adc    r9, r9, lr, lsr #25\n\t"
+        "smlal  r10, r9, r11, r6\n\t"          // Nx = X k + 128 w - [X < 0]: r10 lo, r9 hi
+        "asr    r4, r12, #31\n\t"
+        "adds   r11, r4, lr, lsl #7\n\t"
+        "adc    r4, r4, lr, lsr #25\n\t"
+        "smlal  r11, r4, r12, r6\n\t"          // Ny = Y k + 128 w - [Y < 0]: r11 lo, r4 hi
+        "eor    r8, r9, r9, asr #31\n\t"
+        "eor    r12, r4, r4, asr #31\n\t"
+        "orr    r8, r8, r12\n\t"
+        "cmp    r8, r5\n\t"
+        "bhs    7f\n"                          // a high word not inside hi(w g): the exact test
         "2:\n\t"
-        "cmp    r1, #0x10000\n\t"
-        "bhs    3f\n\t"
-        "mul    r6, r1, r11\n\t"
-        "orr    r4, r8, r2, lsl #16\n\t"
-        "cmp    r4, r6\n\t"
-        "bhs    4f\n"                          // q1 vn0 <= rhat 2^16 + un1: q1 holds
-        "3:\n\t"
-        "sub    r1, r1, #1\n\t"
-        "add    r2, r2, r10\n\t"
-        "cmp    r2, #0x10000\n\t"
-        "blo    2b\n"
-        "4:\n\t"
-        "add    r4, r8, r12, lsl #16\n\t"
-        "mls    r4, r1, r9, r4\n\t"            // un21
-        "udiv   r5, r4, r10\n\t"               // q0
-        "mls    r2, r5, r10, r4\n"             // rhat
-        "5:\n\t"
-        "cmp    r5, #0x10000\n\t"
-        "bhs    6f\n\t"
-        "mul    r6, r5, r11\n\t"
-        "cmp    r6, r2, lsl #16\n\t"
-        "bls    61f\n"                         // q0 vn0 <= rhat 2^16: q0 holds
-        "6:\n\t"
-        "sub    r5, r5, #1\n\t"
-        "add    r2, r2, r10\n\t"
-        "cmp    r2, #0x10000\n\t"
-        "blo    5b\n"
-        "61:\n\t"
-        "orr    r5, r5, r1, lsl #16\n"         // u
-        "7:\n\t"
-        "rsb    r5, r5, #0x80000000\n\t"       // 2^31 - u
-        "ldrd   r8, r9, [r0, #16]\n\t"         // depth_scale_q31
-        "umull  r10, r11, r5, r8\n\t"
-        "mla    r11, r5, r9, r11\n\t"
-        "adds   r10, r10, #0x40000000\n\t"
-        "adc    r11, r11, #0\n\t"
-        "lsr    r10, r10, #31\n\t"
-        "orr    r10, r10, r11, lsl #1\n\t"
-        "add    r10, r10, %[dnear]\n\t"        // z
-        "sub    r0, r0, #48\n\t"
-        "ldm    sp, {r1, r2, r12}\n\t"         // p (advanced), out, end
-        "strd   lr, r10, [r2], #8\n\t"
-        "str    r2, [sp, #4]\n\t"
-        "cmp    r1, r12\n\t"
+        "rsb    r5, r7, #23\n\t"               // 23 - L
+        "add    r6, r7, #9\n\t"                // 9 + L
+        "lsr    r8, r10, r5\n\t"
+        "lsl    r12, r9, r6\n\t"
+        "orr    r8, r8, r12\n\t"               // floor(Nx / 2^(23-L))
+        "lsr    r12, r11, r5\n\t"
+        "lsl    r5, r4, r6\n\t"
+        "orr    r12, r12, r5\n\t"              // floor(Ny / 2^(23-L))
+        "sub    r5, r7, #1\n\t"
+        "lsl    r5, lr, r5\n\t"                // v
+        "lsr    r6, r5, #14\n\t"               // d
+        "sdiv   r8, r8, r6\n\t"                // ex
+        "sdiv   r12, r12, r6\n\t"              // ey
+        "lsr    r10, r10, #8\n\t"
+        "orr    r10, r10, r9, lsl #24\n\t"
+        "mls    r10, r8, lr, r10\n\t"          // floor(Nx / 256) - ex w
+        "add    r8, r8, r10, asr #31\n\t"      // x
+        "lsr    r11, r11, #8\n\t"
+        "orr    r11, r11, r4, lsl #24\n\t"
+        "mls    r11, r12, lr, r11\n\t"
+        "rsb    r12, r12, r11, lsr #31\n\t"    // y = -floor(Ny / 256 w)
+        "bfi    r8, r12, #16, #16\n\t"         // x | y << 16
+        "ldr    r9, [r0], #4\n\t"              // n
+        "lsl    r9, r9, r7\n\t"                // n 2^L
+        "udiv   r10, r9, r6\n\t"               // q1
+        "lsl    r9, r9, #14\n\t"
+        "mls    r9, r10, r5, r9\n\t"           // R1 = n 2^(L+14) - q1 v
+        "sdiv   r11, r9, r6\n\t"               // q2
+        "lsl    r9, r9, #14\n\t"
+        "mls    r9, r11, r5, r9\n\t"           // R2
+        "add    r10, r11, r10, lsl #14\n\t"
+        "sdiv   r11, r9, r6\n\t"
+        "asr    r11, r11, #12\n\t"             // q3
+        "lsl    r9, r9, #2\n\t"
+        "mls    r9, r11, r5, r9\n\t"           // R3
+        "add    r10, r11, r10, lsl #2\n\t"
+        "add    r10, r10, r9, asr #31\n\t"     // u
+        "ldm    r0, {r4, r5, r6, r7}\n\t"      // z0, zs
+        "umlal  r4, r5, r10, r6\n\t"
+        "mla    r5, r10, r7, r5\n\t"           // z
+        "sub    r0, r0, #80\n\t"
+        "strd   r8, r5, [r2], #8\n\t"
+        "cmp    r1, r3\n\t"
         "bne    1b\n"
         "9:\n\t"
-        "ldr    r0, [sp, #8]\n\t"              // end: all projected
-        "add    sp, sp, #12\n\t"
+        "mov    r0, r3\n\t"                    // end: all projected
         "pop    {r4-r11, pc}\n"
+        "7:\n\t"                               // -(w g) - 1 <= N <= w (g + 256) for Nx and Ny
+        "ldr    r12, [r0, #-4]\n\t"            // g
+        "umull  r5, r6, lr, r12\n\t"
+        "mvn    r5, r5\n\t"
+        "mvn    r6, r6\n\t"                    // -(w g) - 1
+        "subs   r8, r10, r5\n\t"
+        "sbcs   r8, r9, r6\n\t"
+        "blt    8f\n\t"
+        "subs   r8, r11, r5\n\t"
+        "sbcs   r8, r4, r6\n\t"
+        "blt    8f\n\t"
+        "add    r12, r12, #256\n\t"
+        "umull  r5, r6, lr, r12\n\t"           // w (g + 256)
+        "subs   r8, r5, r10\n\t"
+        "sbcs   r8, r6, r9\n\t"
+        "blt    8f\n\t"
+        "subs   r8, r5, r11\n\t"
+        "sbcs   r8, r6, r4\n\t"
+        "bge    2b\n"
         "8:\n\t"                               // refused: the caller projects it the general way
-        "ldr    r0, [sp]\n\t"
-        "sub    r0, r0, #12\n\t"
-        "add    sp, sp, #12\n\t"
-        "pop    {r4-r11, pc}\n"
-        :
-        : [dnear] "i"(kDepthNear));
+        "sub    r0, r1, #12\n\t"
+        "pop    {r4-r11, pc}\n");
 }
 #endif
 
