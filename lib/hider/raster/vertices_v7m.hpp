@@ -14,17 +14,18 @@ namespace detail {
 /// the coordinate with its translation. Row 2 is negated and starts at 2^30 - 1 - t_z 2^30:
 /// -floor(s / 2^30) = floor((-s + 2^30 - 1) / 2^30), so it gives w = -z.
 struct VertexPrepV7m {
-    int32_t row[3][5];         ///< 0, 20, 40: three rotation entries, start lo, start hi (t)
+    int32_t row[3][5];         ///< 0, 20, 40: three rotation entries, start lo, start hi
     int32_t near_lo;           ///< 60: max(near, kMinNearRaw): w from here ...
     uint32_t span;             ///< 64: ... to here above it, min(far, 2^30 - 1) (project_common()'s limits)
     int32_t k_q8;              ///< 68
-    uint32_t guard_lo;         ///< 72: kGuardBand 256 - 128
+    uint32_t c512;             ///< 72: 512
     int32_t near_raw;          ///< 76
     uint32_t z0_lo, z0_hi;     ///< 80, 84: 2 (2^31 scale + 2^30 + kDepthNear 2^31) modulo 2^64
     uint32_t zs_lo, zs_hi;     ///< 88, 92: -2 scale modulo 2^64 (scale = depth_scale_q31)
+    uint32_t guard;            ///< 96: g = kGuardBand 256 - 128
 };
-static_assert(offsetof(VertexPrepV7m, near_lo) == 60 && offsetof(VertexPrepV7m, near_raw) == 76 &&
-                  offsetof(VertexPrepV7m, zs_hi) == 92,
+static_assert(offsetof(VertexPrepV7m, near_lo) == 60 && offsetof(VertexPrepV7m, z0_lo) == 80 &&
+                  offsetof(VertexPrepV7m, guard) == 96,
               "Thumb-2 vertex loop constants layout");
 static_assert(sizeof(Vec3q16) == 12 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVertex, y) == 2 &&
                   offsetof(ScreenVertex, z) == 4,
@@ -52,7 +53,7 @@ inline VertexPrepV7m vertex_prep_v7m(const View& v) {
     }
     p.span = none ? 0u : static_cast<uint32_t>(far_fast - p.near_lo);
     p.k_q8 = v.k_q8;
-    p.guard_lo = static_cast<uint32_t>(kGuardBand) * 256u - 128u;
+    p.c512 = 512;
     p.near_raw = v.near_raw;
     const uint64_t z0 = 2 * ((v.depth_scale_q31 << 31) + (uint64_t{1} << 30) + (uint64_t{kDepthNear} << 31));
     const uint64_t zs = 0 - 2 * v.depth_scale_q31;
@@ -60,6 +61,7 @@ inline VertexPrepV7m vertex_prep_v7m(const View& v) {
     p.z0_hi = static_cast<uint32_t>(z0 >> 32);
     p.zs_lo = static_cast<uint32_t>(zs);
     p.zs_hi = static_cast<uint32_t>(zs >> 32);
+    p.guard = static_cast<uint32_t>(kGuardBand) * 256u - 128u;
     return p;
 }
 }  // namespace detail
@@ -71,8 +73,8 @@ inline VertexPrepV7m vertex_prep_v7m(const View& v) {
 /// - near_lo <= w <= near_lo + span as one unsigned compare;
 /// - per screen coordinate c (x, and y negated): N = c k + 128 w - [c < 0], so that the rounded quotient
 ///   (half away from zero) is floor(N / 256 w); the guard band (|c k| <= kGuardBand 256 w) is
-///   -(w g) - 1 <= N <= w (g + 256) with g = guard_lo, taken from N's high words against w g's (both
-///   inside its half: |hi| < hi(w g)), exactly where they are not;
+///   -(w g) - 1 <= N <= w (g + 256) with g = kGuardBand 256 - 128 > 2^21: it holds where both high
+///   words lie in [-(w >> 11), w >> 11), and is tested exactly (64 bits) where they do not;
 /// - d = floor(v / 2^14) in [2^16, 2^17) divides both quotients and n / w: e = N 2^(L-23) / d (signed
 ///   division of floor(N / 2^(23-L))) is floor(N / 256 w) or one more, r = floor(N / 256) - e w in
 ///   [-w, w) says which;
@@ -98,92 +100,93 @@ HIDER_NAKED inline const Vec3q16* project_common_v7m(const detail::VertexPrepV7m
         "lsl    \\res, \\res, #2\n\t"
         "orr    \\res, \\res, r10, lsr #30\n\t"
         ".endr\n\t"
-        "ldm    r0!, {r4, r5, r6, r7}\n\t"     // near_lo, span, k, g
-        "sub    r8, lr, r4\n\t"
-        "cmp    r8, r5\n\t"
+        "ldm    r0!, {r4, r5, r6, r7, r8}\n\t" // near_lo, span, k, 512, n
+        "sub    r9, lr, r4\n\t"
+        "cmp    r9, r5\n\t"
         "bhi    8f\n\t"                        // w below near_lo or past the span
-        "umull  r4, r5, lr, r7\n\t"            // r5 = hi(w g)
-        "clz    r7, lr\n\t"                    // L
-        "asr    r9, r11, #31\n\t"
-        "adds   r10, r9, lr, lsl #7\n\t"
-        "adc    r9, r9, lr, lsr #25\n\t"
-        "smlal  r10, r9, r11, r6\n\t"          // Nx = X k + 128 w - [X < 0]: r10 lo, r9 hi
-        "asr    r4, r12, #31\n\t"
-        "adds   r11, r4, lr, lsl #7\n\t"
+        "clz    r9, lr\n\t"                    // L
+        "lsl    r7, r7, r9\n\t"                // P = 2^(9+L), 0 for L = 23
+        "lsl    r8, r8, r9\n\t"                // n 2^L
+        "asr    r4, r11, #31\n\t"
+        "adds   r10, r4, lr, lsl #7\n\t"
         "adc    r4, r4, lr, lsr #25\n\t"
-        "smlal  r11, r4, r12, r6\n\t"          // Ny = Y k + 128 w - [Y < 0]: r11 lo, r4 hi
-        "eor    r8, r9, r9, asr #31\n\t"
-        "eor    r12, r4, r4, asr #31\n\t"
-        "orr    r8, r8, r12\n\t"
-        "cmp    r8, r5\n\t"
-        "bhs    7f\n"                          // a high word not inside hi(w g): the exact test
+        "smlal  r10, r4, r11, r6\n\t"          // Nx = X k + 128 w - [X < 0]: r10 lo, r4 hi
+        "asr    r5, r12, #31\n\t"
+        "adds   r11, r5, lr, lsl #7\n\t"
+        "adc    r5, r5, lr, lsr #25\n\t"
+        "smlal  r11, r5, r12, r6\n\t"          // Ny = Y k + 128 w - [Y < 0]: r11 lo, r5 hi
+        "eor    r6, r4, r4, asr #31\n\t"
+        "eor    r12, r5, r5, asr #31\n\t"
+        "orr    r6, r6, r12\n\t"
+        "cmp    r6, lr, lsr #11\n\t"
+        "bhs    7f\n"                          // a high word not inside w 2^-11: the exact test
         "2:\n\t"
-        "rsb    r5, r7, #23\n\t"               // 23 - L
-        "add    r6, r7, #9\n\t"                // 9 + L
-        "lsr    r8, r10, r5\n\t"
-        "lsl    r12, r9, r6\n\t"
-        "orr    r8, r8, r12\n\t"               // floor(Nx / 2^(23-L))
-        "lsr    r12, r11, r5\n\t"
-        "lsl    r5, r4, r6\n\t"
-        "orr    r12, r12, r5\n\t"              // floor(Ny / 2^(23-L))
-        "sub    r5, r7, #1\n\t"
-        "lsl    r5, lr, r5\n\t"                // v
-        "lsr    r6, r5, #14\n\t"               // d
-        "sdiv   r8, r8, r6\n\t"                // ex
-        "sdiv   r12, r12, r6\n\t"              // ey
+        "rsb    r6, r9, #23\n\t"               // 23 - L
+        "lsr    r12, r10, r6\n\t"
+        "mla    r12, r4, r7, r12\n\t"          // floor(Nx / 2^(23-L))
+        "lsr    r6, r11, r6\n\t"
+        "mla    r6, r5, r7, r6\n\t"            // floor(Ny / 2^(23-L))
+        "sub    r7, r9, #1\n\t"
+        "lsl    r7, lr, r7\n\t"                // v
+        "lsr    r9, r7, #14\n\t"               // d
+        "sdiv   r12, r12, r9\n\t"              // ex
+        "sdiv   r6, r6, r9\n\t"                // ey
         "lsr    r10, r10, #8\n\t"
-        "orr    r10, r10, r9, lsl #24\n\t"
-        "mls    r10, r8, lr, r10\n\t"          // floor(Nx / 256) - ex w
-        "add    r8, r8, r10, asr #31\n\t"      // x
+        "orr    r10, r10, r4, lsl #24\n\t"
+        "mls    r10, r12, lr, r10\n\t"         // floor(Nx / 256) - ex w
+        "add    r12, r12, r10, asr #31\n\t"    // x
         "lsr    r11, r11, #8\n\t"
-        "orr    r11, r11, r4, lsl #24\n\t"
-        "mls    r11, r12, lr, r11\n\t"
-        "rsb    r12, r12, r11, lsr #31\n\t"    // y = -floor(Ny / 256 w)
-        "bfi    r8, r12, #16, #16\n\t"         // x | y << 16
-        "ldr    r9, [r0], #4\n\t"              // n
-        "lsl    r9, r9, r7\n\t"                // n 2^L
-        "udiv   r10, r9, r6\n\t"               // q1
-        "lsl    r9, r9, #14\n\t"
-        "mls    r9, r10, r5, r9\n\t"           // R1 = n 2^(L+14) - q1 v
-        "sdiv   r11, r9, r6\n\t"               // q2
-        "lsl    r9, r9, #14\n\t"
-        "mls    r9, r11, r5, r9\n\t"           // R2
+        "orr    r11, r11, r5, lsl #24\n\t"
+        "mls    r11, r6, lr, r11\n\t"
+        "rsb    r6, r6, r11, lsr #31\n\t"      // y = -floor(Ny / 256 w)
+        "bfi    r12, r6, #16, #16\n\t"         // x | y << 16
+        "udiv   r10, r8, r9\n\t"               // q1
+        "lsl    r8, r8, #14\n\t"
+        "mls    r8, r10, r7, r8\n\t"           // R1 = n 2^(L+14) - q1 v
+        "sdiv   r11, r8, r9\n\t"               // q2
+        "lsl    r8, r8, #14\n\t"
+        "mls    r8, r11, r7, r8\n\t"           // R2
         "add    r10, r11, r10, lsl #14\n\t"
-        "sdiv   r11, r9, r6\n\t"
+        "sdiv   r11, r8, r9\n\t"
         "asr    r11, r11, #12\n\t"             // q3
-        "lsl    r9, r9, #2\n\t"
-        "mls    r9, r11, r5, r9\n\t"           // R3
+        "lsl    r8, r8, #2\n\t"
+        "mls    r8, r11, r7, r8\n\t"           // R3
         "add    r10, r11, r10, lsl #2\n\t"
-        "add    r10, r10, r9, asr #31\n\t"     // u
+        "add    r10, r10, r8, asr #31\n\t"     // u
         "ldm    r0, {r4, r5, r6, r7}\n\t"      // z0, zs
         "umlal  r4, r5, r10, r6\n\t"
         "mla    r5, r10, r7, r5\n\t"           // z
         "sub    r0, r0, #80\n\t"
-        "strd   r8, r5, [r2], #8\n\t"
+        "strd   r12, r5, [r2], #8\n\t"
         "cmp    r1, r3\n\t"
         "bne    1b\n"
         "9:\n\t"
         "mov    r0, r3\n\t"                    // end: all projected
         "pop    {r4-r11, pc}\n"
         "7:\n\t"                               // -(w g) - 1 <= N <= w (g + 256) for Nx and Ny
-        "ldr    r12, [r0, #-4]\n\t"            // g
-        "umull  r5, r6, lr, r12\n\t"
-        "mvn    r5, r5\n\t"
-        "mvn    r6, r6\n\t"                    // -(w g) - 1
-        "subs   r8, r10, r5\n\t"
-        "sbcs   r8, r9, r6\n\t"
-        "blt    8f\n\t"
-        "subs   r8, r11, r5\n\t"
-        "sbcs   r8, r4, r6\n\t"
-        "blt    8f\n\t"
+        "push   {r2, r3}\n\t"
+        "ldr    r12, [r0, #16]\n\t"            // g
+        "umull  r2, r3, lr, r12\n\t"
+        "mvn    r2, r2\n\t"
+        "mvn    r3, r3\n\t"                    // -(w g) - 1
+        "subs   r6, r10, r2\n\t"
+        "sbcs   r6, r4, r3\n\t"
+        "blt    6f\n\t"
+        "subs   r6, r11, r2\n\t"
+        "sbcs   r6, r5, r3\n\t"
+        "blt    6f\n\t"
         "add    r12, r12, #256\n\t"
-        "umull  r5, r6, lr, r12\n\t"           // w (g + 256)
-        "subs   r8, r5, r10\n\t"
-        "sbcs   r8, r6, r9\n\t"
-        "blt    8f\n\t"
-        "subs   r8, r5, r11\n\t"
-        "sbcs   r8, r6, r4\n\t"
-        "bge    2b\n"
+        "umull  r2, r3, lr, r12\n\t"           // w (g + 256)
+        "subs   r6, r2, r10\n\t"
+        "sbcs   r6, r3, r4\n\t"
+        "blt    6f\n\t"
+        "subs   r6, r2, r11\n\t"
+        "sbcs   r6, r3, r5\n\t"
+        "blt    6f\n\t"
+        "pop    {r2, r3}\n\t"
+        "b      2b\n"
+        "6:\n\t"
+        "pop    {r2, r3}\n"
         "8:\n\t"                               // refused: the caller projects it the general way
         "sub    r0, r1, #12\n\t"
         "pop    {r4-r11, pc}\n");
