@@ -11,7 +11,7 @@
 
 namespace kernelcheck {
 
-constexpr int kVertexCases = 250;
+constexpr int kVertexCases = 253;
 constexpr int kVertexBatch = 16;
 constexpr uint32_t kVertexSeed = 0x68E31DA4u;
 
@@ -122,6 +122,64 @@ inline void make_directed_case(VertexCase& c) {
     }
 }
 
+/// The second case, not random: make_directed_case()'s view with far 2^29 and screen coordinates on
+/// the rounding ties (c k = (256 m - 128) w: w = k, |c| = 640 and 255,872, either sign), on the guard
+/// band's boundary (|c| k = kGuardBand 256 w and one past it, at w = k and w = 37 k) and a little past it
+/// (16,340 subpixels at w = 2^24, where a high word lies close to w / 2^10).
+inline void make_edge_case(VertexCase& c) {
+    using hider::Q16;
+    hider::Camera cam;
+    cam.eye = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)};
+    cam.target = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(-65536)};
+    cam.up = {Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)};
+    cam.fovy = hider::Angle::from_bam(0x2AAAAAAAu);  // 60 degrees
+    cam.near = Q16::from_raw(4096);
+    cam.far = Q16::from_raw(1 << 29);
+    (void)hider::make_view(cam, 160, 120, c.view);
+    const int32_t k = c.view.k_q8;
+    const int32_t g = hider::kGuardBand * 256;
+    const int32_t at = static_cast<int32_t>(int64_t{16340} * 256 * (1 << 24) / k);
+    const int32_t q[16][3] = {{640, 0, k},        {-640, 0, k},         {0, 640, k},           {0, -640, k},
+                              {255872, -255872, k}, {-255872, 255872, k}, {g, 0, k},           {g + 1, 0, k},
+                              {-g, 0, k},         {-g - 1, 0, k},       {0, g, k},             {0, -g - 1, k},
+                              {at, 0, 1 << 24},   {0, -at, 1 << 24},    {37 * g, -37 * g, 37 * k}, {-37 * g - 1, 0, 37 * k}};
+    for (int i = 0; i < kVertexBatch; ++i)
+        c.p[i] = {Q16::from_raw(q[i][0]), Q16::from_raw(q[i][1]), Q16::from_raw(-q[i][2])};
+}
+
+/// The third case, not random: make_directed_case()'s view with 2^30 - 1 on the rotation's diagonal and
+/// a translation, and positions of -2 to 2 raw units: row sums of 2^30 - 1 (one below a multiple of 2^30)
+/// and its small multiples, where the transform's floors (and w's ceiling) turn.
+inline void make_transform_case(VertexCase& c) {
+    using hider::Q16;
+    make_directed_case(c);
+    for (int i = 0; i < 3; ++i) c.view.to_view.rot.m[i][i] = hider::Q30::from_raw(hider::Q30::kOne - 1);
+    c.view.to_view.trans = {Q16::from_raw(3000), Q16::from_raw(-2000), Q16::from_raw(-(1 << 18))};
+    for (int i = 0; i < kVertexBatch; ++i)
+        c.p[i] = {Q16::from_raw(i % 5 - 2), Q16::from_raw((i / 5) % 5 - 2), Q16::from_raw(i % 3 == 0 ? 1 : i % 5 - 2)};
+}
+
+/// The fourth case, not random: an axis-aligned view with near 2^30 + 12,345 (every w project_common()
+/// takes is below 2^30, so it takes none) and its translation moved to put w from 2^30 - 2 to 2^30 + 2^28
+/// (around near).
+inline void make_far_near_case(VertexCase& c) {
+    using hider::Q16;
+    hider::Camera cam;
+    cam.eye = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)};
+    cam.target = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(-65536)};
+    cam.up = {Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)};
+    cam.fovy = hider::Angle::from_bam(0x2AAAAAAAu);  // 60 degrees
+    const int32_t near = (1 << 30) + 12345;
+    cam.near = Q16::from_raw(near);
+    cam.far = Q16::from_raw(INT32_MAX);
+    (void)hider::make_view(cam, 160, 120, c.view);
+    const int32_t base = (1 << 30) + (1 << 20);  // w = base - z
+    c.view.to_view.trans.z = Q16::from_raw(-base);
+    const int32_t w[8] = {near - 2, near - 1, near, near + 1, (1 << 30) - 2, 1 << 30, (1 << 30) + (1 << 28), near + 99};
+    for (int i = 0; i < kVertexBatch; ++i)
+        c.p[i] = {Q16::from_raw((i - 8) * 1000), Q16::from_raw((5 - i) * 700), Q16::from_raw(base - w[i % 8])};
+}
+
 /// FNV-1a of a batch's projected vertices.
 inline uint32_t vertex_digest(const hider::ScreenVertex* s) {
     Fnv fnv;
@@ -165,6 +223,9 @@ int run_vertex_cases(Project&& project, Twin&& twin, Check&& check, uint32_t* ou
     static hider::ScreenVertex a[kVertexBatch], b[kVertexBatch];
     for (int i = 0; i < kVertexCases; ++i) {
         if (i == 0) make_directed_case(c);
+        else if (i == 1) make_edge_case(c);
+        else if (i == 2) make_transform_case(c);
+        else if (i == 3) make_far_near_case(c);
         else make_vertex_case(rng, c);
         project(c.view, c.p, a);
         twin(c.view, c.p, b);
