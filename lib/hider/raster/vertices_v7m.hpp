@@ -34,23 +34,30 @@ static_assert(sizeof(Vec3q16) == 12 && sizeof(ScreenVertex) == 8 && offsetof(Scr
 /// The loop's constants for view v. Where project_common() takes no w (near beyond min(far, 2^30 - 1)),
 /// and for views make_view() does not give (near below 1, a negative k), every position gets
 /// w = near_lo - 1, which the loop refuses.
+/// One row: three entries and the 64-bit start, its low word first.
+inline void set_row_v7m(int32_t (&row)[5], uint32_t a, uint32_t b, uint32_t c, int64_t start) {
+    row[0] = static_cast<int32_t>(a);
+    row[1] = static_cast<int32_t>(b);
+    row[2] = static_cast<int32_t>(c);
+    row[3] = static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(start)));
+    row[4] = static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(start) >> 32));
+}
+
 inline VertexPrepV7m vertex_prep_v7m(const View& v) {
-    VertexPrepV7m p{};
+    VertexPrepV7m p;  // every field set below, without a loop or a clear
     const int32_t far_fast = min(v.far_raw, (int32_t{1} << 30) - 1);
     p.near_lo = max(v.near_raw, kMinNearRaw);
     const bool none = v.near_raw < 1 || v.k_q8 < 0 || far_fast < p.near_lo;
-    const int32_t t[3] = {v.to_view.trans.x.raw(), v.to_view.trans.y.raw(), v.to_view.trans.z.raw()};
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            const uint32_t m = static_cast<uint32_t>(v.to_view.rot.m[i][j].raw());
-            p.row[i][j] = static_cast<int32_t>(i < 2 ? m : none ? 0u : 0u - m);
-        }
-        const int64_t start = i < 2 ? int64_t{t[i]} * (int64_t{1} << 30)
-                              : none ? int64_t{p.near_lo - 1} * (int64_t{1} << 30)
-                                     : (int64_t{1} << 30) - 1 - int64_t{t[2]} * (int64_t{1} << 30);
-        p.row[i][3] = static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(start)));
-        p.row[i][4] = static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(start) >> 32));
-    }
+    const Q30(&m)[3][3] = v.to_view.rot.m;
+    auto u = [](Q30 e) { return static_cast<uint32_t>(e.raw()); };
+    constexpr int64_t kOne = int64_t{1} << 30;
+    set_row_v7m(p.row[0], u(m[0][0]), u(m[0][1]), u(m[0][2]), int64_t{v.to_view.trans.x.raw()} * kOne);
+    set_row_v7m(p.row[1], u(m[1][0]), u(m[1][1]), u(m[1][2]), int64_t{v.to_view.trans.y.raw()} * kOne);
+    if (none)
+        set_row_v7m(p.row[2], 0, 0, 0, int64_t{p.near_lo - 1} * kOne);
+    else
+        set_row_v7m(p.row[2], 0u - u(m[2][0]), 0u - u(m[2][1]), 0u - u(m[2][2]),
+                    kOne - 1 - int64_t{v.to_view.trans.z.raw()} * kOne);
     p.span = none ? 0u : static_cast<uint32_t>(far_fast - p.near_lo);
     p.k_q8 = v.k_q8;
     p.c512 = 512;
