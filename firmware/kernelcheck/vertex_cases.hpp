@@ -147,14 +147,22 @@ inline void make_edge_case(VertexCase& c) {
         c.p[i] = {Q16::from_raw(q[i][0]), Q16::from_raw(q[i][1]), Q16::from_raw(-q[i][2])};
 }
 
-/// The third case, not random: make_directed_case()'s view with 2^30 - 1 on the rotation's diagonal and
-/// a translation, and positions of -2 to 2 raw units: row sums of 2^30 - 1 (one below a multiple of 2^30)
-/// and its small multiples, where the transform's floors (and w's ceiling) turn.
+/// The third case, not random: an axis-aligned view with near 256 and 2^30 - 1 on the rotation's
+/// diagonal, a translation to w = 1,024 (a raw unit of x or y moves the screen by 1.6 subpixels), and
+/// positions of -2 to 2 raw units: row sums of 2^30 - 1 (one below a multiple of 2^30) and its small
+/// multiples, where the transform's floors (and w's ceiling) turn.
 inline void make_transform_case(VertexCase& c) {
     using hider::Q16;
-    make_directed_case(c);
+    hider::Camera cam;
+    cam.eye = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)};
+    cam.target = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(-65536)};
+    cam.up = {Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)};
+    cam.fovy = hider::Angle::from_bam(0x2AAAAAAAu);  // 60 degrees
+    cam.near = Q16::from_raw(256);
+    cam.far = Q16::from_raw(1 << 20);
+    (void)hider::make_view(cam, 160, 120, c.view);
     for (int i = 0; i < 3; ++i) c.view.to_view.rot.m[i][i] = hider::Q30::from_raw(hider::Q30::kOne - 1);
-    c.view.to_view.trans = {Q16::from_raw(3000), Q16::from_raw(-2000), Q16::from_raw(-(1 << 18))};
+    c.view.to_view.trans = {Q16::from_raw(300), Q16::from_raw(-200), Q16::from_raw(-1024)};
     for (int i = 0; i < kVertexBatch; ++i)
         c.p[i] = {Q16::from_raw(i % 5 - 2), Q16::from_raw((i / 5) % 5 - 2), Q16::from_raw(i % 3 == 0 ? 1 : i % 5 - 2)};
 }
