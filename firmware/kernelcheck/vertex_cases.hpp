@@ -139,10 +139,11 @@ inline void make_edge_case(VertexCase& c) {
     const int32_t k = c.view.k_q8;
     const int32_t g = hider::kGuardBand * 256;
     const int32_t at = static_cast<int32_t>(int64_t{16340} * 256 * (1 << 24) / k);
-    const int32_t q[16][3] = {{640, 0, k},        {-640, 0, k},         {0, 640, k},           {0, -640, k},
-                              {255872, -255872, k}, {-255872, 255872, k}, {g, 0, k},           {g + 1, 0, k},
-                              {-g, 0, k},         {-g - 1, 0, k},       {0, g, k},             {0, -g - 1, k},
-                              {at, 0, 1 << 24},   {0, -at, 1 << 24},    {37 * g, -37 * g, 37 * k}, {-37 * g - 1, 0, 37 * k}};
+    const int32_t q[16][3] = {{640, 0, k},         {-640, 0, k},         {0, 640, k},       {0, -640, k},
+                              {255872, -255872, k}, {-255872, 255872, k}, {g, 0, k},         {g + 1, 0, k},
+                              {-g, 0, k},           {-g - 1, 0, k},       {0, g, k},         {0, -g - 1, k},
+                              {at, 0, 1 << 24},     {0, -at, 1 << 24},    {37 * g, -37 * g, 37 * k},
+                              {-37 * g - 1, 0, 37 * k}};
     for (int i = 0; i < kVertexBatch; ++i)
         c.p[i] = {Q16::from_raw(q[i][0]), Q16::from_raw(q[i][1]), Q16::from_raw(-q[i][2])};
 }

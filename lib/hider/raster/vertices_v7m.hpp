@@ -31,9 +31,6 @@ static_assert(sizeof(Vec3q16) == 12 && sizeof(ScreenVertex) == 8 && offsetof(Scr
                   offsetof(ScreenVertex, z) == 4,
               "the Thumb-2 vertex loop's strides");
 
-/// The loop's constants for view v. Where project_common() takes no w (near beyond min(far, 2^30 - 1)),
-/// and for views make_view() does not give (near below 1, a negative k), every position gets
-/// w = near_lo - 1, which the loop refuses.
 /// One row: three entries and the 64-bit start, its low word first.
 inline void set_row_v7m(int32_t (&row)[5], uint32_t a, uint32_t b, uint32_t c, int64_t start) {
     row[0] = static_cast<int32_t>(a);
@@ -43,6 +40,9 @@ inline void set_row_v7m(int32_t (&row)[5], uint32_t a, uint32_t b, uint32_t c, i
     row[4] = static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(start) >> 32));
 }
 
+/// The loop's constants for view v. Where project_common() takes no w (near beyond min(far, 2^30 - 1)),
+/// and for views make_view() does not give (near below 1, a negative k), every position gets
+/// w = near_lo - 1, which the loop refuses.
 inline VertexPrepV7m vertex_prep_v7m(const View& v) {
     VertexPrepV7m p;  // every field set below, without a loop or a clear
     const int32_t far_fast = min(v.far_raw, (int32_t{1} << 30) - 1);
