@@ -94,7 +94,6 @@ public:
         loop_.base_r = opt.base.r;
         loop_.base_g = opt.base.g;
         loop_.base_b = opt.base.b;
-        loop_.target = bt_.target;
         loop_.color_less_2 = bt_.target.color_offset - 2;
         kband_.color_less_2 = loop_.color_less_2;
         loop_.stride_bytes = bt_.target.stride_bytes;

@@ -11,44 +11,46 @@
 namespace hider {
 
 namespace detail {
-/// Constants and in/out values of the band list loop (the layout is its contract).
+/// Constants and in/out values of the band list loop (the layout is its contract). The first twelve
+/// words are one ldm of a resume (draw_band_v7m()), in the order of the registers they load: r0..r10
+/// and lr.
 struct BandLoopArm {
-    const Tri* tris;                  ///< 0
-    const ScreenVertex* verts;        ///< 4
-    const uint16_t* next;             ///< 8: the band lists (binned.hpp)
-    KernelSetupIo* io;                ///< 12 (io->out is set to the slot's record per triangle)
-    intptr_t normals_offset;          ///< 16: bytes from a Tri to its Normal14 (both 6 bytes)
-    int32_t view_z[3];                ///< 20, 24, 28
-    uint32_t base_r, base_g, base_b;  ///< 32, 36, 40
-    uint16_t* depth;                  ///< 44: the band's first depth row
-    int32_t y0;                       ///< 48: the band's first row
-    int32_t y1;                       ///< 52: the row after the band
-    KernelTarget target;              ///< 56: colour offset, 60: stride
-    KernelTriangle* pool;             ///< 64: the carried slots
-    const uint8_t* free_base;         ///< 68: the free-slot stack's bottom
-    uint8_t* free_top;                ///< 72, in and out
-    uint8_t* nxt;                     ///< 76, in and out: the next band's slots
-    int32_t count_from;               ///< 80: a set-up counts as drawn from this top row on
-    uint32_t drawn;                   ///< 84, counted up
-    const uint8_t* cur;               ///< 88, in and out: this band's carried slots still to resume
-    const uint8_t* cur_end;           ///< 92
-    uint32_t projected;               ///< 96: 1 when no vertex is outside a clip plane (all_projected())
-    uintptr_t head;                   ///< 100: set by draw_band_v7m(): its loop head for `projected`
-    intptr_t color_less_2;            ///< 104: target.color_offset - 2 (the row loop's post-increment)
-    int32_t stride_bytes;             ///< 108: target.stride_bytes, next to it for one load
+    KernelTriangle* pool;             ///< 0: the carried slots (r0)
+    int32_t y0;                       ///< 4: the band's first row (r1)
+    int32_t y1;                       ///< 8: the row after the band (r2)
+    int32_t stride_bytes;             ///< 12: target.stride_bytes (r3)
+    uint32_t limit;                   ///< 16: set by draw_band_v7m(): where a run of resumes stops (r4)
+    const uint8_t* cur;               ///< 20, in and out: this band's carried slots still to resume (r5)
+    const uint8_t* cur_end;           ///< 24 (r6)
+    intptr_t color_less_2;            ///< 28: target.color_offset - 2 (the row loop's post-increment) (r7)
+    uint8_t* nxt;                     ///< 32, in and out: the next band's slots (r8)
+    uint8_t* free_top;                ///< 36, in and out (r9)
+    const uint8_t* free_base;         ///< 40: the free-slot stack's bottom (r10)
+    uint16_t* depth;                  ///< 44: the band's first depth row (lr)
+    const Tri* tris;                  ///< 48
+    const ScreenVertex* verts;        ///< 52
+    const uint16_t* next;             ///< 56: the band lists (binned.hpp)
+    KernelSetupIo* io;                ///< 60 (io->out is set to the slot's record per triangle)
+    intptr_t normals_offset;          ///< 64: bytes from a Tri to its Normal14 (both 6 bytes)
+    int32_t view_z[3];                ///< 68, 72, 76
+    uint32_t base_r, base_g, base_b;  ///< 80, 84, 88
+    int32_t count_from;               ///< 92: a set-up counts as drawn from this top row on
+    uint32_t drawn;                   ///< 96, counted up
+    uint32_t projected;               ///< 100: 1 when no vertex is outside a clip plane (all_projected())
+    uintptr_t head;                   ///< 104: set by draw_band_v7m(): its loop head for `projected`
 };
 static_assert(sizeof(void*) != 4 ||
-                  (offsetof(BandLoopArm, verts) == 4 && offsetof(BandLoopArm, next) == 8 && offsetof(BandLoopArm, io) == 12 &&
-                   offsetof(BandLoopArm, normals_offset) == 16 && offsetof(BandLoopArm, view_z) == 20 &&
-                   offsetof(BandLoopArm, base_r) == 32 && offsetof(BandLoopArm, depth) == 44 &&
-                   offsetof(BandLoopArm, y0) == 48 && offsetof(BandLoopArm, y1) == 52 &&
-                   offsetof(BandLoopArm, target) == 56 && offsetof(BandLoopArm, pool) == 64 &&
-                   offsetof(BandLoopArm, free_base) == 68 && offsetof(BandLoopArm, free_top) == 72 &&
-                   offsetof(BandLoopArm, nxt) == 76 && offsetof(BandLoopArm, count_from) == 80 &&
-                   offsetof(BandLoopArm, drawn) == 84 && offsetof(BandLoopArm, cur) == 88 &&
-                   offsetof(BandLoopArm, cur_end) == 92 && offsetof(BandLoopArm, projected) == 96 &&
-                   offsetof(BandLoopArm, head) == 100 && offsetof(BandLoopArm, color_less_2) == 104 &&
-                   offsetof(BandLoopArm, stride_bytes) == 108),
+                  (offsetof(BandLoopArm, y0) == 4 && offsetof(BandLoopArm, y1) == 8 &&
+                   offsetof(BandLoopArm, stride_bytes) == 12 && offsetof(BandLoopArm, limit) == 16 &&
+                   offsetof(BandLoopArm, cur) == 20 && offsetof(BandLoopArm, cur_end) == 24 &&
+                   offsetof(BandLoopArm, color_less_2) == 28 && offsetof(BandLoopArm, nxt) == 32 &&
+                   offsetof(BandLoopArm, free_top) == 36 && offsetof(BandLoopArm, free_base) == 40 &&
+                   offsetof(BandLoopArm, depth) == 44 && offsetof(BandLoopArm, tris) == 48 &&
+                   offsetof(BandLoopArm, verts) == 52 && offsetof(BandLoopArm, next) == 56 &&
+                   offsetof(BandLoopArm, io) == 60 && offsetof(BandLoopArm, normals_offset) == 64 &&
+                   offsetof(BandLoopArm, view_z) == 68 && offsetof(BandLoopArm, base_r) == 80 &&
+                   offsetof(BandLoopArm, count_from) == 92 && offsetof(BandLoopArm, drawn) == 96 &&
+                   offsetof(BandLoopArm, projected) == 100 && offsetof(BandLoopArm, head) == 104),
               "band loop layout: every offset the assembly uses");
 static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records are 96 bytes");
 /// draw_band_v7m() hands a listed triangle back with this bit set when its set-up said generic.
@@ -63,12 +65,12 @@ static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(Ker
 /// slot, a generic set-up: with kGenericHandBack set), the carried ones before it resumed. Every listed triangle has a non-zero
 /// area and is not culled (bin_triangles()). Registers: r4 the listed triangle, r5 d, r6 the next carried
 /// triangle (0xFFFF: none), r7 the vertices, r8 the triangles, r9 d->next, r10 the area, r11 the slot's
-/// record; on the stack three words for the resumes' row loop, then d and the listed triangle. The loop
-/// comes back to its head through d->head: without the clip test when d->projected. A run of resumes
-/// keeps its state on the stack and in d (the slot order pointer at sp + 12, and at sp + 24 where the
-/// record's slot goes after it: d->nxt or d->free_top) and draws each record's
-/// rows with run_kernel_triangle_v7m()'s row loop (HIDER_V7M_ROWS) inline: every one is on the band's
-/// first row.
+/// record; on the stack three words for the resumes' row loop, then d (sp + 16). The loop comes back to
+/// its head through d->head: without the clip test when d->projected. A run of resumes keeps its state
+/// in d (the listed triangle in d->limit, d->cur stored per record, the record's slot pushed onto d->nxt
+/// or d->free_top before its rows), reloads it with one ldm of d's first twelve words after each record
+/// and draws each record's rows with run_kernel_triangle_v7m()'s row loop (HIDER_V7M_ROWS) inline: every
+/// one is on the band's first row.
 HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
@@ -77,21 +79,20 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "mov    r4, r0\n\t"
         "mov    r5, r1\n\t"
         "str    r5, [sp, #16]\n\t"
-        "ldr    r8, [r5, #0]\n\t"
-        "ldr    r7, [r5, #4]\n\t"
-        "ldr    r9, [r5, #8]\n\t"              // d->next
+        "ldr    r8, [r5, #48]\n\t"
+        "ldr    r7, [r5, #52]\n\t"
+        "ldr    r9, [r5, #56]\n\t"              // d->next
         "movw   r6, #0xFFFF\n\t"
-        "ldr    r0, [r5, #88]\n\t"
-        "ldr    r1, [r5, #92]\n\t"
+        "ldrd   r0, r1, [r5, #20]\n\t"          // cur, cur_end
         "cmp    r0, r1\n\t"
         "beq    1f\n\t"                         // nothing carried
         "ldrb   r0, [r0]\n\t"
-        "ldr    r1, [r5, #64]\n\t"
+        "ldr    r1, [r5, #0]\n\t"
         "add    r0, r0, r0, lsl #1\n\t"
         "add    r0, r1, r0, lsl #5\n\t"
         "ldrh   r6, [r0, %[tri]]\n"              // the next carried triangle
         "1:\n\t"
-        "ldr    r0, [r5, #96]\n\t"              // the loop head: with the clip test unless every vertex
+        "ldr    r0, [r5, #100]\n\t"             // the loop head: with the clip test unless every vertex
         "cbnz   r0, 25f\n\t"                    // is projected (a Thumb address: the loop comes back
         "movw   r0, #:lower16:(21f + 1)\n\t"    // through it with a load into pc)
         "movt   r0, #:upper16:(21f + 1)\n\t"
@@ -100,8 +101,8 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "movw   r0, #:lower16:(24f + 1)\n\t"
         "movt   r0, #:upper16:(24f + 1)\n"
         "26:\n\t"
-        "str    r0, [r5, #100]\n\t"
-        "ldr    pc, [r5, #100]\n"
+        "str    r0, [r5, #104]\n\t"
+        "ldr    pc, [r5, #104]\n"
         "21:\n\t"
         "cmp    r4, r6\n\t"
         "bhs    50f\n\t"                        // the carried triangle first, or the list's end
@@ -147,24 +148,23 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "sxth   r11, r11\n\t"
         "sub    r11, r11, lr\n\t"               // cx - ax
         "mls    r10, r11, r12, r10\n\t"         // signed_area(a, b, c)
-        "ldrd   r12, r3, [r5, #68]\n\t"         // free_base, free_top
+        "ldrd   r3, r12, [r5, #36]\n\t"         // free_top, free_base
         "cmp    r3, r12\n\t"
         "beq    90f\n\t"                        // no free slot: back to C++ (the spare)
         "ldrb   r3, [r3, #-1]\n\t"              // the slot on top
-        "ldr    r12, [r5, #64]\n\t"
+        "ldr    r12, [r5, #0]\n\t"
         "add    r3, r3, r3, lsl #1\n\t"
         "add    r11, r12, r3, lsl #5\n\t"       // its record: pool + 96 s
         // FaceShading::color565(), as in draw_flat_v7m: first, so that the set-up draws at once; the
         // vertices stay in r0 r1 r2, r9 lends itself and comes back from d.
         "add    r12, r4, r4, lsl #1\n\t"
         "add    r12, r8, r12, lsl #1\n\t"
-        "ldr    r3, [r5, #16]\n\t"
+        "ldr    r3, [r5, #64]\n\t"
         "add    r12, r12, r3\n\t"               // the triangle's normal
         HIDER_V7M_COLOR565_IN(r12, r9, r3, lr)
-        "ldr    r9, [r5, #8]\n\t"               // d->next
+        "ldrd   r9, r3, [r5, #56]\n\t"          // d->next, d->io
         "str    r12, [r11, %[color]]\n\t"       // k.color
         "strh   r4, [r11, %[tri]]\n\t"          // the mesh triangle
-        "ldr    r3, [r5, #12]\n\t"              // d->io
         "strd   r10, r11, [r3, %[io_area]]\n\t" // io->area, io->out
         "bl     %c[draw]\n\t"                   // set up, and the rows in this band drawn
         "cmp    r0, #1\n\t"
@@ -173,26 +173,24 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "bne    92f\n"                          // generic: back to C++, flagged
         "8:\n\t"                                // the next listed triangle
         "ldrh   r4, [r9, r4, lsl #1]\n\t"
-        "ldr    pc, [r5, #100]\n"                // the loop head
+        "ldr    pc, [r5, #104]\n"                // the loop head
         "3:\n\t"
         "ldrsh  r0, [r11, %[top]]\n\t"
-        "ldrd   r1, r2, [r5, #80]\n\t"          // count_from, drawn
+        "ldrd   r1, r2, [r5, #92]\n\t"          // count_from, drawn
         "cmp    r0, r1\n\t"
         "itt    ge\n\t"
         "addge  r2, r2, #1\n\t"
-        "strge  r2, [r5, #84]\n\t"              // drawn: its first row is in this band
+        "strge  r2, [r5, #96]\n\t"              // drawn: its first row is in this band
         // A set-up without a row in the band is rare: it returns at once and the test below keeps the
         // slot free.
         "ldrsh  r0, [r11, %[row]]\n\t"
         "ldrsh  r1, [r11, %[end]]\n\t"
         "cmp    r0, r1\n\t"
         "bge    8b\n\t"                         // done in this band: the slot stays free
-        "ldr    r0, [r5, #72]\n\t"
+        "ldrd   r2, r0, [r5, #32]\n\t"          // nxt, free_top
         "ldrb   r1, [r0, #-1]!\n\t"             // the slot leaves the free stack
-        "str    r0, [r5, #72]\n\t"
-        "ldr    r2, [r5, #76]\n\t"
         "strb   r1, [r2], #1\n\t"               // for the next band
-        "str    r2, [r5, #76]\n\t"
+        "strd   r2, r0, [r5, #32]\n\t"
         "b      8b\n"
         "92:\n\t"
         "orr    r4, r4, #0x10000\n"             // kGenericHandBack: C++ draws it without another set-up
@@ -205,35 +203,31 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "movw   r0, #0xFFFF\n\t"
         "cmp    r6, r0\n\t"
         "beq    90b\n\t"                        // none left: r4 is the list's end
-        "str    r4, [sp, #20]\n\t"
         "mov    r12, r5\n\t"
-        "ldr    r10, [r5, #88]\n"
-        "61:\n\t"                               // r10 the slot order, r12 d, r4 the listed triangle
-        "ldrb   r11, [r10], #1\n\t"             // its slot
-        "ldr    r0, [r12, #64]\n\t"
-        "add    r9, r11, r11, lsl #1\n\t"
-        "add    r0, r0, r9, lsl #5\n\t"         // its record
-        "ldrh   r9, [r0, %[tri]]\n\t"
-        "cmp    r9, r4\n\t"
+        "str    r4, [r12, #16]\n\t"             // d->limit
+        "ldm    r12, {r0-r10, lr}\n"            // as at the end of a resume
+        "61:\n\t"                               // r12 d, r0..r10 and lr its first twelve words (BandLoopArm)
+        "ldrb   r11, [r5], #1\n\t"              // the slot
+        "add    r6, r11, r11, lsl #1\n\t"
+        "add    r0, r0, r6, lsl #5\n\t"         // its record: pool + 96 s
+        "ldrh   r6, [r0, %[tri]]\n\t"
+        "cmp    r6, r4\n\t"
         "bhs    65f\n\t"                        // after the listed triangle: stop
-        "str    r10, [sp, #12]\n\t"
+        "str    r5, [r12, #20]\n\t"             // d->cur
         // run_kernel_triangle_v7m()'s entry for a record on the band's first row, to the band's end.
         "ldrsh  r6, [r0, %[end]]\n\t"
         "ldrsh  r5, [r0, %[mid]]\n\t"
-        "ldrd   r4, r2, [r12, #48]\n\t"         // y0, y1
-        "ldr    r9, [r12, #44]\n\t"             // the depth row of y0
-        "ldrd   r7, r3, [r12, #104]\n\t"        // colour offset less HIDER_V7M_ROWS's post-increment, stride
         "cmp    r6, r2\n\t"
         "itte   gt\n\t"
         "movgt  r6, r2\n\t"                     // stop = min(end, y1)
-        "addgt  r8, r12, #76\n\t"               // rows remain: the slot goes to the next band's
-        "addle  r8, r12, #72\n\t"               // done: back to the free slots
-        "str    r8, [sp, #24]\n\t"
+        "strbgt r11, [r8], #1\n\t"              // rows remain: the slot goes to the next band's
+        "strble r11, [r9], #1\n\t"              // done: back to the free slots
+        "strd   r8, r9, [r12, #32]\n\t"         // d->nxt, d->free_top
         "strh   r6, [r0, %[row]]\n\t"           // the row after this band
-        "sub    r6, r6, r4\n\t"                 // n rows (a carried set-up has some left)
-        "mla    r11, r6, r3, r9\n\t"            // the depth row after the last
+        "sub    r6, r6, r1\n\t"                 // n rows (a carried set-up has some left)
+        "mla    r11, r6, r3, lr\n\t"            // the depth row after the last
         "mov    r8, #-1\n\t"                    // rows after a switch: none
-        "subs   r1, r5, r4\n\t"                 // m = mid - y0
+        "subs   r1, r5, r1\n\t"                 // m = mid - y0
         "ble    62f\n\t"                        // on or below the middle row
         "ldrsh  r2, [r0, %[end]]\n\t"
         "cmp    r5, r2\n\t"
@@ -242,38 +236,31 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "bgt    62f\n\t"                        // the middle row lies past this band
         "sub    r8, r6, r1\n\t"
         "mov    r6, r1\n\t"
-        "mla    r1, r1, r3, r9\n\t"
+        "mla    r1, r1, r3, lr\n\t"
         "str    r1, [sp]\n"                     // the middle row's depth row
         "62:\n\t"
         "strd   r8, r11, [sp, #4]\n\t"
         "ldrd   r8, r10, [r0, %[dzdx]]\n\t"     // dzdx, colour
         "ldm    r0, {r1-r5}\n\t"                // lx lg lz rx rg
-        "add    r1, r1, r9\n\t"                 // lp
-        "add    r4, r4, r9\n\t"                 // rp
+        "add    r1, r1, lr\n\t"                 // lp
+        "add    r4, r4, lr\n\t"                 // rp
         "add    r0, r0, %[ra]\n"
         HIDER_V7M_ROWS
-        "ldrd   r10, r12, [sp, #12]\n\t"        // the slot order, d
-        "ldrb   r11, [r10, #-1]\n\t"            // the record's slot
-        "ldr    r3, [sp, #24]\n\t"              // where it goes
-        "ldr    r2, [r3]\n\t"
-        "strb   r11, [r2], #1\n\t"
-        "str    r2, [r3]\n\t"
-        "ldr    r4, [sp, #20]\n\t"
-        "ldr    r11, [r12, #92]\n\t"
-        "cmp    r10, r11\n\t"
+        "ldr    r12, [sp, #16]\n\t"             // d
+        "ldm    r12, {r0-r10, lr}\n\t"
+        "cmp    r5, r6\n\t"                     // cur, cur_end
         "bne    61b\n\t"
         "movw   r6, #0xFFFF\n\t"                // all resumed
         "b      66f\n"
-        "65:\n\t"
-        "mov    r6, r9\n\t"                     // the next carried triangle
-        "sub    r10, r10, #1\n"                 // its slot stays in the order
+        "65:\n\t"                               // r6 the next carried triangle
+        "sub    r5, r5, #1\n\t"                 // its slot stays in the order
+        "str    r5, [r12, #20]\n"
         "66:\n\t"
-        "str    r10, [r12, #88]\n\t"
         "mov    r5, r12\n\t"
-        "ldr    r8, [r5, #0]\n\t"
-        "ldr    r7, [r5, #4]\n\t"
-        "ldr    r9, [r5, #8]\n\t"              // d->next
-        "ldr    pc, [r5, #100]\n"
+        "ldr    r8, [r5, #48]\n\t"
+        "ldr    r7, [r5, #52]\n\t"
+        "ldr    r9, [r5, #56]\n\t"              // d->next
+        "ldr    pc, [r5, #104]\n"
         :
         : [draw] "i"(kernel_draw_v7m),
           [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
