@@ -95,6 +95,7 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
     // (its box, hence every box below it, lies wholly inside the frame).
     constexpr uint32_t kPlane = kBspListNoFront, kInside = kBspListNoBack;
     const BandBounds bb = band_bounds(detail::WholeFrame{view.width, view.height, 0, view.height});
+    const detail::BoxBand box_band(view, bb);
     const PreparedTransform to_view(view.to_view);
     const BspFaces faces = bsp_walk_faces(view, eye, tree, opt, stack);
     const uint32_t rule = faces == BspFaces::front ? kBspListNoBack : faces == BspFaces::back ? kBspListNoFront : 0;
@@ -107,7 +108,7 @@ inline FrameStats order_bsp(const View& view, const Vec3q16& eye, const BspTree&
             ++st.nodes_visited;
             uint32_t inside = next_inside;
             if (inside == 0) {
-                const detail::SubtreeBox box = detail::subtree_box<true>(view, n, bb);
+                const detail::SubtreeBox box = detail::subtree_box<true>(box_band, n);
                 if (box.outside) {
                     ++st.subtrees_skipped;
                     next = kBspNone;

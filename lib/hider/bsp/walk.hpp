@@ -60,33 +60,63 @@ struct SubtreeBox {
     bool inside;         ///< every point of the box lies in the depth range and projects into the band (if asked)
 };
 
+/// What subtree_box() needs of a view and a band, prepared once per walk: |R| of the view's rotation
+/// (for the boxes' half extents) and the coefficients of the four planes through the eye and the band's
+/// edges, each widened by a pixel. Borrows `view`.
+struct BoxBand {
+    BoxBand(const View& v, const BandBounds& bb)
+        : view(v),
+          k(v.k_q8),
+          k_abs(abs_value(v.k_q8)),
+          x_lo(256 * (bb.x_first - kSubpixel)),
+          x_hi(256 * (bb.x_last + kSubpixel)),
+          y_lo(256 * (bb.y_first - kSubpixel)),
+          y_hi(256 * (bb.y_last + kSubpixel)),
+          x_lo_abs(abs_value(x_lo)),
+          x_hi_abs(abs_value(x_hi)),
+          y_lo_abs(abs_value(y_lo)),
+          y_hi_abs(abs_value(y_hi)) {
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) rot_abs[i][j] = abs_value(v.to_view.rot.m[i][j].raw());
+    }
+    const View& view;
+    int32_t rot_abs[3][3];            ///< |R|, Q30
+    int32_t k, k_abs;                 ///< view.k_q8 and its magnitude
+    int32_t x_lo, x_hi, y_lo, y_hi;  ///< 256 times the band's edges in subpixels, a pixel outwards
+    int32_t x_lo_abs, x_hi_abs, y_lo_abs, y_hi_abs;
+};
+
+/// Half extent ((|r| . e) >> 30) + 2 of a box along the view axis of row |r| of |R| (the view
+/// transform's own flooring included). With |r_k| < 2^31 and |e_k| < 2^27 (int16 boxes) its magnitude
+/// stays below 3 2^28 + 2.
+__attribute__((always_inline)) inline int32_t box_extent(const int32_t (&r)[3], const int32_t (&e)[3]) {
+    return static_cast<int32_t>((mul32(r[0], e[0]) + mul32(r[1], e[1]) + mul32(r[2], e[2])) >> 30) + 2;
+}
+
 /// Node n's subtree box against the band, with no division: the box is rotated into view space as a
 /// centre and half extents (|R| e), then tested against the depth range and the four planes through
 /// the eye and the band's edges (a point projects left of column x when x k - 256 X w < 0, and so on),
 /// each widened by a pixel so that rounded vertex positions stay inside. kInside: also whether the whole
 /// box lies inside (SubtreeBox::inside; else it stays false).
 template <bool kInside = false>
-inline SubtreeBox subtree_box(const View& view, const BspNode& n, const BandBounds& bb) {
+inline SubtreeBox subtree_box(const BoxBand& t, const BspNode& n) {
+    const View& view = t.view;
     SubtreeBox b{};
-    int32_t c[3], e[3];
-    for (int k = 0; k < 3; ++k) {
-        const int32_t lo = n.box_min[k] * (int32_t{1} << kBspBoxShift), hi = n.box_max[k] * (int32_t{1} << kBspBoxShift);
-        c[k] = lo + (hi - lo) / 2;
-        e[k] = hi - c[k];
-    }
-    const Vec3q16 cv = apply(view.to_view, {Q16::from_raw(c[0]), Q16::from_raw(c[1]), Q16::from_raw(c[2])});
-    int64_t ev[3];
-    for (int i = 0; i < 3; ++i) {
-        int64_t sum = 0;
-        for (int k = 0; k < 3; ++k) sum += int64_t{abs_value(view.to_view.rot.m[i][k].raw())} * e[k];
-        ev[i] = (sum >> 30) + 2;  // rounded up, plus the view transform's own flooring
-    }
-    b.cx = cv.x.raw();
-    b.cy = cv.y.raw();
-    b.cw = -int64_t{cv.z.raw()};
-    b.ex = ev[0];
-    b.ey = ev[1];
-    b.ew = ev[2];
+    // The centre and half extents in raw Q16: (min + max) 2^11 and (max - min) 2^11, below 2^28 and 2^27.
+    constexpr int32_t kHalfUnit = int32_t{1} << (kBspBoxShift - 1);
+    const int32_t c[3] = {(n.box_min[0] + n.box_max[0]) * kHalfUnit, (n.box_min[1] + n.box_max[1]) * kHalfUnit,
+                          (n.box_min[2] + n.box_max[2]) * kHalfUnit};
+    const int32_t e[3] = {(n.box_max[0] - n.box_min[0]) * kHalfUnit, (n.box_max[1] - n.box_min[1]) * kHalfUnit,
+                          (n.box_max[2] - n.box_min[2]) * kHalfUnit};
+    const Vec3q16 cv = apply_inline(view.to_view, {Q16::from_raw(c[0]), Q16::from_raw(c[1]), Q16::from_raw(c[2])});
+    const int32_t cx = cv.x.raw(), cy = cv.y.raw(), cz = cv.z.raw();
+    const int32_t ex = box_extent(t.rot_abs[0], e), ey = box_extent(t.rot_abs[1], e), ew = box_extent(t.rot_abs[2], e);
+    b.cx = cx;
+    b.cy = cy;
+    b.cw = -int64_t{cz};
+    b.ex = ex;
+    b.ey = ey;
+    b.ew = ew;
     if (b.cw + b.ew < view.near_raw || b.cw - b.ew > view.far_raw) {  // wholly out of depth range
         b.outside = true;
         return b;
@@ -97,31 +127,30 @@ inline SubtreeBox subtree_box(const View& view, const BspNode& n, const BandBoun
     }
     // X = x k / (256 w), Y = -y k / (256 w) in centre-relative subpixels; w > 0 over the whole box. Each
     // plane's linear form a v + c w is largest over the box at a cv + c cw + |a| ev + |c| ew and least at
-    // a cv + c cw - |a| ev - |c| ew: 32x32-bit products (each below 2^61) when the box fits in 31 bits, else
-    // the box is kept (never wrongly skipped, never taken as wholly inside).
-    if (!fits_bits(b.cx, 31) || !fits_bits(b.cy, 31) || !fits_bits(b.cw, 31) || !fits_bits(b.ex, 30) || !fits_bits(b.ey, 30) ||
-        !fits_bits(b.ew, 30))
-        return b;
-    const int32_t k = view.k_q8, cx = static_cast<int32_t>(b.cx), cy = static_cast<int32_t>(b.cy), cw = static_cast<int32_t>(b.cw);
-    const int32_t ex = static_cast<int32_t>(b.ex), ey = static_cast<int32_t>(b.ey), ew = static_cast<int32_t>(b.ew);
-    // Each form's largest value over the box: at the centre plus its spread (the least: minus it).
-    auto largest = [&](int32_t a, int32_t cw_coef, int32_t centre, int32_t half) {
-        return mul32(a, centre) + mul32(cw_coef, cw) + mul32(abs_value(a), half) + mul32(abs_value(cw_coef), ew);
-    };
-    const int32_t x_lo = 256 * (bb.x_first - kSubpixel), x_hi = 256 * (bb.x_last + kSubpixel);
-    const int32_t y_lo = 256 * (bb.y_first - kSubpixel), y_hi = 256 * (bb.y_last + kSubpixel);
-    b.outside = largest(k, -x_lo, cx, ex) < 0 ||  // left of the first column: x k < 256 x_lo w
-                largest(-k, x_hi, cx, ex) < 0 ||  // right of the last: x k > 256 x_hi w
-                largest(-k, -y_lo, cy, ey) < 0 ||  // above the first row: -y k < 256 y_lo w
-                largest(k, y_hi, cy, ey) < 0;      // below the last: -y k > 256 y_hi w
+    // a cv + c cw - |a| ev - |c| ew: 32x32-bit products (each below 2^61). A centre at w = 2^31, outside
+    // int32, keeps the box (never wrongly skipped, never taken as wholly inside); the extents always fit.
+    if (cz == INT32_MIN) return b;
+    const int32_t cw = -cz;
+    // The forms' terms at the centre (a v with a = +-k; c w with c = -x_lo, x_hi, -y_lo, y_hi) and spreads.
+    const int64_t kx = mul32(t.k, cx), ky = mul32(t.k, cy), kx_spread = mul32(t.k_abs, ex), ky_spread = mul32(t.k_abs, ey);
+    const int64_t left = mul32(t.x_lo, cw), right = mul32(t.x_hi, cw), top = mul32(t.y_lo, cw), bottom = mul32(t.y_hi, cw);
+    const int64_t left_spread = kx_spread + mul32(t.x_lo_abs, ew), right_spread = kx_spread + mul32(t.x_hi_abs, ew);
+    const int64_t top_spread = ky_spread + mul32(t.y_lo_abs, ew), bottom_spread = ky_spread + mul32(t.y_hi_abs, ew);
+    b.outside = kx - left + left_spread < 0 ||        // left of the first column: x k < 256 x_lo w
+                right - kx + right_spread < 0 ||      // right of the last: x k > 256 x_hi w
+                -ky - top + top_spread < 0 ||         // above the first row: -y k < 256 y_lo w
+                ky + bottom + bottom_spread < 0;      // below the last: -y k > 256 y_hi w
     if constexpr (kInside) {
-        auto least = [&](int32_t a, int32_t cw_coef, int32_t centre, int32_t half) {
-            return mul32(a, centre) + mul32(cw_coef, cw) - mul32(abs_value(a), half) - mul32(abs_value(cw_coef), ew);
-        };
-        b.inside = !b.outside && b.cw + b.ew <= view.far_raw && least(k, -x_lo, cx, ex) >= 0 && least(-k, x_hi, cx, ex) >= 0 &&
-                   least(-k, -y_lo, cy, ey) >= 0 && least(k, y_hi, cy, ey) >= 0;
+        b.inside = !b.outside && b.cw + b.ew <= view.far_raw && kx - left - left_spread >= 0 && right - kx - right_spread >= 0 &&
+                   -ky - top - top_spread >= 0 && ky + bottom - bottom_spread >= 0;
     }
     return b;
+}
+
+/// subtree_box() for one node (a walk prepares its BoxBand once).
+template <bool kInside = false>
+inline SubtreeBox subtree_box(const View& view, const BspNode& n, const BandBounds& bb) {
+    return subtree_box<kInside>(BoxBand(view, bb), n);
 }
 
 /// The pixels of rows [band_y0, band_y1) that a box subtree_box() did not reject can cover: the whole
@@ -201,6 +230,7 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
     constexpr uint32_t kFront = 0x80000000u, kPlane = 0x40000000u, kIndex = kPlane - 1;
     const FaceShading shading(view, opt);
     const BandBounds bb = band_bounds(frame);
+    const BoxBand box_band(view, bb);
     const VertexProjector project(view);
     const BspFaces faces = bsp_walk_faces(view, eye, tree, opt, stack);
     size_t top = 0;
@@ -213,7 +243,7 @@ FrameStats walk_bsp(const View& view, const Vec3q16& eye, const BspTree& tree, S
         if (next != kBspNone) {  // enter the node: its first subtree now, its triangles and other subtree later
             const BspNode& n = tree.nodes[next];
             ++st.nodes_visited;
-            const SubtreeBox box = subtree_box(view, n, bb);
+            const SubtreeBox box = subtree_box(box_band, n);
             bool skip = box.outside;
             if constexpr (kFrontToBack) {
                 if (!skip) {
