@@ -132,8 +132,10 @@ inline SubtreeBox subtree_box(const BoxBand& t, const BspNode& n) {
     if (cz == INT32_MIN) return b;
     const int32_t cw = -cz;
     // The forms' terms at the centre (a v with a = +-k; c w with c = -x_lo, x_hi, -y_lo, y_hi) and spreads.
-    const int64_t kx = mul32(t.k, cx), ky = mul32(t.k, cy), kx_spread = mul32(t.k_abs, ex), ky_spread = mul32(t.k_abs, ey);
-    const int64_t left = mul32(t.x_lo, cw), right = mul32(t.x_hi, cw), top = mul32(t.y_lo, cw), bottom = mul32(t.y_hi, cw);
+    const int64_t kx = mul32(t.k, cx), ky = mul32(t.k, cy);
+    const int64_t kx_spread = mul32(t.k_abs, ex), ky_spread = mul32(t.k_abs, ey);
+    const int64_t left = mul32(t.x_lo, cw), right = mul32(t.x_hi, cw);
+    const int64_t top = mul32(t.y_lo, cw), bottom = mul32(t.y_hi, cw);
     const int64_t left_spread = kx_spread + mul32(t.x_lo_abs, ew), right_spread = kx_spread + mul32(t.x_hi_abs, ew);
     const int64_t top_spread = ky_spread + mul32(t.y_lo_abs, ew), bottom_spread = ky_spread + mul32(t.y_hi_abs, ew);
     b.outside = kx - left + left_spread < 0 ||        // left of the first column: x k < 256 x_lo w
@@ -141,8 +143,8 @@ inline SubtreeBox subtree_box(const BoxBand& t, const BspNode& n) {
                 -ky - top + top_spread < 0 ||         // above the first row: -y k < 256 y_lo w
                 ky + bottom + bottom_spread < 0;      // below the last: -y k > 256 y_hi w
     if constexpr (kInside) {
-        b.inside = !b.outside && b.cw + b.ew <= view.far_raw && kx - left - left_spread >= 0 && right - kx - right_spread >= 0 &&
-                   -ky - top - top_spread >= 0 && ky + bottom - bottom_spread >= 0;
+        b.inside = !b.outside && b.cw + b.ew <= view.far_raw && kx - left - left_spread >= 0 &&
+                   right - kx - right_spread >= 0 && -ky - top - top_spread >= 0 && ky + bottom - bottom_spread >= 0;
     }
     return b;
 }
