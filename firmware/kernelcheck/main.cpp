@@ -101,7 +101,9 @@ int main() {
     }
     const int draw_setup_case = kernelcheck::run_setup_draw_cases(
         [](const hider::ScreenVertex& a, const hider::ScreenVertex& b, const hider::ScreenVertex& c,
-           hider::KernelSetupIo& io) { return static_cast<hider::KernelSetup>(hider::kernel_draw_v7m(&a, &b, &c, &io)); },
+           hider::KernelSetupIo& io) {
+            return static_cast<hider::KernelSetup>(hider::kernel_draw_v7m(&a, &b, &c, &io));
+        },
         g_buffers);
     if (draw_setup_case >= 0) {
         sh::print("kernelcheck: kernel_draw_v7m differs from the portable set-up and kernel in case ");

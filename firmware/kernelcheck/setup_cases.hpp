@@ -129,7 +129,10 @@ int run_divr_cases(Divr&& divr) {
         uint32_t d = rng.next() >> (rng.next() % 32);
         if (d == 0) d = 1;
         if ((i & 3) == 1) d = (d | 0x80000000u) >> (rng.next() % 16);                       // a full top half
-        if ((i & 3) == 2) d = ((rng.next() | 0x8000u) << 16 | (rng.next() % 3 == 0 ? 0xFFFFu : rng.next() % 4)) >> (rng.next() % 16);
+        if ((i & 3) == 2) {  // a low half near 0 or 0xFFFF
+            const uint32_t low = rng.next() % 3 == 0 ? 0xFFFFu : rng.next() % 4;
+            d = ((rng.next() | 0x8000u) << 16 | low) >> (rng.next() % 16);
+        }
         if (d == 0) d = 1;
         uint64_t q = (uint64_t{rng.next()} << 32 | rng.next()) >> (33 + rng.next() % 32);  // below 2^31
         if ((i & 7) >= 4) {                                                                 // digits at their edges
@@ -141,7 +144,8 @@ int run_divr_cases(Divr&& divr) {
         const uint64_t m = q * d + r;
         const int64_t n = (rng.next() & 1u) != 0 ? -static_cast<int64_t>(m) : static_cast<int64_t>(m);
         const int64_t want = hider::div_round(n, static_cast<int64_t>(d));
-        const int32_t got = divr(static_cast<uint32_t>(static_cast<uint64_t>(n)), static_cast<uint32_t>(static_cast<uint64_t>(n) >> 32), d);
+        const uint64_t un = static_cast<uint64_t>(n);
+        const int32_t got = divr(static_cast<uint32_t>(un), static_cast<uint32_t>(un >> 32), d);
         if (want >= 2147483648 || want <= -2147483648) {
             if (got != INT32_MIN) return i;
         } else if (got != want) {
@@ -180,7 +184,8 @@ int run_setup_draw_cases(Draw&& draw, Buffers& b) {
         const int32_t first = su == hider::KernelSetup::kernel ? u.row : band.row_from;
         band.stop = rng.range(first - 1, first + kMaxRows);
         band.depth_origin = reinterpret_cast<uintptr_t>(b.depth) - static_cast<uintptr_t>(first) * (kWidth * 2);
-        band.color_less_2 = static_cast<intptr_t>(reinterpret_cast<uintptr_t>(b.color) - reinterpret_cast<uintptr_t>(b.depth)) - 2;
+        const uintptr_t color_bytes = reinterpret_cast<uintptr_t>(b.color) - reinterpret_cast<uintptr_t>(b.depth);
+        band.color_less_2 = static_cast<intptr_t>(color_bytes) - 2;
         const uint32_t seed = rng.next();
         auto fill = [&] {
             Rng r{seed | 1u};
@@ -191,7 +196,8 @@ int run_setup_draw_cases(Draw&& draw, Buffers& b) {
         };
         fill();
         if (su == hider::KernelSetup::kernel && u.row < u.end)
-            (void)hider::run_kernel_triangle_portable(u, b.depth, band.stop, {band.color_less_2 + 2, band.stride_bytes});
+            (void)hider::run_kernel_triangle_portable(u, b.depth, band.stop,
+                                                      {band.color_less_2 + 2, band.stride_bytes});
         const uint32_t expect = setup_digest(su, u) ^ buffers_digest(b);
         fill();
         hider::KernelSetupIo io{&band, c.area, &t};

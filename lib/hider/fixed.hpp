@@ -377,7 +377,8 @@ struct RsqrtTable {
     uint16_t v[192];
     constexpr RsqrtTable() : v() {
         // 2^15 / sqrt((2 (64 + i) + 1) / 512) = sqrt(2^30 512 / (2 (64 + i) + 1)), floored.
-        for (uint32_t i = 0; i < 192; ++i) v[i] = static_cast<uint16_t>(isqrt64_bits((uint64_t{1} << 39) / (2 * (64 + i) + 1)));
+        for (uint32_t i = 0; i < 192; ++i)
+            v[i] = static_cast<uint16_t>(isqrt64_bits((uint64_t{1} << 39) / (2 * (64 + i) + 1)));
     }
 };
 inline constexpr RsqrtTable kRsqrtTable{};

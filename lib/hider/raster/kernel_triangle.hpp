@@ -25,8 +25,9 @@ struct KernelBand {
     int32_t stop;                ///< draw rows before this one (none when it is at or above the first)
     intptr_t color_less_2;       ///< bytes from a depth element to its colour, less 2
 };
-static_assert(sizeof(void*) != 4 || (offsetof(KernelBand, stride_bytes) == 28 && offsetof(KernelBand, depth_origin) == 32 &&
-                                     offsetof(KernelBand, stop) == 36 && offsetof(KernelBand, color_less_2) == 40),
+static_assert(sizeof(void*) != 4 || (offsetof(KernelBand, stride_bytes) == 28 &&
+                                     offsetof(KernelBand, depth_origin) == 32 && offsetof(KernelBand, stop) == 36 &&
+                                     offsetof(KernelBand, color_less_2) == 40),
               "kernel band layout");
 
 /// The constants of rows [row_begin, row_end) of a width x height frame with the given depth stride.

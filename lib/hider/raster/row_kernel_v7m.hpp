@@ -22,13 +22,15 @@ namespace hider {
     "add    lr, lr, r8\n"
 
 /// HIDER_V7M_ROWS: the row loop of run_kernel_triangle_v7m(), shared with draw_band_v7m()'s resumes
-/// (band_loop_asm.hpp). Entry: r0 the record + ra, r1..r5 lp lg lz rp rg, r6 rows before a switch, r7 the colour offset less 2, r8 dzdx, r10 the colour; at sp the middle row's depth pointer,
-/// the rows after the switch (-1: none) and the depth row after the last. Exit: the record (r0) holds the
-/// next row's edges and depth, r12 that row's depth pointer (every other register clobbered). r6 must be
-/// at least 1 (the row loop tests after its first row). A span of 0 to 16 pixels (one unsigned compare)
-/// enters a straight run of 16 pixels by a table branch at the (17 - n)-th and falls out of it into the
-/// edge steps; a longer one takes a 16-pixel loop entered Duff-style, a reversed one (rp < lp) none. Uses local labels 71..89 and
-/// 100..116 and 200..215, and the operands ra, n_left, n_x, n_g, n_a, n_z, n_dz.
+/// (band_loop_asm.hpp) and kernel_draw_v7m(). Entry: r0 the record + ra, r1..r5 lp lg lz rp rg, r6 rows
+/// before a switch, r7 the colour offset less 2, r8 dzdx, r10 the colour; at sp the middle row's depth
+/// pointer, the rows after the switch (-1: none) and the depth row after the last. Exit: the record (r0)
+/// holds the next row's edges and depth, r12 that row's depth pointer (every other register clobbered).
+/// r6 must be at least 1 (the row loop tests after its first row). A span of 0 to 16 pixels (one unsigned
+/// compare) enters a straight run of 16 pixels by a table branch at the (17 - n)-th and falls out of it
+/// into the edge steps; a longer one takes a 16-pixel loop entered Duff-style, a reversed one (rp < lp)
+/// none. Uses local labels 71..89, 100..116 and 200..215, and the operands ra, n_left, n_x, n_g, n_a,
+/// n_z, n_dz.
 #define HIDER_V7M_ROWS \
     "72:\n\t"                                /* row */ \
     "sub    r11, r4, r1\n\t"                 /* rp - lp: twice the pixels */ \
