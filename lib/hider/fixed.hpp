@@ -393,8 +393,10 @@ constexpr uint32_t rsqrt_q30(uint32_t x) {
     for (int step = 0; step < 2; ++step) {
         const uint32_t y2_q29 = static_cast<uint32_t>((mul_wide_u(y, y) + (uint64_t{1} << 30)) >> 31);  // y^2 <= 4
         const uint64_t p_q61 = mul_wide_u(x, y2_q29);  // X y^2, about 2^61
-        const int32_t e_q30 = static_cast<int32_t>((static_cast<int64_t>((uint64_t{1} << 61) - p_q61) + (int64_t{1} << 30)) >> 31);
-        y = static_cast<uint32_t>(static_cast<int64_t>(y) + ((mul_wide(static_cast<int32_t>(y >> 1), e_q30) + (int64_t{1} << 29)) >> 30));
+        const int64_t e_q61 = static_cast<int64_t>((uint64_t{1} << 61) - p_q61);  // 1 - X y^2
+        const int32_t e_q30 = static_cast<int32_t>((e_q61 + (int64_t{1} << 30)) >> 31);
+        const int64_t dy = mul_wide(static_cast<int32_t>(y >> 1), e_q30);             // y (1 - X y^2) / 2
+        y = static_cast<uint32_t>(static_cast<int64_t>(y) + ((dy + (int64_t{1} << 29)) >> 30));
     }
     return y;
 }

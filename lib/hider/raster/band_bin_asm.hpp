@@ -41,7 +41,8 @@ constexpr uint32_t band_scale_v(uint32_t rows) { return ((uint32_t{1} << 28) + r
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 /// HIDER_V7M_BIN_LINK: bin_triangles_v7m()'s loop from the vertex indices r0 r1 r2 of a drawable
 /// triangle on: the area, the cull, the link into its band's list, the step to the triangle below (back
-/// to local label 1; falls through when none is left). Uses local labels 0, 2, 4, 5 and 6.
+/// to local label 1; to the caller's local label 7, defined after it, when none is left). Uses local
+/// labels 0, 2, 4, 5 and 6.
 #define HIDER_V7M_BIN_LINK \
     "2:\n\t" \
     "ldrsh  r3, [r6, r0, lsl #3]\n\t"        /* ax */ \

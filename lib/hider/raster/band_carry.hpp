@@ -108,8 +108,7 @@ public:
 
     /// Draws the frame's bands of `rows` rows (the last one may be shorter), each after clearing it to
     /// `background`; false when done() refuses one (the bands before it drawn and counted). Out of line:
-    /// one call a frame, the band loop's values in registers, and draw_binned()'s stack frame as small as
-    /// without it (GCC inlines the constructor there).
+    /// one call a frame, with the band loop's values in registers and off draw_binned()'s frame.
     template <class BandDone>
     __attribute__((noinline)) bool draw(int32_t rows, int32_t height, Rgb background, BandDone& done) {
         const size_t bands = static_cast<size_t>((height + rows - 1) / rows);

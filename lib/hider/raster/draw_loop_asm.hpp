@@ -234,7 +234,8 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
 #endif
 
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
-/// Thumb-2 text shared by draw_flat_v7m() and draw_band_v7m() (band_loop_asm.hpp). HIDER_V7M_AREA:
+/// Thumb-2 text of draw_flat_v7m()'s general loop (the projected one and draw_band_v7m() compute the area
+/// in other registers, keeping the vertex indices or pointers). HIDER_V7M_AREA:
 /// stores the vertex pointers r0 r1 r2 at sp and leaves signed_area() of their vertices in r10 (r0-r3,
 /// r12 and lr clobbered).
 #define HIDER_V7M_AREA \

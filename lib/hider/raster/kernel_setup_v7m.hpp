@@ -424,7 +424,8 @@ namespace hider {
     [next_z] "i"(offsetof(KernelTriangle, next_z)), [next_left] "i"(offsetof(KernelTriangle, next_left))
 
 /// Returns the KernelSetup value. Stack while the plane is computed: sorted vertices and rows (10 words)
-/// above v0 v1 v2 |area| (4 words); during the walkers the plane (5 words) below them. The walker is an
+/// below v0 v1 v2 |area| (4 words, the higher addresses); during the walkers the plane (5 words) below
+/// the rows. The walker is an
 /// assembler macro expanded at each of its three uses (hider_walk: no call and return): in r5 xu, r7 yu,
 /// r8 xl, r9 yl, r3 row, r10 x_origin, r11 y_origin; out r0 px, r1 g - a, r2 a, r3 m, r12 q; the edge
 /// stores (hider_left, hider_right) turn px and q into the kernel's bytes (2 px, 2 q + stride).

@@ -20,7 +20,8 @@ struct KernelBand {
     int32_t y_first, y_last;     ///< centres of the band's first and last row (the band test)
     int32_t row_from, row_end;   ///< rows to set up for: [row_from, row_end)
     int32_t stride_bytes;        ///< bytes from one depth row to the next
-    // Read by kernel_draw_v7m() only (the Cortex-M3 draw loops, which set them; kernel_band() zeroes them):
+    // Read by kernel_draw_v7m() only (the Cortex-M3 draw loops set all three; kernel_band() zeroes
+    // depth_origin and color_less_2 and sets stop = row_end):
     uintptr_t depth_origin;      ///< depth row of row 0 modulo 2^32: row_from's less row_from strides
     int32_t stop;                ///< draw rows before this one (none when it is at or above the first)
     intptr_t color_less_2;       ///< bytes from a depth element to its colour, less 2

@@ -29,7 +29,7 @@ namespace hider {
 /// r6 must be at least 1 (the row loop tests after its first row). A span of 0 to 16 pixels (one unsigned
 /// compare) enters a straight run of 16 pixels by a table branch at the (17 - n)-th and falls out of it
 /// into the edge steps; a longer one takes a 16-pixel loop entered Duff-style, a reversed one (rp < lp)
-/// none. Uses local labels 71..89, 100..116 and 200..215, and the operands ra, n_left, n_x, n_g, n_a,
+/// none. Uses local labels 71..79, 98, 99, 100..116 and 200..215, and the operands ra, n_left, n_x, n_g, n_a,
 /// n_z, n_dz.
 #define HIDER_V7M_ROWS \
     "72:\n\t"                                /* row */ \
@@ -39,12 +39,12 @@ namespace hider {
     "mov    r9, r1\n\t"                      /* p = lp */ \
     "mov    lr, r3\n\t"                      /* z = lz */ \
     "tbh    [pc, r11, lsl #1]\n"              /* n pixels: the halfword at 4 n */ \
-    "89:\n\t" \
-    ".hword (74f - 89b) / 2, 0, (215f - 89b) / 2, 0, (214f - 89b) / 2, 0, (213f - 89b) / 2, 0\n\t" \
-    ".hword (212f - 89b) / 2, 0, (211f - 89b) / 2, 0, (210f - 89b) / 2, 0, (209f - 89b) / 2, 0\n\t" \
-    ".hword (208f - 89b) / 2, 0, (207f - 89b) / 2, 0, (206f - 89b) / 2, 0, (205f - 89b) / 2, 0\n\t" \
-    ".hword (204f - 89b) / 2, 0, (203f - 89b) / 2, 0, (202f - 89b) / 2, 0, (201f - 89b) / 2, 0\n\t" \
-    ".hword (200f - 89b) / 2\n" \
+    "99:\n\t" \
+    ".hword (74f - 99b) / 2, 0, (215f - 99b) / 2, 0, (214f - 99b) / 2, 0, (213f - 99b) / 2, 0\n\t" \
+    ".hword (212f - 99b) / 2, 0, (211f - 99b) / 2, 0, (210f - 99b) / 2, 0, (209f - 99b) / 2, 0\n\t" \
+    ".hword (208f - 99b) / 2, 0, (207f - 99b) / 2, 0, (206f - 99b) / 2, 0, (205f - 99b) / 2, 0\n\t" \
+    ".hword (204f - 99b) / 2, 0, (203f - 99b) / 2, 0, (202f - 99b) / 2, 0, (201f - 99b) / 2, 0\n\t" \
+    ".hword (200f - 99b) / 2\n" \
     HIDER_V7M_PIXEL(200, 116)                 \
     HIDER_V7M_PIXEL(201, 116)                 \
     HIDER_V7M_PIXEL(202, 116)                 \
@@ -116,9 +116,11 @@ namespace hider {
     "mov    lr, r3\n\t" \
     "ubfx   r11, r11, #1, #4\n\t"            /* pixels mod 16: where to enter the 16-pixel turn */ \
     "tbb    [pc, r11]\n"                      \
-    "88:\n\t"                                \
-    ".byte  (100f - 88b) / 2, (115f - 88b) / 2, (114f - 88b) / 2, (113f - 88b) / 2, (112f - 88b) / 2, (111f - 88b) / 2, (110f - 88b) / 2, (109f - 88b) / 2\n\t" \
-    ".byte  (108f - 88b) / 2, (107f - 88b) / 2, (106f - 88b) / 2, (105f - 88b) / 2, (104f - 88b) / 2, (103f - 88b) / 2, (102f - 88b) / 2, (101f - 88b) / 2\n" \
+    "98:\n\t"                                \
+    ".byte  (100f - 98b) / 2, (115f - 98b) / 2, (114f - 98b) / 2, (113f - 98b) / 2\n\t" \
+    ".byte  (112f - 98b) / 2, (111f - 98b) / 2, (110f - 98b) / 2, (109f - 98b) / 2\n\t" \
+    ".byte  (108f - 98b) / 2, (107f - 98b) / 2, (106f - 98b) / 2, (105f - 98b) / 2\n\t" \
+    ".byte  (104f - 98b) / 2, (103f - 98b) / 2, (102f - 98b) / 2, (101f - 98b) / 2\n" \
     HIDER_V7M_PIXEL(100, 116)                 \
     HIDER_V7M_PIXEL(101, 116)                 \
     HIDER_V7M_PIXEL(102, 116)                 \
@@ -148,10 +150,9 @@ namespace hider {
 /// Thumb-2. In the row loop: r0 the right edge's constants (offset 36) with the left edge's just below
 /// (load-multiple decrement-before) and `next` above, r1..r5 lp lg lz rp rg, r6 rows left in this
 /// phase, r7 colour offset less 2, r8 dz, r10 colour; on the stack the middle row's depth pointer, the
-/// rows after the switch (-1: none) and the depth row after the last. Pixel loop, 16 pixels a turn
-/// (a table branch enters a span of 16k + j pixels at the (16 - j)-th, Duff-style, so short spans pay one
-/// loop test a row rather than one every four): r9 the depth pointer, post-incremented, ending at rp (r4),
-/// the colour at r9 + r7, lr z, r12 scratch.
+/// rows after the switch (-1: none) and the depth row after the last. Pixels as HIDER_V7M_ROWS says
+/// (a span of n <= 16 in a straight run entered at its (17 - n)-th pixel, longer ones 16 a turn): r9 the
+/// depth pointer, post-incremented, ending at rp (r4), the colour at r9 + r7, lr z, r12 scratch.
 HIDER_NAKED inline uint16_t* run_kernel_triangle_v7m(KernelTriangle*, uint16_t*, int32_t,
                                                                           const KernelTarget*) {
     __asm__ volatile(

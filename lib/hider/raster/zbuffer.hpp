@@ -236,6 +236,7 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
             band.depth_origin = reinterpret_cast<uintptr_t>(depth) -
                                 static_cast<uintptr_t>(y0) * static_cast<uintptr_t>(band.stride_bytes);
             band.color_less_2 = target.color_offset - 2;
+            band.stop = y1;
 #endif
             for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st, draw, [&](size_t t) {
 #if defined(__ARM_ARCH_6M__)
