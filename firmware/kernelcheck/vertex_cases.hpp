@@ -20,6 +20,20 @@ struct VertexCase {
     hider::Vec3q16 p[kVertexBatch];
 };
 
+/// A camera at the origin looking down -z, y up, 60 degrees: its view transform is the identity (view
+/// points are positions), for the directed cases.
+inline hider::Camera axis_camera(int32_t near_raw, int32_t far_raw) {
+    using hider::Q16;
+    hider::Camera cam;
+    cam.eye = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)};
+    cam.target = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(-65536)};
+    cam.up = {Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)};
+    cam.fovy = hider::Angle::from_bam(0x2AAAAAAAu);  // 60 degrees
+    cam.near = Q16::from_raw(near_raw);
+    cam.far = Q16::from_raw(far_raw);
+    return cam;
+}
+
 /// A position whose view-space point is about (x, y, -w): the view rotation transposed, clamped to the
 /// world range.
 inline hider::Vec3q16 world_of(const hider::View& v, int64_t x, int64_t y, int64_t w) {
@@ -39,14 +53,8 @@ inline void make_vertex_case(Rng& rng, VertexCase& c) {
     if (rng.next() % 8 == 0) {
         // Axis-aligned view (positions are view points) with depths at near times a power of two: there
         // w's top half ends in zeros and n 2^31 / w meets the equalities of its digit tests exactly.
-        hider::Camera cam;
-        cam.eye = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)};
-        cam.target = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(-65536)};
-        cam.up = {Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)};
-        cam.fovy = hider::Angle::from_bam(0x2AAAAAAAu);  // 60 degrees
         const int32_t near = int32_t{1} << rng.range(12, 20);
-        cam.near = Q16::from_raw(near);
-        cam.far = Q16::from_raw(near << 9);
+        hider::Camera cam = axis_camera(near, near << 9);
         const int32_t width = rng.range(1, 640);  // one draw per statement: the same order on every compiler
         const int32_t height = rng.range(1, 480);
         if (hider::make_view(cam, width, height, c.view) == hider::Status::ok) {
@@ -106,13 +114,7 @@ inline void make_vertex_case(Rng& rng, VertexCase& c) {
 /// depths at near times powers of two for n 2^31 / w's digit tests.
 inline void make_directed_case(VertexCase& c) {
     using hider::Q16;
-    hider::Camera cam;
-    cam.eye = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)};
-    cam.target = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(-65536)};
-    cam.up = {Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)};
-    cam.fovy = hider::Angle::from_bam(0x2AAAAAAAu);  // 60 degrees
-    cam.near = Q16::from_raw(4096);
-    cam.far = Q16::from_raw(4096 << 9);
+    hider::Camera cam = axis_camera(4096, 4096 << 9);
     (void)hider::make_view(cam, 160, 120, c.view);
     const int32_t q[4][2] = {{44089, 0}, {-44089, 0}, {0, 44089}, {44089, -44089}};
     for (int i = 0; i < kVertexBatch; ++i) {
@@ -128,13 +130,7 @@ inline void make_directed_case(VertexCase& c) {
 /// (16,340 subpixels at w = 2^24, where a high word lies close to w / 2^10).
 inline void make_edge_case(VertexCase& c) {
     using hider::Q16;
-    hider::Camera cam;
-    cam.eye = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)};
-    cam.target = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(-65536)};
-    cam.up = {Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)};
-    cam.fovy = hider::Angle::from_bam(0x2AAAAAAAu);  // 60 degrees
-    cam.near = Q16::from_raw(4096);
-    cam.far = Q16::from_raw(1 << 29);
+    hider::Camera cam = axis_camera(4096, 1 << 29);
     (void)hider::make_view(cam, 160, 120, c.view);
     const int32_t k = c.view.k_q8;
     const int32_t g = hider::kGuardBand * 256;
@@ -154,13 +150,7 @@ inline void make_edge_case(VertexCase& c) {
 /// multiples, where the transform's floors (and w's ceiling) turn.
 inline void make_transform_case(VertexCase& c) {
     using hider::Q16;
-    hider::Camera cam;
-    cam.eye = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)};
-    cam.target = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(-65536)};
-    cam.up = {Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)};
-    cam.fovy = hider::Angle::from_bam(0x2AAAAAAAu);  // 60 degrees
-    cam.near = Q16::from_raw(256);
-    cam.far = Q16::from_raw(1 << 20);
+    hider::Camera cam = axis_camera(256, 1 << 20);
     (void)hider::make_view(cam, 160, 120, c.view);
     for (int i = 0; i < 3; ++i) c.view.to_view.rot.m[i][i] = hider::Q30::from_raw(hider::Q30::kOne - 1);
     c.view.to_view.trans = {Q16::from_raw(300), Q16::from_raw(-200), Q16::from_raw(-1024)};
@@ -173,14 +163,8 @@ inline void make_transform_case(VertexCase& c) {
 /// (around near).
 inline void make_far_near_case(VertexCase& c) {
     using hider::Q16;
-    hider::Camera cam;
-    cam.eye = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(0)};
-    cam.target = {Q16::from_raw(0), Q16::from_raw(0), Q16::from_raw(-65536)};
-    cam.up = {Q16::from_raw(0), Q16::from_raw(65536), Q16::from_raw(0)};
-    cam.fovy = hider::Angle::from_bam(0x2AAAAAAAu);  // 60 degrees
     const int32_t near = (1 << 30) + 12345;
-    cam.near = Q16::from_raw(near);
-    cam.far = Q16::from_raw(INT32_MAX);
+    hider::Camera cam = axis_camera(near, INT32_MAX);
     (void)hider::make_view(cam, 160, 120, c.view);
     const int32_t base = (1 << 30) + (1 << 20);  // w = base - z
     c.view.to_view.trans.z = Q16::from_raw(-base);

@@ -446,6 +446,22 @@ HIDER_NAKED inline uint32_t kernel_setup_v7m(const ScreenVertex*, const ScreenVe
         : HIDER_V7M_SETUP_OPERANDS);
 }
 
+/// kernel_draw_v7m()'s entry to the row loop, common to its labels 16 and 17: from r5 = y0, lr = end, r4
+/// the band and r6 the record, the stop and n (r11) rows (none: to 95), `row` moved on, r1 the depth row
+/// of y0, r9 the one after the last, r8 -1 (no rows after a switch).
+#define HIDER_V7M_DRAW_ENTRY \
+    "ldr    r2, [r4, %[b_stop]]\n\t" \
+    "cmp    r2, lr\n\t" \
+    "it     gt\n\t" \
+    "movgt  r2, lr\n\t"                 /* stop = min(end, band stop) */ \
+    "subs   r11, r2, r5\n\t"            /* n rows */ \
+    "ble    95f\n\t"                    /* none before the stop: `row` stays y0 */ \
+    "strh   r2, [r6, %[row]]\n\t"       /* the row after this call */ \
+    "ldrd   r12, r9, [r4, %[stride]]\n\t"  /* stride, depth origin */ \
+    "mla    r1, r5, r12, r9\n\t"        /* the depth row of y0 */ \
+    "mla    r9, r11, r12, r1\n\t"       /* the depth row after the last */ \
+    "mov    r8, #-1\n\t"                /* rows after a switch: none */
+
 /// kernel_setup_v7m() and, for a set-up with rows, run_kernel_triangle_v7m() in one call: the set-up's
 /// registers and frame go straight into the row loop (HIDER_V7M_ROWS) from io->band's depth_origin, stop
 /// and color_less_2, without the record's round trip through the caller. The caller stores the colour
@@ -462,31 +478,11 @@ HIDER_NAKED inline uint32_t kernel_draw_v7m(const ScreenVertex*, const ScreenVer
         "16:\n\t"
         "ldr    r5, [sp, #28]\n\t"          // y0
         "ldr    lr, [sp, #56]\n\t"          // end
-        "ldr    r2, [r4, %[b_stop]]\n\t"
-        "cmp    r2, lr\n\t"
-        "it     gt\n\t"
-        "movgt  r2, lr\n\t"                 // stop = min(end, band stop)
-        "subs   r11, r2, r5\n\t"            // n rows
-        "ble    95f\n\t"                    // none before the stop: `row` stays y0
-        "strh   r2, [r6, %[row]]\n\t"       // the row after this call
-        "ldrd   r12, r9, [r4, %[stride]]\n\t"  // stride, depth origin
-        "mla    r1, r5, r12, r9\n\t"        // the depth row of y0
-        "mla    r9, r11, r12, r1\n\t"       // the depth row after the last
-        "mov    r8, #-1\n\t"                // rows after a switch: none
+        HIDER_V7M_DRAW_ENTRY
         "b      1f\n"
         "17:\n\t"
         "ldr    r5, [sp, #28]\n\t"          // y0; lr = end
-        "ldr    r2, [r4, %[b_stop]]\n\t"
-        "cmp    r2, lr\n\t"
-        "it     gt\n\t"
-        "movgt  r2, lr\n\t"                 // stop = min(end, band stop)
-        "subs   r11, r2, r5\n\t"            // n rows
-        "ble    95f\n\t"                    // none before the stop: `row` stays y0
-        "strh   r2, [r6, %[row]]\n\t"       // the row after this call
-        "ldrd   r12, r9, [r4, %[stride]]\n\t"  // stride, depth origin
-        "mla    r1, r5, r12, r9\n\t"        // the depth row of y0
-        "mla    r9, r11, r12, r1\n\t"       // the depth row after the last
-        "mov    r8, #-1\n\t"                // rows after a switch: none
+        HIDER_V7M_DRAW_ENTRY
         "ldr    r3, [sp, #20]\n\t"          // mid
         "sub    r7, r3, r5\n\t"             // m = mid - y0 > 0
         "cmp    r7, r11\n\t"
@@ -518,12 +514,7 @@ HIDER_NAKED inline uint32_t kernel_draw_v7m(const ScreenVertex*, const ScreenVer
         :
         : HIDER_V7M_SETUP_OPERANDS, [b_stop] "i"(offsetof(KernelBand, stop)),
           [b_color] "i"(offsetof(KernelBand, color_less_2)),
-          [n_left] "i"(offsetof(KernelTriangle, next_left) - offsetof(RowKernel, ra)),
-          [n_x] "i"(offsetof(KernelTriangle, next_x) - offsetof(RowKernel, ra)),
-          [n_g] "i"(offsetof(KernelTriangle, next_g) - offsetof(RowKernel, ra)),
-          [n_a] "i"(offsetof(KernelTriangle, next_a) - offsetof(RowKernel, ra)),
-          [n_z] "i"(offsetof(KernelTriangle, next_z) - offsetof(RowKernel, ra)),
-          [n_dz] "i"(offsetof(KernelTriangle, next_dz) - offsetof(RowKernel, ra)));
+          HIDER_V7M_ROWS_OPERANDS);
 }
 #endif
 

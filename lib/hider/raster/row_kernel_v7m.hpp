@@ -147,6 +147,15 @@ namespace hider {
     "sub    r0, r0, %[ra]\n\t" \
     "stm    r0, {r1-r5}\n\t"
 
+/// HIDER_V7M_ROWS's operands relative to ra (its callers give [ra] too).
+#define HIDER_V7M_ROWS_OPERANDS \
+    [n_left] "i"(offsetof(KernelTriangle, next_left) - offsetof(RowKernel, ra)), \
+    [n_x] "i"(offsetof(KernelTriangle, next_x) - offsetof(RowKernel, ra)), \
+    [n_g] "i"(offsetof(KernelTriangle, next_g) - offsetof(RowKernel, ra)), \
+    [n_a] "i"(offsetof(KernelTriangle, next_a) - offsetof(RowKernel, ra)), \
+    [n_z] "i"(offsetof(KernelTriangle, next_z) - offsetof(RowKernel, ra)), \
+    [n_dz] "i"(offsetof(KernelTriangle, next_dz) - offsetof(RowKernel, ra))
+
 /// Thumb-2. In the row loop: r0 the right edge's constants (offset 36) with the left edge's just below
 /// (load-multiple decrement-before) and `next` above, r1..r5 lp lg lz rp rg, r6 rows left in this
 /// phase, r7 colour offset less 2, r8 dz, r10 colour; on the stack the middle row's depth pointer, the
@@ -201,12 +210,7 @@ HIDER_NAKED inline uint16_t* run_kernel_triangle_v7m(KernelTriangle*, uint16_t*,
         : [row] "i"(offsetof(KernelTriangle, row)), [mid] "i"(offsetof(KernelTriangle, mid)),
           [end] "i"(offsetof(KernelTriangle, end)), [dzdx] "i"(offsetof(RowKernel, dzdx)),
           [ra] "i"(offsetof(RowKernel, ra)),
-          [n_left] "i"(offsetof(KernelTriangle, next_left) - offsetof(RowKernel, ra)),
-          [n_x] "i"(offsetof(KernelTriangle, next_x) - offsetof(RowKernel, ra)),
-          [n_g] "i"(offsetof(KernelTriangle, next_g) - offsetof(RowKernel, ra)),
-          [n_a] "i"(offsetof(KernelTriangle, next_a) - offsetof(RowKernel, ra)),
-          [n_z] "i"(offsetof(KernelTriangle, next_z) - offsetof(RowKernel, ra)),
-          [n_dz] "i"(offsetof(KernelTriangle, next_dz) - offsetof(RowKernel, ra)));
+          HIDER_V7M_ROWS_OPERANDS);
 }
 #endif
 
