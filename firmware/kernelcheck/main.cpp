@@ -11,7 +11,8 @@
 // - kernelcheck::kVertexCases batches of positions (vertex_cases.hpp) through project_vertices() (on
 //   ARMv6-M the Thumb-1 loop, on ARMv7-M the Thumb-2 loop, elsewhere project_common()) and the general
 //   per-position path: same vertices; the Thumb-1 loop must also refuse no position inside the view
-//   volume with w < 2^29, the Thumb-2 loop none that project_common() projects.
+//   volume with w < 2^29, the Thumb-2 loop none that project_common() projects; VertexProjector (draw_bsp()'s
+//   projection on first use) position by position must give the same vertices.
 // - kernelcheck::kDrawCases random small scenes (draw_cases.hpp) through draw_flat_kernel() with and
 //   without the assembly draw loop (Thumb-1 on ARMv6-M, Thumb-2 on ARMv7-M; on RV32 both are the C++
 //   loop): same frame and counts.
@@ -112,13 +113,14 @@ int main() {
         return 1;
     }
 #endif
-    uint32_t refused_inside = 0, accepted = 0;
+    uint32_t refused_inside = 0, accepted = 0, projector_differs = 0;
     const int vertex_case = kernelcheck::run_vertex_cases(
         [](const hider::View& v, const hider::Vec3q16* p, hider::ScreenVertex* out) {
             (void)hider::project_vertices(v, {p, kernelcheck::kVertexBatch}, {out, kernelcheck::kVertexBatch});
         },
         kernelcheck::project_each,
         [&](const kernelcheck::VertexCase& c) {
+            projector_differs += kernelcheck::projector_matches(c) ? 0u : 1u;
 #if defined(__ARM_ARCH_6M__)
             // The Thumb-1 loop may stop only outside the view volume or at w >= 2^29.
             kernelcheck::walk_vertex_loop(c, hider::detail::vertex_prep(c.view), hider::project_common_v6m,
@@ -140,7 +142,7 @@ int main() {
 #endif
         },
         g_digests + kernelcheck::kCases + kernelcheck::kSetupCases);
-    if (vertex_case >= 0 || refused_inside != 0) {
+    if (vertex_case >= 0 || refused_inside != 0 || projector_differs != 0) {
         if (vertex_case >= 0) {
             sh::print("kernelcheck: project_vertices differs from the per-position path in case ");
             sh::print_u32(static_cast<uint32_t>(vertex_case));
@@ -150,6 +152,11 @@ int main() {
             sh::print("kernelcheck: the vertex loop refused ");
             sh::print_u32(refused_inside);
             sh::print(" positions inside the view volume\n");
+        }
+        if (projector_differs != 0) {
+            sh::print("kernelcheck: VertexProjector differs from the per-position path in ");
+            sh::print_u32(projector_differs);
+            sh::print(" cases\n");
         }
         return 1;
     }

@@ -162,10 +162,39 @@ inline uint32_t buffers_digest(const Buffers& b) {
     return fnv.h;
 }
 
+constexpr int kSteepCases = 8;
+
+/// Directed set-ups whose depth step rounds to 2^31 or more (generic, the set-up's exit for a plane
+/// quotient too large), which random vertices reach only by chance: in a 32 x 8 frame, a triangle one
+/// subpixel wide through a column centre (a step in x) or one subpixel tall through a row centre (a step
+/// in y), with its depth going from near to far across that subpixel; case i picks the axis (bit 0), the
+/// vertex order, so the sign of the area (bit 1), and which end is far (bit 2).
+inline SetupCase make_steep_case(int i) {
+    SetupCase c{};
+    c.band = hider::kernel_band(32, 8, 0, 8, 64);
+    const int32_t x = c.band.x_origin + 5 * hider::kSubpixel, y = c.band.y_origin + 2 * hider::kSubpixel;
+    const bool in_x = (i & 1) == 0;
+    const uint32_t near = hider::kDepthNear, far = hider::kDepthFar;
+    const uint32_t z0 = (i & 4) != 0 ? far : near, z1 = (i & 4) != 0 ? near : far;
+    hider::ScreenVertex v[3];
+    v[0] = {static_cast<int16_t>(x), static_cast<int16_t>(y), z0};
+    v[1] = in_x ? hider::ScreenVertex{static_cast<int16_t>(x + 1), static_cast<int16_t>(y), z1}
+                : hider::ScreenVertex{static_cast<int16_t>(x), static_cast<int16_t>(y + 1), z1};
+    v[2] = in_x ? hider::ScreenVertex{static_cast<int16_t>(x), static_cast<int16_t>(y + 3 * hider::kSubpixel), z0}
+                : hider::ScreenVertex{static_cast<int16_t>(x + 3 * hider::kSubpixel), static_cast<int16_t>(y), z0};
+    const int order = (i & 2) != 0 ? 1 : 0;
+    c.v[0] = v[0];
+    c.v[1] = v[1 + order];
+    c.v[2] = v[2 - order];
+    c.area = hider::TriangleRaster::signed_area(c.v[0], c.v[1], c.v[2]);
+    return c;
+}
+
 /// A set-up that also draws (kernel_draw_v7m() on ARMv7-M) against kernel_setup_portable() and then
 /// run_kernel_triangle_portable(): set-up cases of frames at most kWidth wide, whose band stops from a row
 /// above the first one to kMaxRows rows below it (so that the middle row falls before, on and after the
-/// stop), drawn into `b` (random contents, the first row to draw on its first row): same outcome, record
+/// stop), drawn into `b` (random contents, the first row to draw on its first row), the first
+/// kSteepCases of them make_steep_case()'s: same outcome, record
 /// (setup_digest() of the state left) and buffers. `draw` is (a, b, c, io) -> KernelSetup with io.out's
 /// colour set. Returns the first case that differs, or -1.
 template <class Draw>
@@ -173,8 +202,12 @@ int run_setup_draw_cases(Draw&& draw, Buffers& b) {
     Rng rng{kSetupSeed ^ 0x9E3779B9u};
     for (int i = 0; i < kSetupCases; ++i) {
         SetupCase c{};
-        do c = make_setup_case(rng);
-        while ((c.band.x_last - c.band.x_origin) / hider::kSubpixel + 1 > kWidth);
+        if (i < kSteepCases) {
+            c = make_steep_case(i);
+        } else {
+            do c = make_setup_case(rng);
+            while ((c.band.x_last - c.band.x_origin) / hider::kSubpixel + 1 > kWidth);
+        }
         hider::KernelBand& band = c.band;
         band.stride_bytes = kWidth * 2;
         hider::KernelTriangle u{};

@@ -189,6 +189,19 @@ inline void project_each(const hider::View& v, const hider::Vec3q16* p, hider::S
     for (int i = 0; i < kVertexBatch; ++i) hider::detail::project_one(v, hider::to_view_point(v, p[i]), out[i]);
 }
 
+/// VertexProjector (a walk's projection on first use: the assembly loop for one position on ARMv7-M, the
+/// general path for those it refuses) position by position over case c against project_each(): true when
+/// every vertex is the same.
+inline bool projector_matches(const VertexCase& c) {
+    static hider::ScreenVertex one[kVertexBatch], each[kVertexBatch];
+    const hider::VertexProjector project(c.view);
+    for (int i = 0; i < kVertexBatch; ++i) project(c.p[i], one[i]);
+    project_each(c.view, c.p, each);
+    for (int i = 0; i < kVertexBatch; ++i)
+        if (one[i].x != each[i].x || one[i].y != each[i].y || one[i].z != each[i].z) return false;
+    return true;
+}
+
 /// Walks an assembly vertex loop (`loop` with constants `prep`, as project_vertices() drives it) over case
 /// c: adds the positions it projected to `accepted`, and to `refused_inside` those it stopped at although
 /// `projectable(view point)` says it should have projected them.
