@@ -36,6 +36,25 @@ static_assert(sizeof(void*) != 4 || (offsetof(DrawLoopArm, view_z) == 32 && offs
               "draw loop layout");
 static_assert(sizeof(Tri) == 6 && sizeof(Normal14) == 6, "a triangle's normal sits a fixed offset from it");
 
+/// The draw loops' operands: DrawLoopArm's fields (d_*, view_z0..2, base_*), KernelSetupIo's area and
+/// out, the record's row, end and colour, and a vertex's z.
+#define HIDER_DRAW_LOOP_OPERANDS \
+    [d_end] "i"(offsetof(detail::DrawLoopArm, end)), [d_verts] "i"(offsetof(detail::DrawLoopArm, verts)), \
+    [d_cull] "i"(offsetof(detail::DrawLoopArm, cull)), [d_culled] "i"(offsetof(detail::DrawLoopArm, culled)), \
+    [d_drawn] "i"(offsetof(detail::DrawLoopArm, drawn)), [d_io] "i"(offsetof(detail::DrawLoopArm, io)), \
+    [d_normals] "i"(offsetof(detail::DrawLoopArm, normals_offset)), \
+    [d_projected] "i"(offsetof(detail::DrawLoopArm, projected)), \
+    [view_z0] "i"(offsetof(detail::DrawLoopArm, view_z)), [view_z1] "i"(offsetof(detail::DrawLoopArm, view_z) + 4), \
+    [view_z2] "i"(offsetof(detail::DrawLoopArm, view_z) + 8), [base_r] "i"(offsetof(detail::DrawLoopArm, base_r)), \
+    [base_g] "i"(offsetof(detail::DrawLoopArm, base_g)), [base_b] "i"(offsetof(detail::DrawLoopArm, base_b)), \
+    [d_depth] "i"(offsetof(detail::DrawLoopArm, depth)), [d_y0] "i"(offsetof(detail::DrawLoopArm, y0)), \
+    [d_stride] "i"(offsetof(detail::DrawLoopArm, stride_bytes)), [d_y1] "i"(offsetof(detail::DrawLoopArm, y1)), \
+    [d_target] "i"(offsetof(detail::DrawLoopArm, target)), [io_area] "i"(offsetof(KernelSetupIo, area)), \
+    [io_out] "i"(offsetof(KernelSetupIo, out)), [k_row] "i"(offsetof(KernelTriangle, row)), \
+    [k_end] "i"(offsetof(KernelTriangle, end)), \
+    [k_color] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, color)), \
+    [v_z] "i"(offsetof(ScreenVertex, z))
+
 inline DrawLoopArm draw_loop_arm(const Tri* tris, const Mesh& mesh, Span<const ScreenVertex> verts,
                                  const FaceShading& shading, bool cull, KernelSetupIo& io, uint16_t* depth, int32_t y0,
                                  int32_t stride, int32_t y1, const KernelTarget& target) {
@@ -74,9 +93,9 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
         "sub    sp, #16\n\t"
         "movs   r4, r0\n\t"
         "movs   r6, r1\n\t"
-        "ldr    r0, [r6, #0]\n\t"
+        "ldr    r0, [r6, %[d_end]]\n\t"
         "mov    r8, r0\n\t"
-        "ldr    r0, [r6, #4]\n\t"
+        "ldr    r0, [r6, %[d_verts]]\n\t"
         "mov    r9, r0\n"
         "1:\n\t"
         "cmp    r4, r8\n\t"
@@ -91,13 +110,13 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
         "adds   r1, r1, r3\n\t"
         "lsls   r2, r2, #3\n\t"
         "adds   r2, r2, r3\n\t"
-        "ldr    r3, [r0, #4]\n\t"
+        "ldr    r3, [r0, %[v_z]]\n\t"
         "cmp    r3, #0\n\t"
         "beq    89f\n\t"                        // a vertex outside a clip plane: back to C++
-        "ldr    r3, [r1, #4]\n\t"
+        "ldr    r3, [r1, %[v_z]]\n\t"
         "cmp    r3, #0\n\t"
         "beq    89f\n\t"
-        "ldr    r3, [r2, #4]\n\t"
+        "ldr    r3, [r2, %[v_z]]\n\t"
         "cmp    r3, #0\n\t"
         "beq    89f\n\t"
         "str    r0, [sp, #0]\n\t"
@@ -121,12 +140,12 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
         "subs   r7, r7, r2\n\t"                 // signed_area(a, b, c)
         "beq    8f\n\t"                         // zero: nothing
         "bmi    2f\n\t"                         // counter-clockwise: drawn
-        "ldr    r0, [r6, #8]\n\t"
+        "ldr    r0, [r6, %[d_cull]]\n\t"
         "cmp    r0, #0\n\t"
         "beq    2f\n\t"                         // not culling: drawn
-        "ldr    r0, [r6, #12]\n\t"
+        "ldr    r0, [r6, %[d_culled]]\n\t"
         "adds   r0, r0, #1\n\t"
-        "str    r0, [r6, #12]\n"                // culled
+        "str    r0, [r6, %[d_culled]]\n"        // culled
         "8:\n\t"
         "adds   r4, r4, #6\n\t"
         "b      1b\n"
@@ -134,8 +153,8 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
         "b      90f\n"
         "2:\n\t"
         "str    r7, [sp, #12]\n\t"
-        "ldr    r3, [r6, #20]\n\t"              // io
-        "str    r7, [r3, #4]\n\t"               // io->area
+        "ldr    r3, [r6, %[d_io]]\n\t"          // io
+        "str    r7, [r3, %[io_area]]\n\t"       // io->area
         "ldr    r0, [sp, #0]\n\t"
         "ldr    r1, [sp, #4]\n\t"
         "ldr    r2, [sp, #8]\n\t"
@@ -146,33 +165,33 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
         "beq    8b\n\t"                         // none
         "b      90f\n"                          // generic: back to C++
         "3:\n\t"
-        "ldr    r0, [r6, #16]\n\t"
+        "ldr    r0, [r6, %[d_drawn]]\n\t"
         "adds   r0, r0, #1\n\t"
-        "str    r0, [r6, #16]\n\t"              // drawn
-        "ldr    r3, [r6, #20]\n\t"
-        "ldr    r5, [r3, #8]\n\t"               // the triangle record
-        "ldrh   r0, [r5, #58]\n\t"
+        "str    r0, [r6, %[d_drawn]]\n\t"       // drawn
+        "ldr    r3, [r6, %[d_io]]\n\t"
+        "ldr    r5, [r3, %[io_out]]\n\t"        // the triangle record
+        "ldrh   r0, [r5, %[k_row]]\n\t"
         "sxth   r0, r0\n\t"                     // row
-        "ldrh   r1, [r5, #62]\n\t"
+        "ldrh   r1, [r5, %[k_end]]\n\t"
         "sxth   r1, r1\n\t"                     // end
         "cmp    r0, r1\n\t"
         "bge    8b\n\t"                         // no row
         // FaceShading::color565(): b = N.z (Q16) from the view rotation's third row, -N.z for a back
         // face (area > 0), clamped to [0, 2^16]; channel (base b + 2^15) >> 16, packed RGB565.
-        "ldr    r1, [r6, #24]\n\t"
+        "ldr    r1, [r6, %[d_normals]]\n\t"
         "adds   r1, r1, r4\n\t"                 // the triangle's normal
         "ldrh   r2, [r1]\n\t"
         "sxth   r2, r2\n\t"
-        "ldr    r3, [r6, #32]\n\t"
+        "ldr    r3, [r6, %[view_z0]]\n\t"
         "muls   r2, r3, r2\n\t"
         "ldrh   r7, [r1, #2]\n\t"
         "sxth   r7, r7\n\t"
-        "ldr    r3, [r6, #36]\n\t"
+        "ldr    r3, [r6, %[view_z1]]\n\t"
         "muls   r7, r3, r7\n\t"
         "adds   r2, r2, r7\n\t"
         "ldrh   r7, [r1, #4]\n\t"
         "sxth   r7, r7\n\t"
-        "ldr    r3, [r6, #40]\n\t"
+        "ldr    r3, [r6, %[view_z2]]\n\t"
         "muls   r7, r3, r7\n\t"
         "adds   r2, r2, r7\n\t"
         "asrs   r2, r2, #12\n\t"
@@ -193,32 +212,32 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
         "6:\n\t"
         "movs   r3, #1\n\t"
         "lsls   r3, r3, #15\n\t"
-        "ldr    r1, [r6, #44]\n\t"
+        "ldr    r1, [r6, %[base_r]]\n\t"
         "muls   r1, r2, r1\n\t"
         "adds   r1, r1, r3\n\t"
         "lsrs   r1, r1, #19\n\t"
         "lsls   r1, r1, #11\n\t"                // red
-        "ldr    r7, [r6, #48]\n\t"
+        "ldr    r7, [r6, %[base_g]]\n\t"
         "muls   r7, r2, r7\n\t"
         "adds   r7, r7, r3\n\t"
         "lsrs   r7, r7, #18\n\t"
         "lsls   r7, r7, #5\n\t"
         "orrs   r1, r7\n\t"                     // green
-        "ldr    r7, [r6, #52]\n\t"
+        "ldr    r7, [r6, %[base_b]]\n\t"
         "muls   r7, r2, r7\n\t"
         "adds   r7, r7, r3\n\t"
         "lsrs   r7, r7, #19\n\t"
         "orrs   r1, r7\n\t"                     // blue
-        "str    r1, [r5, #52]\n\t"              // k.color
-        "ldr    r1, [r6, #60]\n\t"
+        "str    r1, [r5, %[k_color]]\n\t"       // k.color
+        "ldr    r1, [r6, %[d_y0]]\n\t"
         "subs   r0, r0, r1\n\t"
-        "ldr    r1, [r6, #64]\n\t"
+        "ldr    r1, [r6, %[d_stride]]\n\t"
         "muls   r0, r1, r0\n\t"
-        "ldr    r1, [r6, #56]\n\t"
+        "ldr    r1, [r6, %[d_depth]]\n\t"
         "adds   r1, r1, r0\n\t"                 // the depth row of `row`
         "movs   r0, r5\n\t"
-        "ldr    r2, [r6, #68]\n\t"
-        "ldr    r3, [r6, #72]\n\t"
+        "ldr    r2, [r6, %[d_y1]]\n\t"
+        "ldr    r3, [r6, %[d_target]]\n\t"
         "bl     %c[kernel]\n\t"
         "b      8b\n"
         "90:\n\t"
@@ -229,7 +248,7 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
         "mov    r9, r5\n\t"
         "pop    {r4-r7, pc}\n"
         :
-        : [setup] "i"(kernel_setup_v6m), [kernel] "i"(run_kernel_triangle_v6m));
+        : [setup] "i"(kernel_setup_v6m), [kernel] "i"(run_kernel_triangle_v6m), HIDER_DRAW_LOOP_OPERANDS);
 }
 #endif
 
@@ -302,14 +321,14 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "sub    sp, #12\n\t"
         "mov    r4, r0\n\t"
         "mov    r5, r1\n\t"
-        "ldr    r6, [r5, #0]\n\t"
-        "ldr    r7, [r5, #4]\n\t"
-        "ldr    r9, [r5, #20]\n\t"
+        "ldr    r6, [r5, %[d_end]]\n\t"
+        "ldr    r7, [r5, %[d_verts]]\n\t"
+        "ldr    r9, [r5, %[d_io]]\n\t"
         "movs   r11, #0\n\t"
         "cmp    r4, r6\n\t"
         "beq    90f\n\t"
-        "ldr    r0, [r5, #8]\n\t"
-        "ldr    r1, [r5, #28]\n\t"
+        "ldr    r0, [r5, %[d_cull]]\n\t"
+        "ldr    r1, [r5, %[d_projected]]\n\t"
         "ands   r0, r0, r1\n\t"
         "beq    1f\n"                        // not culling, or a vertex outside a clip plane
         "20:\n\t"                              // culling, every vertex projected
@@ -339,12 +358,12 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "bne    20b\n\t"
         "b      90f\n"
         "21:\n\t"                              // FaceShading::color565(), as in draw_flat_v6m
-        "ldr    r12, [r5, #24]\n\t"
+        "ldr    r12, [r5, %[d_normals]]\n\t"
         "add    r12, r12, r4\n\t"              // the triangle's normal
         HIDER_V7M_COLOR565_IN(r12, r8, r3, lr)
-        "ldr    r3, [r9, #8]\n\t"              // the triangle record
-        "str    r12, [r3, #52]\n\t"            // k.color
-        "str    r10, [r9, #4]\n\t"             // io->area
+        "ldr    r3, [r9, %[io_out]]\n\t"        // the triangle record
+        "str    r12, [r3, %[k_color]]\n\t"      // k.color
+        "str    r10, [r9, %[io_area]]\n\t"      // io->area
         "add    r0, r7, r0, lsl #3\n\t"
         "add    r1, r7, r1, lsl #3\n\t"
         "add    r2, r7, r2, lsl #3\n\t"
@@ -352,9 +371,9 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "bl     %c[draw]\n\t"                  // set up and drawn
         "cmp    r0, #1\n\t"
         "bne    22f\n\t"
-        "ldr    r0, [r5, #16]\n\t"
+        "ldr    r0, [r5, %[d_drawn]]\n\t"
         "adds   r0, r0, #1\n\t"
-        "str    r0, [r5, #16]\n\t"             // drawn
+        "str    r0, [r5, %[d_drawn]]\n\t"       // drawn
         "b      28b\n"
         "22:\n\t"
         "cmp    r0, #0\n\t"
@@ -369,9 +388,9 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "add    r0, r7, r0, lsl #3\n\t"
         "add    r1, r7, r1, lsl #3\n\t"
         "add    r2, r7, r2, lsl #3\n\t"
-        "ldr    r3, [r0, #4]\n\t"
-        "ldr    r12, [r1, #4]\n\t"
-        "ldr    lr, [r2, #4]\n\t"
+        "ldr    r3, [r0, %[v_z]]\n\t"
+        "ldr    r12, [r1, %[v_z]]\n\t"
+        "ldr    lr, [r2, %[v_z]]\n\t"
         "cmp    r3, #0\n\t"
         "it     ne\n\t"
         "cmpne  r12, #0\n\t"
@@ -382,43 +401,40 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "cmp    r10, #0\n\t"
         "beq    8f\n\t"                         // zero: nothing
         "bmi    2f\n\t"                         // counter-clockwise: drawn
-        "ldr    r0, [r5, #8]\n\t"
+        "ldr    r0, [r5, %[d_cull]]\n\t"
         "cbz    r0, 2f\n\t"                     // not culling: drawn
         "adds   r11, r11, #1\n"                  // culled
         "8:\n\t"
         "adds   r4, r4, #6\n\t"
         "b      1b\n"
         "2:\n\t"                               // FaceShading::color565(), as in draw_flat_v6m
-        "ldr    r1, [r5, #24]\n\t"
+        "ldr    r1, [r5, %[d_normals]]\n\t"
         "add    r1, r1, r4\n\t"                 // the triangle's normal
         HIDER_V7M_COLOR565
-        "ldr    r12, [r9, #8]\n\t"              // the triangle record
-        "str    r1, [r12, #52]\n\t"             // k.color
-        "str    r10, [r9, #4]\n\t"              // io->area
+        "ldr    r12, [r9, %[io_out]]\n\t"       // the triangle record
+        "str    r1, [r12, %[k_color]]\n\t"      // k.color
+        "str    r10, [r9, %[io_area]]\n\t"      // io->area
         "ldm    sp, {r0, r1, r2}\n\t"
         "mov    r3, r9\n\t"
         "bl     %c[draw]\n\t"                   // set up and drawn
         "cmp    r0, #1\n\t"
         "bne    3f\n\t"
-        "ldr    r0, [r5, #16]\n\t"
+        "ldr    r0, [r5, %[d_drawn]]\n\t"
         "adds   r0, r0, #1\n\t"
-        "str    r0, [r5, #16]\n\t"              // drawn
+        "str    r0, [r5, %[d_drawn]]\n\t"       // drawn
         "b      8b\n"
         "3:\n\t"
         "cmp    r0, #0\n\t"
         "beq    8b\n"                           // none
         "90:\n\t"
-        "ldr    r0, [r5, #12]\n\t"
+        "ldr    r0, [r5, %[d_culled]]\n\t"
         "add    r0, r0, r11\n\t"
-        "str    r0, [r5, #12]\n\t"              // culled
+        "str    r0, [r5, %[d_culled]]\n\t"      // culled
         "mov    r0, r4\n\t"
         "add    sp, #12\n\t"
         "pop    {r4-r11, pc}\n"
         :
-        : [draw] "i"(kernel_draw_v7m),
-          [view_z0] "i"(offsetof(detail::DrawLoopArm, view_z)), [view_z1] "i"(offsetof(detail::DrawLoopArm, view_z) + 4),
-          [view_z2] "i"(offsetof(detail::DrawLoopArm, view_z) + 8), [base_r] "i"(offsetof(detail::DrawLoopArm, base_r)),
-          [base_g] "i"(offsetof(detail::DrawLoopArm, base_g)), [base_b] "i"(offsetof(detail::DrawLoopArm, base_b)));
+        : [draw] "i"(kernel_draw_v7m), HIDER_DRAW_LOOP_OPERANDS);
 }
 #endif
 
