@@ -18,6 +18,33 @@ namespace hider {
 /// estimate, 60 the rounded plane quotient (r1:r0 -> r0, or the generic exit).
 HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVertex*,
                                                                   const ScreenVertex*, KernelSetupIo*) {
+    // The record's field offsets as assembler symbols hks_k_*, for the body below (whose own operands
+    // would pass GCC's limit of 30).
+    __asm__ volatile(
+        ".equ hks_k_top, %c[top]\n\t" ".equ hks_k_row, %c[row]\n\t" ".equ hks_k_mid, %c[mid]\n\t"
+        ".equ hks_k_end, %c[end]\n\t"
+        ".equ hks_k_lx, %c[lx]\n\t" ".equ hks_k_lg, %c[lg]\n\t" ".equ hks_k_lz, %c[lz]\n\t" ".equ hks_k_la, %c[la]\n\t"
+        ".equ hks_k_lm, %c[lm]\n\t" ".equ hks_k_lstep, %c[lstep]\n\t" ".equ hks_k_ldz, %c[ldz]\n\t"
+        ".equ hks_k_rx, %c[rx]\n\t"
+        ".equ hks_k_rg, %c[rg]\n\t" ".equ hks_k_ra, %c[ra]\n\t" ".equ hks_k_rm, %c[rm]\n\t"
+        ".equ hks_k_rstep, %c[rstep]\n\t"
+        ".equ hks_k_dzdx, %c[dzdx]\n\t" ".equ hks_k_next_x, %c[next_x]\n\t" ".equ hks_k_next_g, %c[next_g]\n\t"
+        ".equ hks_k_next_a, %c[next_a]\n\t"
+        ".equ hks_k_next_m, %c[next_m]\n\t" ".equ hks_k_next_step, %c[next_step]\n\t"
+        ".equ hks_k_next_z, %c[next_z]\n\t" ".equ hks_k_next_dz, %c[next_dz]\n\t"
+        :
+        : [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
+          [mid] "i"(offsetof(KernelTriangle, mid)), [end] "i"(offsetof(KernelTriangle, end)),
+          [lx] "i"(offsetof(RowKernel, lx)), [lg] "i"(offsetof(RowKernel, lg)),
+          [lz] "i"(offsetof(RowKernel, lz)), [la] "i"(offsetof(RowKernel, la)),
+          [lm] "i"(offsetof(RowKernel, lm)), [lstep] "i"(offsetof(RowKernel, lstep)),
+          [ldz] "i"(offsetof(RowKernel, ldz)), [rx] "i"(offsetof(RowKernel, rx)),
+          [rg] "i"(offsetof(RowKernel, rg)), [ra] "i"(offsetof(RowKernel, ra)),
+          [rm] "i"(offsetof(RowKernel, rm)), [rstep] "i"(offsetof(RowKernel, rstep)),
+          [dzdx] "i"(offsetof(RowKernel, dzdx)), [next_x] "i"(offsetof(KernelTriangle, next_x)),
+          [next_g] "i"(offsetof(KernelTriangle, next_g)), [next_a] "i"(offsetof(KernelTriangle, next_a)),
+          [next_m] "i"(offsetof(KernelTriangle, next_m)), [next_step] "i"(offsetof(KernelTriangle, next_step)),
+          [next_z] "i"(offsetof(KernelTriangle, next_z)), [next_dz] "i"(offsetof(KernelTriangle, next_dz)));
     __asm__ volatile(
         ".syntax unified\n\t"
         ".equ hks_v0, 0\n\t" ".equ hks_v1, 4\n\t" ".equ hks_v2, 8\n\t" ".equ hks_area, 12\n\t"
@@ -95,7 +122,7 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         "cmp    r1, r5\n\t" "ble 1f\n\t" "movs r5, r1\n" "1:\n\t"
         "cmp    r2, r3\n\t" "bge 1f\n\t" "movs r3, r2\n" "1:\n\t"
         "cmp    r2, r5\n\t" "ble 1f\n\t" "movs r5, r2\n" "1:\n\t"
-        "ldr    r7, [r4, #0]\n\t"             // x_origin
+        "ldr    r7, [r4, %[x_origin]]\n\t"
         "cmp    r3, r7\n\t"
         "bge    1f\n\t"
         "b      92f\n"                        // past the columns: generic
@@ -114,7 +141,7 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         "ble    1f\n\t"
         "b      90f\n"                        // no column centre in the box: none
         "1:\n\t"
-        "ldr    r7, [r4, #4]\n\t"             // y_origin
+        "ldr    r7, [r4, %[y_origin]]\n\t"
         "ldr    r0, [sp, #hks_t]\n\t"
         "asrs   r0, r0, #16\n\t"
         "subs   r0, r0, r7\n\t"
@@ -141,10 +168,10 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         "ldr    r3, [r4, %[row_end]]\n\t"
         "cmp    r2, r3\n\t" "bge 1f\n\t" "movs r3, r2\n" "1:\n\t"   // y1 = min(bottom, row_end)
         "ldr    r6, [sp, #hks_out]\n\t"
-        "strh   r0, [r6, #56]\n\t"
-        "strh   r5, [r6, #58]\n\t"
-        "strh   r1, [r6, #60]\n\t"
-        "strh   r3, [r6, #62]\n\t"
+        "strh   r0, [r6, #hks_k_top]\n\t"
+        "strh   r5, [r6, #hks_k_row]\n\t"
+        "strh   r1, [r6, #hks_k_mid]\n\t"
+        "strh   r3, [r6, #hks_k_end]\n\t"
         "str    r1, [sp, #hks_mid]\n\t"
         "str    r5, [sp, #hks_y0]\n\t"
         "str    r3, [sp, #hks_y1]\n\t"
@@ -209,14 +236,14 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         "bl     60f\n\t"                      // dzdx
         "str    r0, [sp, #hks_dzdx]\n\t"
         "ldr    r6, [sp, #hks_out]\n\t"
-        "str    r0, [r6, #48]\n\t"
+        "str    r0, [r6, #hks_k_dzdx]\n\t"
         "hks_numerator hks_e\n\t"
         "bl     60f\n\t"                      // dzdy
         "str    r0, [sp, #hks_dzdy]\n\t"
         ".purgem hks_numerator\n\t"
         // Reference pixel (the cell holding v0) and z_ref = z0 + round((dzdx ox + dzdy oy) / 16).
         "ldr    r4, [sp, #hks_band]\n\t"
-        "ldr    r1, [r4, #0]\n\t"
+        "ldr    r1, [r4, %[x_origin]]\n\t"
         "ldr    r2, [sp, #hks_x0]\n\t"
         "subs   r3, r2, r1\n\t"
         "adds   r3, #8\n\t"
@@ -225,7 +252,7 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         "lsls   r3, r3, #4\n\t"
         "adds   r3, r3, r1\n\t"
         "subs   r3, r3, r2\n\t"               // ox
-        "ldr    r1, [r4, #4]\n\t"
+        "ldr    r1, [r4, %[y_origin]]\n\t"
         "ldr    r2, [sp, #hks_yv0]\n\t"
         "subs   r5, r2, r1\n\t"
         "adds   r5, #8\n\t"
@@ -371,24 +398,27 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         "str    r1, [sp, #hks_mm]\n\t"        // m = dg mod a
         "ldr    r3, [sp, #hks_wlr]\n\t"
         "bx     r3\n"
-        // Left edge store (with its depth), r2 the edge's row.
-        "44:\n\t"
+        // The edge stores: hks_edge stores the walker in the frame (x 2 px, g, a, m and 2 q + stride) at
+        // the record offsets given; hks_depth the plane at (px, r2) and dzdy + dzdx q (the left edge's).
+        ".macro hks_edge x, g, a, m, step\n\t"
         "ldr    r6, [sp, #hks_out]\n\t"
         "ldr    r4, [sp, #hks_band]\n\t"
         "ldr    r0, [sp, #hks_px]\n\t"
         "lsls   r1, r0, #1\n\t"
-        "str    r1, [r6, #0]\n\t"
+        "str    r1, [r6, #\\x]\n\t"
         "ldr    r1, [sp, #hks_g]\n\t"
-        "str    r1, [r6, #4]\n\t"
+        "str    r1, [r6, #\\g]\n\t"
         "ldr    r1, [sp, #hks_a]\n\t"
-        "str    r1, [r6, #20]\n\t"
+        "str    r1, [r6, #\\a]\n\t"
         "ldr    r1, [sp, #hks_mm]\n\t"
-        "str    r1, [r6, #24]\n\t"
+        "str    r1, [r6, #\\m]\n\t"
         "ldr    r3, [sp, #hks_q]\n\t"
         "lsls   r1, r3, #1\n\t"
         "ldr    r5, [r4, %[stride]]\n\t"
         "adds   r1, r1, r5\n\t"
-        "str    r1, [r6, #28]\n\t"       // 2 q + stride
+        "str    r1, [r6, #\\step]\n\t"       // 2 q + stride
+        ".endm\n\t"
+        ".macro hks_depth z, dz\n\t"
         "ldr    r5, [sp, #hks_refpx]\n\t"
         "subs   r0, r0, r5\n\t"
         "ldr    r5, [sp, #hks_dzdx]\n\t"
@@ -400,68 +430,28 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         "adds   r0, r0, r2\n\t"
         "ldr    r1, [sp, #hks_zref]\n\t"
         "adds   r0, r0, r1\n\t"
-        "str    r0, [r6, #8]\n\t"          // plane.at(px, row)
+        "str    r0, [r6, #\\z]\n\t"          // plane.at(px, row)
         "muls   r3, r5, r3\n\t"
         "adds   r3, r3, r7\n\t"
-        "str    r3, [r6, #32]\n\t"         // dzdy + dzdx q
+        "str    r3, [r6, #\\dz]\n\t"         // dzdy + dzdx q
+        ".endm\n"
+        "44:\n\t"                            // the left edge, r2 its row
+        "hks_edge hks_k_lx, hks_k_lg, hks_k_la, hks_k_lm, hks_k_lstep\n\t"
+        "hks_depth hks_k_lz, hks_k_ldz\n\t"
         "bx     lr\n"
-        // Right edge store.
-        "46:\n\t"
-        "ldr    r6, [sp, #hks_out]\n\t"
-        "ldr    r4, [sp, #hks_band]\n\t"
-        "ldr    r0, [sp, #hks_px]\n\t"
-        "lsls   r1, r0, #1\n\t"
-        "str    r1, [r6, #12]\n\t"
-        "ldr    r1, [sp, #hks_g]\n\t"
-        "str    r1, [r6, #16]\n\t"
-        "ldr    r1, [sp, #hks_a]\n\t"
-        "str    r1, [r6, #36]\n\t"
-        "ldr    r1, [sp, #hks_mm]\n\t"
-        "str    r1, [r6, #40]\n\t"
-        "ldr    r3, [sp, #hks_q]\n\t"
-        "lsls   r1, r3, #1\n\t"
-        "ldr    r5, [r4, %[stride]]\n\t"
-        "adds   r1, r1, r5\n\t"
-        "str    r1, [r6, #44]\n\t"
+        "46:\n\t"                            // the right edge
+        "hks_edge hks_k_rx, hks_k_rg, hks_k_ra, hks_k_rm, hks_k_rstep\n\t"
         "bx     lr\n"
-        // The next (lower short) edge store, r2 = the middle row; its depth when it is a left edge.
-        "48:\n\t"
-        "ldr    r6, [sp, #hks_out]\n\t"
-        "ldr    r4, [sp, #hks_band]\n\t"
-        "ldr    r0, [sp, #hks_px]\n\t"
-        "lsls   r1, r0, #1\n\t"
-        "str    r1, [r6, #64]\n\t"
-        "ldr    r1, [sp, #hks_g]\n\t"
-        "str    r1, [r6, #68]\n\t"
-        "ldr    r1, [sp, #hks_a]\n\t"
-        "str    r1, [r6, #72]\n\t"
-        "ldr    r1, [sp, #hks_mm]\n\t"
-        "str    r1, [r6, #76]\n\t"
-        "ldr    r3, [sp, #hks_q]\n\t"
-        "lsls   r1, r3, #1\n\t"
-        "ldr    r5, [r4, %[stride]]\n\t"
-        "adds   r1, r1, r5\n\t"
-        "str    r1, [r6, #80]\n\t"
+        "48:\n\t"                            // the next (lower short) edge, r2 = the middle row
+        "hks_edge hks_k_next_x, hks_k_next_g, hks_k_next_a, hks_k_next_m, hks_k_next_step\n\t"
         "ldr    r1, [sp, #hks_odd]\n\t"
         "cmp    r1, #0\n\t"
         "beq    1f\n\t"
-        "ldr    r5, [sp, #hks_refpx]\n\t"
-        "subs   r0, r0, r5\n\t"
-        "ldr    r5, [sp, #hks_dzdx]\n\t"
-        "muls   r0, r5, r0\n\t"
-        "ldr    r7, [sp, #hks_refpy]\n\t"
-        "subs   r2, r2, r7\n\t"
-        "ldr    r7, [sp, #hks_dzdy]\n\t"
-        "muls   r2, r7, r2\n\t"
-        "adds   r0, r0, r2\n\t"
-        "ldr    r1, [sp, #hks_zref]\n\t"
-        "adds   r0, r0, r1\n\t"
-        "str    r0, [r6, #84]\n\t"
-        "muls   r3, r5, r3\n\t"
-        "adds   r3, r3, r7\n\t"
-        "str    r3, [r6, #88]\n"
+        "hks_depth hks_k_next_z, hks_k_next_dz\n"   // its depth when it is a left edge
         "1:\n\t"
         "bx     lr\n"
+        ".purgem hks_edge\n\t"
+        ".purgem hks_depth\n"
         // floor(n / a) and n - floor(n / a) a for a > 0: r0 n, r1 a -> r0, r1. __aeabi_uidivmod (its
         // quotients here are small, where the library's shift-subtract exits early: a reciprocal of
         // dy per walker cost more).
@@ -652,6 +642,7 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         : [y_first] "i"(offsetof(KernelBand, y_first)), [y_last] "i"(offsetof(KernelBand, y_last)),
           [x_last] "i"(offsetof(KernelBand, x_last)), [row_from] "i"(offsetof(KernelBand, row_from)),
           [row_end] "i"(offsetof(KernelBand, row_end)), [stride] "i"(offsetof(KernelBand, stride_bytes)),
+          [x_origin] "i"(offsetof(KernelBand, x_origin)), [y_origin] "i"(offsetof(KernelBand, y_origin)),
           [table] "i"(kReciprocalTableData));
 }
 #endif
