@@ -1056,6 +1056,29 @@ TEST_CASE("A face too small for the model's extent to keep an area on the grid i
     CHECK(quiet.err.empty());
 }
 
+TEST_CASE("A model whose every face lies on a line or a point is a warning, and every algorithm draws the background") {
+    // Faces degenerate in the model itself: each is skipped without a word (as above), and when no face
+    // is left the image was the background alone, silently.
+    const std::string m = write_model("lines.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 4 4 1\n");
+    for (const char* algo : {"zbuffer", "painter", "newell", "reverse", "raycast", "bsp", "bsp-front"}) {
+        INFO("algorithm: ", std::string(algo));
+        const Run r = render(m, {"--size", "16x12", "--algo", algo});
+        CHECK(r.code == 0);
+        CHECK(r.err == "hider-render: warning: " + m + ": no face has an area: the image shows only the background\n");
+        const Image img = read_image(out_ppm(), 16, 12);
+        REQUIRE(img.ok);
+        CHECK(count_pixels(img, img.at(0, 0)) == 16 * 12);
+    }
+    // One face with an area among them: no warning, and it is drawn.
+    const std::string one = write_model("lines_and_one.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n");
+    const Run r = render(one, {"--size", "16x12", "--no-cull"});
+    CHECK(r.code == 0);
+    CHECK(r.err.empty());
+    const Image img = read_image(out_ppm(), 16, 12);
+    REQUIRE(img.ok);
+    CHECK(count_pixels(img, img.at(0, 0)) < 16 * 12);
+}
+
 TEST_CASE("A concave face whose fan from its first vertex paints outside it is a warning naming its line") {
     // Every tool fans an OBJ polygon from its first vertex. A V (notch at vertex 4) fanned from vertex 1
     // filled the notch, silently (a red-team pass). An L fanned from its inner corner is exact: no warning.

@@ -225,25 +225,35 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
     return true;
 }
 
+namespace {
+/// True when triangle (a, b, c) of grid points has an area: a cross product not zero (exact: |u|, |v| < 2^31).
+bool area_on_grid(const Vec3q16& a, const Vec3q16& b, const Vec3q16& c) {
+    const int64_t ux = int64_t{b.x.raw()} - a.x.raw(), uy = int64_t{b.y.raw()} - a.y.raw(), uz = int64_t{b.z.raw()} - a.z.raw();
+    const int64_t vx = int64_t{c.x.raw()} - a.x.raw(), vy = int64_t{c.y.raw()} - a.y.raw(), vz = int64_t{c.z.raw()} - a.z.raw();
+    return uy * vz - uz * vy != 0 || uz * vx - ux * vz != 0 || ux * vy - uy * vx != 0;
+}
+}  // namespace
+
 std::vector<int> collapsed_faces(const ObjModel& model, const Scene& scene) {
     std::vector<int> lines;
     std::vector<std::array<double, 3>> p;
     std::array<double, 3> n{};
     for (const ObjFace& f : model.faces) {
-        bool area_on_grid = false;  // some fan triangle keeps an area
-        for (size_t i = 1; i + 1 < f.v.size() && !area_on_grid; ++i) {
-            const Vec3q16& a = scene.positions[static_cast<size_t>(f.v[0])];
-            const Vec3q16& b = scene.positions[static_cast<size_t>(f.v[i])];
-            const Vec3q16& c = scene.positions[static_cast<size_t>(f.v[i + 1])];
-            const int64_t ux = int64_t{b.x.raw()} - a.x.raw(), uy = int64_t{b.y.raw()} - a.y.raw(), uz = int64_t{b.z.raw()} - a.z.raw();
-            const int64_t vx = int64_t{c.x.raw()} - a.x.raw(), vy = int64_t{c.y.raw()} - a.y.raw(), vz = int64_t{c.z.raw()} - a.z.raw();
-            area_on_grid = uy * vz - uz * vy != 0 || uz * vx - ux * vz != 0 || ux * vy - uy * vx != 0;  // |u|, |v| < 2^31
-        }
-        if (area_on_grid) continue;
+        bool some_area = false;  // some fan triangle keeps an area
+        for (size_t i = 1; i + 1 < f.v.size() && !some_area; ++i)
+            some_area = area_on_grid(scene.positions[static_cast<size_t>(f.v[0])], scene.positions[static_cast<size_t>(f.v[i])],
+                                     scene.positions[static_cast<size_t>(f.v[i + 1])]);
+        if (some_area) continue;
         // An area in the model: a Newell normal clearly above the rounding of a face on a line.
         if (scaled_face(model, f, p, n) && std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]) > 1e-9) lines.push_back(f.line);
     }
     return lines;
+}
+
+bool any_triangle_with_area(const Scene& scene) {
+    for (const Tri& t : scene.tris)
+        if (area_on_grid(scene.positions[t.v[0]], scene.positions[t.v[1]], scene.positions[t.v[2]])) return true;
+    return false;
 }
 
 std::vector<std::string> collapse_warnings(const std::string& path, const std::vector<int>& lines) {

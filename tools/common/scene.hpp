@@ -57,6 +57,10 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
 /// units keeps detail down to about its extent / 2^26; finer faces collapse.
 std::vector<int> collapsed_faces(const ObjModel& model, const Scene& scene);
 
+/// False when no triangle of the scene has an area on its grid (a model of faces on lines or points, in
+/// the model or after collapsed_faces()): every algorithm draws only the background.
+bool any_triangle_with_area(const Scene& scene);
+
 /// Warnings for collapsed_faces(): the first five by line, then how many more.
 std::vector<std::string> collapse_warnings(const std::string& path, const std::vector<int>& lines);
 

@@ -69,6 +69,8 @@ int main(int argc, char** argv) {
     Scene scene;
     if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
     for (const std::string& w : collapse_warnings(model_path, collapsed_faces(model, scene))) std::cerr << "hider-bake: warning: " << w << "\n";
+    if (!any_triangle_with_area(scene))
+        std::cerr << "hider-bake: warning: " << model_path << ": no face has an area: the scene draws only the background\n";
     const Status ms = validate(scene.mesh());
     if (ms != Status::ok) fail(model_path + ": mesh rejected: " + status_name(ms));
 

@@ -40,6 +40,11 @@ const char* kUsage =
     std::exit(2);
 }
 
+/// A model of faces on lines or points (in the model, or too small for its extent): warned, then drawn.
+void no_area_warning(const std::string& model_path) {
+    std::cerr << "hider-render: warning: " << model_path << ": no face has an area: the image shows only the background\n";
+}
+
 Vec3d parse_vec(const std::string& opt, const std::string& s) {
     Vec3d v{};
     std::string why;
@@ -262,6 +267,7 @@ int main(int argc, char** argv) {
             if (!bsp_from_obj(model_path, BspOptions{}, blob, bs, why)) fail(why);
             for (const std::string& w : fan_warnings(model_path, bs.badly_fanned)) std::cerr << "hider-render: warning: " << w << "\n";
             for (const std::string& w : collapse_warnings(model_path, bs.collapsed)) std::cerr << "hider-render: warning: " << w << "\n";
+            if (bs.triangles == 0) no_area_warning(model_path);
         }
         const AlignedBlob aligned(blob);
         std::vector<uint32_t> probe(bsp_stack_entries(kToolMaxBspDepth));
@@ -282,6 +288,7 @@ int main(int argc, char** argv) {
         if (!build_scene(model, cam, scene, why)) fail(model_path + ": " + why);
         for (const std::string& w : collapse_warnings(model_path, collapsed_faces(model, scene)))
             std::cerr << "hider-render: warning: " << w << "\n";
+        if (!any_triangle_with_area(scene)) no_area_warning(model_path);
         if (!render(scene, opt, result, why)) fail(why);
     }
     // --strict: an incomplete frame is an error, and an error leaves no image behind.
