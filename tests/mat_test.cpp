@@ -112,6 +112,43 @@ TEST_CASE("look_at rejects a zero direction, a zero up and an up parallel to the
     CHECK(look_at(q16(0, 0, 0), q16(0, 5, 0), q16(0.01, 1, 0), v) == Status::ok);  // 0.57 degrees off: fine
 }
 
+TEST_CASE("look_at is exact for eye and target far apart, and refuses an eye whose translation could wrap") {
+    // A red-team case: target - eye as a Q16 difference wrapped to INT32_MIN here, and look_at said ok
+    // with the camera turned around.
+    const auto raw = [](int32_t x, int32_t y, int32_t z) {
+        return Vec3q16{Q16::from_raw(x), Q16::from_raw(y), Q16::from_raw(z)};
+    };
+    const int32_t big = int32_t{1} << 30;
+    const Vec3q16 up = q16(0, 1, 0);
+    Transform far{}, near{};
+    REQUIRE(look_at(raw(-big, 0, 0), raw(big, 0, 0), up, far) == Status::ok);
+    REQUIRE(look_at(q16(0, 0, 0), q16(1, 0, 0), up, near) == Status::ok);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) CHECK(far.rot.m[r][c].raw() == near.rot.m[r][c].raw());  // looking down +x
+    CHECK(apply(far, raw(0, 0, 0)).z.raw() == -big);  // the origin 2^30 raw ahead of the eye
+    // The two ends of every axis (2^32 - 2 raw apart), against the same direction from the origin.
+    for (int axis = 0; axis < 3; ++axis) {
+        int32_t e[3] = {0, 0, 0}, t[3] = {0, 0, 0};
+        e[axis] = INT32_MIN + 1;
+        t[axis] = INT32_MAX;
+        const Vec3q16 u = axis == 1 ? q16(0, 0, 1) : up;
+        Transform a{};
+        CHECK(look_at(raw(e[0], e[1], e[2]), raw(t[0], t[1], t[2]), u, a) == Status::ok);
+        int32_t dir[3] = {0, 0, 0};
+        dir[axis] = 1 << 16;
+        Transform b{};
+        REQUIRE(look_at(q16(0, 0, 0), raw(dir[0], dir[1], dir[2]), u, b) == Status::ok);
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) CHECK(a.rot.m[r][c].raw() == b.rot.m[r][c].raw());
+    }
+    // The eye's L1 norm: below 2^31 raw accepted (the translation fits), at 2^31 refused, INT32_MIN too.
+    Transform v{};
+    CHECK(look_at(raw(big - 1, big, 0), q16(0, 0, 0), q16(0, 0, 1), v) == Status::ok);
+    CHECK(look_at(raw(big, big, 0), q16(0, 0, 0), q16(0, 0, 1), v) == Status::out_of_range);
+    CHECK(look_at(raw(INT32_MIN, 0, 0), q16(0, 0, 0), up, v) == Status::out_of_range);
+    CHECK(look_at(raw(0, 0, INT32_MIN), q16(0, 0, 0), up, v) == Status::out_of_range);
+}
+
 TEST_CASE("the ARMv6-M row product from 16-bit halves equals the floored exact 64-bit sum") {
     std::mt19937_64 rng(73);
     auto check = [](const int32_t (&r)[3], const int32_t (&p)[3]) {

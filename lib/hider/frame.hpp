@@ -60,6 +60,10 @@ template <> struct DepthTraits<uint32_t> {
 /// Largest frame side lib/ accepts; keeps every screen coordinate inside the guard band.
 constexpr int32_t kMaxFrameSide = 1024;
 
+/// Largest row stride (elements) lib/ accepts: a row's bytes, and a band's, stay far inside 32 bits
+/// (the row kernels step rows by the stride in bytes as a 32-bit value).
+constexpr int32_t kMaxStride = int32_t{1} << 16;
+
 /// A band of rows [y0, y1) of a width x height frame. `color` and `depth` point at row y0; both
 /// use `stride` elements per row. The view borrows the memory; the caller owns it.
 template <class Format, class Depth = uint16_t>
@@ -77,10 +81,11 @@ struct FrameView {
     __attribute__((always_inline)) Pixel* row(int32_t y) const { return color + static_cast<ptrdiff_t>(y - y0) * stride; }
     __attribute__((always_inline)) Depth* depth_row(int32_t y) const { return depth + static_cast<ptrdiff_t>(y - y0) * stride; }
     int32_t rows() const { return y1 - y0; }
-    /// True when the geometry is usable: sizes in range, band inside the frame, colour memory given.
+    /// True when the geometry is usable: sizes in range (stride from width to kMaxStride), band inside
+    /// the frame, colour memory given.
     bool valid() const {
         return color != nullptr && width > 0 && height > 0 && width <= kMaxFrameSide &&
-               height <= kMaxFrameSide && stride >= width && 0 <= y0 && y0 < y1 && y1 <= height;
+               height <= kMaxFrameSide && stride >= width && stride <= kMaxStride && 0 <= y0 && y0 < y1 && y1 <= height;
     }
 };
 

@@ -184,11 +184,18 @@ constexpr int32_t kMinUpSinQ30 = int32_t{1} << 18;
 
 /// gluLookAt: the world-to-view transform with the eye at the origin looking down -Z, up
 /// re-orthogonalised as GLU does (f = norm(target - eye), s = norm(f x up), u = s x f).
-/// Returns invalid_argument if target == eye, up is zero, or up is (nearly) parallel to the view.
+/// Returns invalid_argument if target == eye, up is zero, or up is (nearly) parallel to the view;
+/// out_of_range if |eye.x| + |eye.y| + |eye.z| reaches 2^31 raw (32,768 units), where the translation
+/// -R eye could pass the Q16 range (make_view()'s world range keeps it below 1.5 2^30).
 inline Status look_at(Vec3q16 eye, Vec3q16 target, Vec3q16 up, Transform& out) {
     Vec3q30 f{}, upn{}, s{};
-    const Vec3q16 d = target - eye;
-    if (!normalize({d.x.raw(), d.y.raw(), d.z.raw()}, f)) return Status::invalid_argument;
+    const int64_t eye_l1 = abs_value(int64_t{eye.x.raw()}) + abs_value(int64_t{eye.y.raw()}) + abs_value(int64_t{eye.z.raw()});
+    if (eye_l1 >= (int64_t{1} << 31)) return Status::out_of_range;
+    // target - eye in 64 bits: exact for any two points (a Q16 difference could wrap).
+    if (!normalize({int64_t{target.x.raw()} - eye.x.raw(), int64_t{target.y.raw()} - eye.y.raw(),
+                    int64_t{target.z.raw()} - eye.z.raw()},
+                   f))
+        return Status::invalid_argument;
     if (!normalize({up.x.raw(), up.y.raw(), up.z.raw()}, upn)) return Status::invalid_argument;
     const Vec3i64 side{mul_wide(f.y.raw(), upn.z.raw()) - mul_wide(f.z.raw(), upn.y.raw()),
                        mul_wide(f.z.raw(), upn.x.raw()) - mul_wide(f.x.raw(), upn.z.raw()),

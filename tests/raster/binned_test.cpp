@@ -275,6 +275,16 @@ TEST_CASE("draw_zbuffer_binned refuses scratch too small, big meshes and a sink 
         Scratch sc(s.tris.size(), 30, 256);
         CHECK(draw(sc).status == Status::invalid_argument);
     }
+    SUBCASE("a stride past kMaxStride") {  // a red team's 2^30: its byte count overflowed 32 bits
+        for (int32_t stride : {int32_t{1} << 30, kMaxStride + 1}) {
+            auto wide = buffers;
+            wide.stride = stride;
+            Scratch sc(s.tris.size(), 30, 4);
+            CHECK(draw_zbuffer_binned(p.view, mesh, {p.verts.data(), p.verts.size()}, wide, p.opt, kBackground, sc.view,
+                                      count).status == Status::invalid_argument);
+            CHECK(calls == 0);
+        }
+    }
     SUBCASE("a sink that stops after its third band") {
         Scratch sc(s.tris.size(), 30, 4);
         CHECK(draw(sc).status == Status::invalid_argument);

@@ -263,6 +263,25 @@ TEST_CASE("draw_zbuffer rejects a frame it cannot use") {
     CHECK(draw_zbuffer(view, s.mesh(), {verts.data(), 1}, frame, opt).status == Status::invalid_argument);
     auto bad_band = band_view<Rgb565Format>(color.data(), depth.data(), s.width, s.height, 10, 5);
     CHECK(draw_zbuffer(view, s.mesh(), {verts.data(), verts.size()}, bad_band, opt).status == Status::invalid_argument);
+    // A stride past kMaxStride (a red team's 2^31 - 1 and 2^30, on a one-row band: the stride never
+    // addressed memory, but its byte count overflowed 32 bits in the row kernel's set-up). At
+    // kMaxStride the one-row band draws the full frame's row.
+    for (int32_t stride : {INT32_MAX, int32_t{1} << 30, kMaxStride + 1}) {
+        auto wide = band_view<Rgb565Format>(color.data(), depth.data(), s.width, s.height, s.height / 2, s.height / 2 + 1);
+        wide.stride = stride;
+        CHECK_FALSE(wide.valid());
+        CHECK(draw_zbuffer(view, s.mesh(), {verts.data(), verts.size()}, wide, opt).status == Status::invalid_argument);
+    }
+    auto row = band_view<Rgb565Format>(color.data(), depth.data(), s.width, s.height, s.height / 2, s.height / 2 + 1);
+    row.stride = kMaxStride;
+    REQUIRE(row.valid());
+    clear(row, Rgb{0, 0, 0});
+    CHECK(draw_zbuffer(view, s.mesh(), {verts.data(), verts.size()}, row, opt).status == Status::ok);
+    const std::vector<uint16_t> middle(color.begin(), color.begin() + s.width);
+    clear(frame, Rgb{0, 0, 0});
+    CHECK(draw_zbuffer(view, s.mesh(), {verts.data(), verts.size()}, frame, opt).status == Status::ok);
+    CHECK(std::equal(middle.begin(), middle.end(), color.begin() + static_cast<ptrdiff_t>(s.height / 2) * s.width));
+    CHECK(std::count(middle.begin(), middle.end(), uint16_t{0}) < s.width);  // the triangle crosses that row
     std::vector<ScreenVertex> few(1);
     CHECK(project_vertices(view, s.mesh().positions, {few.data(), few.size()}) == Status::invalid_argument);
 }

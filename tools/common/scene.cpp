@@ -216,7 +216,7 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
     const Status st = make_view(cam, s.width, s.height, probe);
     if (st != Status::ok) {
         Transform unused;
-        error = look_at(cam.eye, cam.target, cam.up, unused) != Status::ok
+        error = look_at(cam.eye, cam.target, cam.up, unused) == Status::invalid_argument
                     ? std::string("up vector is parallel to the view direction")
                     : std::string("camera rejected: ") + status_name(st);
         return false;
