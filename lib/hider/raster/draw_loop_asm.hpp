@@ -361,9 +361,9 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "ldr    r12, [r5, %[d_normals]]\n\t"
         "add    r12, r12, r4\n\t"              // the triangle's normal
         HIDER_V7M_COLOR565_IN(r12, r8, r3, lr)
-        "ldr    r3, [r9, %[io_out]]\n\t"        // the triangle record
-        "str    r12, [r3, %[k_color]]\n\t"      // k.color
-        "str    r10, [r9, %[io_area]]\n\t"      // io->area
+        "ldr    r3, [r9, %[io_out]]\n\t"       // the triangle record
+        "str    r12, [r3, %[k_color]]\n\t"     // k.color
+        "str    r10, [r9, %[io_area]]\n\t"     // io->area
         "add    r0, r7, r0, lsl #3\n\t"
         "add    r1, r7, r1, lsl #3\n\t"
         "add    r2, r7, r2, lsl #3\n\t"
@@ -373,7 +373,7 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "bne    22f\n\t"
         "ldr    r0, [r5, %[d_drawn]]\n\t"
         "adds   r0, r0, #1\n\t"
-        "str    r0, [r5, %[d_drawn]]\n\t"       // drawn
+        "str    r0, [r5, %[d_drawn]]\n\t"      // drawn
         "b      28b\n"
         "22:\n\t"
         "cmp    r0, #0\n\t"
@@ -411,9 +411,9 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "ldr    r1, [r5, %[d_normals]]\n\t"
         "add    r1, r1, r4\n\t"                 // the triangle's normal
         HIDER_V7M_COLOR565
-        "ldr    r12, [r9, %[io_out]]\n\t"       // the triangle record
-        "str    r1, [r12, %[k_color]]\n\t"      // k.color
-        "str    r10, [r9, %[io_area]]\n\t"      // io->area
+        "ldr    r12, [r9, %[io_out]]\n\t"      // the triangle record
+        "str    r1, [r12, %[k_color]]\n\t"     // k.color
+        "str    r10, [r9, %[io_area]]\n\t"     // io->area
         "ldm    sp, {r0, r1, r2}\n\t"
         "mov    r3, r9\n\t"
         "bl     %c[draw]\n\t"                   // set up and drawn
@@ -421,7 +421,7 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "bne    3f\n\t"
         "ldr    r0, [r5, %[d_drawn]]\n\t"
         "adds   r0, r0, #1\n\t"
-        "str    r0, [r5, %[d_drawn]]\n\t"       // drawn
+        "str    r0, [r5, %[d_drawn]]\n\t"      // drawn
         "b      8b\n"
         "3:\n\t"
         "cmp    r0, #0\n\t"
@@ -429,7 +429,7 @@ HIDER_NAKED inline const Tri* draw_flat_v7m(const Tri*, detail::DrawLoopArm*) {
         "90:\n\t"
         "ldr    r0, [r5, %[d_culled]]\n\t"
         "add    r0, r0, r11\n\t"
-        "str    r0, [r5, %[d_culled]]\n\t"      // culled
+        "str    r0, [r5, %[d_culled]]\n\t"     // culled
         "mov    r0, r4\n\t"
         "add    sp, #12\n\t"
         "pop    {r4-r11, pc}\n"
