@@ -3,7 +3,9 @@
 // slip through a closed mesh (exact parity of crossings, also for rays exactly through vertices), t
 // agrees with double, the slab test never misses a box, and validate_bvh rejects each kind of damage.
 #include <hider/ray/bvh.hpp>
+#include <hider/ray/scene.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -325,6 +327,31 @@ TEST_CASE("validate_bvh accepts the built tree and rejects every kind of damage"
     CHECK(damaged([&](tool::BakedBvh& t) { ++t.nodes[leaf].first; }) == Status::bad_data);  // leaves not consecutive
     CHECK(damaged([&](tool::BakedBvh& t) { t.nodes[leaf].lo[2] = t.nodes[leaf].hi[2] + 1; }) == Status::bad_data);  // lo > hi
     CHECK(damaged([](tool::BakedBvh& t) { t.nodes[0].lo[0] = -(1 << 29); }) == Status::out_of_range);
+    // Entries listing a triangle twice and another never (a red team's tree: every index and box passed,
+    // and no ray could hit the missing one). In a tree of one leaf the root's box holds every triangle,
+    // so only the entries' power sums can tell: a duplicate; two changed keeping the sum; three keeping
+    // the sum and the sum of squares (0..7 as 0 2 2 3 4 3 7 7: 28 and 140 as 0..7's, cubes 820 against
+    // 784). A swap keeps the set.
+    const Built eight = soup(12, 8);
+    REQUIRE(eight.mesh().tris.size() == 8);
+    tool::BakedBvh one = eight.bvh;
+    BvhNode root = one.nodes[0];
+    root.first = 0;
+    root.count = 8;
+    one.nodes.assign(1, root);
+    one.header.node_count = 1;
+    one.header.max_depth = 1;
+    for (uint32_t k = 0; k < 8; ++k) one.triangles[k] = k;
+    std::vector<BvhStackEntry> one_stack(1);
+    auto listing = [&](std::vector<uint32_t> entries) {
+        one.triangles = std::move(entries);
+        return validate_bvh(one.view(), eight.mesh(), {one_stack.data(), one_stack.size()});
+    };
+    CHECK(listing({0, 1, 2, 3, 4, 5, 6, 7}) == Status::ok);
+    CHECK(listing({7, 1, 2, 3, 4, 5, 6, 0}) == Status::ok);
+    CHECK(listing({0, 0, 2, 3, 4, 5, 6, 7}) == Status::bad_data);
+    CHECK(listing({0, 2, 2, 3, 4, 4, 6, 7}) == Status::bad_data);
+    CHECK(listing({0, 2, 2, 3, 4, 3, 7, 7}) == Status::bad_data);
     // A mesh with a different triangle count is not this tree's mesh.
     std::vector<BvhStackEntry> s(depth);
     Mesh fewer = m;
@@ -340,6 +367,34 @@ TEST_CASE("validate_bvh accepts the built tree and rejects every kind of damage"
     short_ids.ids = {ids.data(), ids.size()};
     CHECK(validate_bvh(b.bvh.view(), short_ids, {s.data(), s.size()}) == Status::bad_data);
     CHECK(validate_bvh(b.bvh.view(), m, {s.data(), s.size()}) == Status::ok);
+}
+
+TEST_CASE("validate_scene refuses a mesh normal that is neither unit nor zero") {
+    // A red team's normal of -32768 (Q14) passed, and the tracer's turn of it toward the ray overflowed
+    // (-INT32_MIN); any non-unit normal made reflections wrap while the status was ok.
+    Built b = soup(5, 40);
+    std::vector<Normal14> normals(b.scene.normals.begin(), b.scene.normals.end());
+    Mesh m = b.mesh();
+    m.normals = {normals.data(), normals.size()};
+    const ray::Surface surface{};
+    const ray::MeshObject object{m, b.bvh.view(), 0, {}};
+    ray::Scene s;
+    s.meshes = {&object, 1};
+    s.surfaces = {&surface, 1};
+    auto status = [&] { return ray::validate_scene(s, {b.stack.data(), b.stack.size()}); };
+    CHECK(status() == Status::ok);
+    const Normal14 kept = normals[3];
+    for (const Normal14 bad : {Normal14{-32768, 0, 0}, Normal14{32767, 32767, 32767}, Normal14{0, 0, 16384 - 200},
+                               Normal14{0, 16384 + 200, 0}}) {
+        normals[3] = bad;
+        CHECK(status() == Status::invalid_argument);
+    }
+    normals[3] = Normal14{0, 0, 0};  // face_normal() of a degenerate face
+    CHECK(status() == Status::ok);
+    normals[3] = Normal14{0, -16384, 0};
+    CHECK(status() == Status::ok);
+    normals[3] = kept;
+    CHECK(status() == Status::ok);
 }
 
 TEST_CASE("the builder keeps depth within its limit and leaves small") {

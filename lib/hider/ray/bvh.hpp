@@ -75,7 +75,9 @@ inline bool leaf_valid(const Bvh& bvh, const Mesh& mesh, const BvhNode& n) {
 }  // namespace detail
 
 /// Checks `bvh` against `mesh` once: magic and version (bad_data), sizes (triangle_arrays_fit() too), the
-/// pre-order tree shape, every index, boxes nested and holding their triangles, the root inside the world
+/// pre-order tree shape, every index, every triangle listed once (by the entries' power sums: a red
+/// team's tree listed one twice and another never, which no ray could then hit), boxes nested and
+/// holding their triangles, the root inside the world
 /// cube (out_of_range), the recorded depth (bad_data if the tree is deeper). capacity_exceeded when stack.size() < max_depth.
 /// Cost O(nodes + triangles); uses `stack` as scratch.
 inline Status validate_bvh(const Bvh& bvh, const Mesh& mesh, Span<BvhStackEntry> stack) {
@@ -111,7 +113,19 @@ inline Status validate_bvh(const Bvh& bvh, const Mesh& mesh, Span<BvhStackEntry>
             next_entry += n.count;
         }
     }
-    return next_node == h.node_count && next_entry == h.triangle_count ? Status::ok : Status::bad_data;
+    if (next_node != h.node_count || next_entry != h.triangle_count) return Status::bad_data;
+    // Every triangle listed once: the entries' sums of first, second and third powers equal those of
+    // 0 .. T - 1 (modulo 2^64). Damage to three entries or fewer always changes one of them (two
+    // different multisets agree on these sums only with four or more elements changed; below 2^20
+    // triangles no sum wraps), so a duplicate never hides an omission.
+    uint64_t d1 = 0, d2 = 0, d3 = 0;
+    for (uint32_t k = 0; k < h.triangle_count; ++k) {
+        const uint64_t a = bvh.triangles[k], b = k;
+        d1 += a - b;
+        d2 += a * a - b * b;
+        d3 += a * a * a - b * b * b;
+    }
+    return d1 == 0 && d2 == 0 && d3 == 0 ? Status::ok : Status::bad_data;
 }
 
 /// How far the hierarchy's root box reaches from `origin` on any axis (raw): what sets the triangle

@@ -83,6 +83,9 @@ constexpr size_t kMaxSceneObjects = 65535;
 constexpr int32_t kMaxPlaneOffsetRaw = int32_t{1} << 30;
 /// A unit vector's squared length may differ from 1 by at most this, in Q60 (2^-20).
 constexpr int64_t kUnitTolerance = int64_t{1} << 40;
+/// A mesh normal's (Normal14, Q14) squared length may differ from 1 by at most this, in Q28 (2^-10:
+/// face_normal()'s rounding stays below 2^-13).
+constexpr int64_t kNormal14Tolerance = int64_t{1} << 18;
 
 namespace detail {
 constexpr bool is_unit(const Vec3q30& v) { return abs_value(dot_q60(v, v) - (int64_t{1} << 60)) <= kUnitTolerance; }
@@ -91,6 +94,10 @@ inline Status validate_meshes(const Scene& s, Span<BvhStackEntry> stack) {
     for (const MeshObject& m : s.meshes) {
         if (m.surface >= s.surfaces.size()) return Status::bad_data;
         if (!m.mesh.normals.empty() && m.mesh.normals.size() != m.mesh.tris.size()) return Status::bad_data;
+        for (const Normal14& n : m.mesh.normals) {  // unit, or zero (face_normal() of a degenerate face)
+            const int64_t len2 = int64_t{n.x} * n.x + int64_t{n.y} * n.y + int64_t{n.z} * n.z;
+            if (len2 != 0 && abs_value(len2 - (int64_t{1} << 28)) > kNormal14Tolerance) return Status::invalid_argument;
+        }
         if (!m.triangle_surfaces.empty()) {
             if (m.triangle_surfaces.size() != m.mesh.tris.size()) return Status::bad_data;
             for (uint16_t i : m.triangle_surfaces)
@@ -104,10 +111,12 @@ inline Status validate_meshes(const Scene& s, Span<BvhStackEntry> stack) {
 }  // namespace detail
 
 /// Checks a scene once. invalid_argument: a reflectivity above 1, a negative checker size, a radius
-/// <= 0, a normal or light direction that is not unit length (within 2^-20), max_distance <= 0, too
-/// many objects, a sphere bound that does not hold every sphere. out_of_range: a sphere not wholly inside the world cube, a point light outside it, a
-/// plane offset of 2^14 units or more, a mesh box outside it. bad_data: a surface index or a mesh/BVH
-/// fault (validate_bvh). capacity_exceeded: `stack` is shallower than a BVH needs. Cost O(scene size).
+/// <= 0, a plane normal or light direction that is not unit length (within 2^-20), a mesh normal neither
+/// zero nor unit (within 2^-10; a red team's -32768 overflowed when the tracer turned it), max_distance
+/// <= 0, too many objects, a sphere bound that does not hold every sphere. out_of_range: a sphere not
+/// wholly inside the world cube, a point light outside it, a plane offset of 2^14 units or more, a mesh
+/// box outside it. bad_data: a surface index or a mesh/BVH fault (validate_bvh). capacity_exceeded:
+/// `stack` is shallower than a BVH needs. Cost O(scene size).
 inline Status validate_scene(const Scene& s, Span<BvhStackEntry> stack) {
     if (s.spheres.size() > kMaxSceneObjects || s.planes.size() > kMaxSceneObjects || s.meshes.size() > kMaxSceneObjects ||
         s.lights.size() > kMaxSceneObjects || s.surfaces.size() > kMaxSceneObjects || s.max_distance.raw() <= 0)
