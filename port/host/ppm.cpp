@@ -134,7 +134,14 @@ bool read_ppm(const std::string& path, int& width, int& height, std::vector<uint
     if (!f || magic != "P6" || maxval != 255 || width <= 0 || height <= 0 || width > 16384 || height > 16384)
         return false;
     f.get();  // the single whitespace byte after maxval
-    rgb.assign(static_cast<size_t>(width) * static_cast<size_t>(height) * 3, 0);
+    // The pixels must be in the file before they are allocated (a 20-byte header may claim 805 MB).
+    const size_t bytes = static_cast<size_t>(width) * static_cast<size_t>(height) * 3;
+    const std::streampos start = f.tellg();
+    f.seekg(0, std::ios::end);
+    const std::streampos end = f.tellg();
+    if (!f || start < 0 || end - start < static_cast<std::streamoff>(bytes)) return false;
+    f.seekg(start);
+    rgb.assign(bytes, 0);
     f.read(reinterpret_cast<char*>(rgb.data()), static_cast<std::streamsize>(rgb.size()));
     return static_cast<size_t>(f.gcount()) == rgb.size();
 }

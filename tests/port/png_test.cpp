@@ -178,3 +178,27 @@ TEST_CASE("the PNG and PPM writers refuse sizes that do not match the pixels, al
     CHECK(f == nullptr);
     if (f != nullptr) std::fclose(f);
 }
+
+TEST_CASE("read_ppm reads what write_ppm wrote, and refuses a file shorter than its header claims") {
+    const std::vector<uint8_t> rgb = pattern(5, 3, 7);
+    std::string error;
+    const std::string path = "png_test_roundtrip.ppm";
+    REQUIRE(hider::port::write_ppm(path, 5, 3, rgb, error));
+    int w = 0, h = 0;
+    std::vector<uint8_t> back;
+    CHECK(hider::port::read_ppm(path, w, h, back));
+    CHECK(w == 5);
+    CHECK(h == 3);
+    CHECK(back == rgb);
+    // A header claiming 16384 x 16384 (805 MB) over 3 bytes: refused before the pixels are allocated.
+    const std::string short_path = "png_test_short.ppm";
+    REQUIRE(hider::port::write_file(short_path, std::string("P6\n16384 16384\n255\n") + "abc", error));
+    back.clear();
+    CHECK_FALSE(hider::port::read_ppm(short_path, w, h, back));
+    CHECK(back.empty());
+    // One byte short of a 5 x 3 image.
+    std::string bytes = "P6\n5 3\n255\n";
+    bytes.append(rgb.begin(), rgb.end() - 1);
+    REQUIRE(hider::port::write_file(short_path, bytes, error));
+    CHECK_FALSE(hider::port::read_ppm(short_path, w, h, back));
+}
