@@ -226,11 +226,11 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
 }
 
 namespace {
-/// True when triangle (a, b, c) of grid points has an area: a cross product not zero (exact: |u|, |v| < 2^31).
+/// True when triangle (a, b, c) of a scene's grid points has an area: its exact cross product is not zero
+/// (the scene lies in +-512 world units, inside cross_raw()'s range).
 bool area_on_grid(const Vec3q16& a, const Vec3q16& b, const Vec3q16& c) {
-    const int64_t ux = int64_t{b.x.raw()} - a.x.raw(), uy = int64_t{b.y.raw()} - a.y.raw(), uz = int64_t{b.z.raw()} - a.z.raw();
-    const int64_t vx = int64_t{c.x.raw()} - a.x.raw(), vy = int64_t{c.y.raw()} - a.y.raw(), vz = int64_t{c.z.raw()} - a.z.raw();
-    return uy * vz - uz * vy != 0 || uz * vx - ux * vz != 0 || ux * vy - uy * vx != 0;
+    const Vec3i64 n = cross_raw(b - a, c - a);
+    return n.x != 0 || n.y != 0 || n.z != 0;
 }
 }  // namespace
 

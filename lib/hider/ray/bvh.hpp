@@ -115,9 +115,9 @@ inline Status validate_bvh(const Bvh& bvh, const Mesh& mesh, Span<BvhStackEntry>
     }
     if (next_node != h.node_count || next_entry != h.triangle_count) return Status::bad_data;
     // Every triangle listed once: the entries' sums of first, second and third powers equal those of
-    // 0 .. T - 1 (modulo 2^64). Damage to three entries or fewer always changes one of them (two
-    // different multisets agree on these sums only with four or more elements changed; below 2^20
-    // triangles no sum wraps), so a duplicate never hides an omission.
+    // 0 .. T - 1 (modulo 2^64). Damage to three entries or fewer always changes one of them: two
+    // different multisets agree on these sums only with four or more elements changed, and below 2^20
+    // triangles what three changes move a sum by stays under 2^62, so it cannot vanish modulo 2^64.
     uint64_t d1 = 0, d2 = 0, d3 = 0;
     for (uint32_t k = 0; k < h.triangle_count; ++k) {
         const uint64_t a = bvh.triangles[k], b = k;
