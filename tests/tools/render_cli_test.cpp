@@ -868,6 +868,30 @@ TEST_CASE("hider-bsp's output is deterministic, and its .hpp holds the blob's by
     CHECK(contains(src, std::to_string(blob.size())));  // the byte count is stated
 }
 
+TEST_CASE("hider-bsp names a header's namespace after its file unless --name says otherwise") {
+    const std::string header = scratch_path("torus_default_name.hpp");
+    const Run r = bsp_tool(kTorus, header);
+    INFO("stderr: ", r.err);
+    REQUIRE(r.code == 0);
+    const std::string src = read_file(header);
+    CHECK(contains(src, "namespace hider::bsp_data::torus_default_name {"));
+    CHECK_FALSE(contains(src, "bsp_data::tree"));
+    // A file name that is no C++ name is refused before anything is written, and --name rescues it.
+    const std::string dashed = scratch_path("torus-tree.hpp");
+    const Run bad = bsp_tool(kTorus, dashed);
+    CHECK(bad.code == 2);
+    CHECK_FALSE(bad.output_created);
+    CHECK(contains(bad.err, "its file name 'torus-tree' may hold only letters, digits and '_'"));
+    CHECK(contains(bad.err, "give --name NAME"));
+    const Run named = bsp_tool(kTorus, dashed, {"--name", "torus_tree"});
+    REQUIRE(named.code == 0);
+    CHECK(contains(read_file(dashed), "namespace hider::bsp_data::torus_tree {"));
+    // A keyword as the file name is refused as --name would be.
+    const Run keyword = bsp_tool(kTorus, scratch_path("class.hpp"));
+    CHECK(keyword.code == 2);
+    CHECK(contains(keyword.err, "is a C++ keyword"));
+}
+
 TEST_CASE("hider-bsp with camera options adds hider-render's camera in the tree's world to a .hpp, and refuses them for a blob") {
     const std::string header = scratch_path("torus_cam.hpp");
     const Run r = bsp_tool(kTorus, header, {"--name", "torus_view", "--size", "160x128", "--eye", "0,1,3", "--fov", "50"});

@@ -1,8 +1,9 @@
 // hider-bsp: compiles an OBJ model into a BSP tree in the flat format of lib/hider/bsp/format.hpp, as a
-// blob (.hbsp) or a C++ header of const data for flash (.hpp, namespace hider::bsp_data::NAME). Same OBJ
-// reader, fitting and messages as hider-render; errors print "file:line: what" or a plain reason and exit
-// 2. Camera options (hider-render's, in model units) add the camera mapped into the tree's world to a
-// .hpp (kWidth, kHeight, kCamera), so firmware draws the view hider-render shows. Output is deterministic.
+// blob (.hbsp) or a C++ header of const data for flash (.hpp, namespace hider::bsp_data::NAME, NAME by
+// default the header's file name). Same OBJ reader, fitting and messages as hider-render; errors print
+// "file:line: what" or a plain reason and exit 2. Camera options (hider-render's, in model units) add the
+// camera mapped into the tree's world to a .hpp (kWidth, kHeight, kCamera), so firmware draws the view
+// hider-render shows. Output is deterministic.
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -49,7 +50,8 @@ int int_option(const std::string& opt, const std::string& v, long lo, long hi) {
 
 int main(int argc, char** argv) {
     hider::tool::exit_2_when_out_of_memory("hider-bsp");
-    std::string model_path, out_path, name = "tree", camera_options, recorded;
+    std::string model_path, out_path, name, camera_options, recorded;
+    bool named = false;
     BspOptions opt;
     CameraArgs cam;
     bool stats = false;
@@ -65,7 +67,7 @@ int main(int argc, char** argv) {
         else if (a == "--balance-weight") opt.balance_weight = int_option(a, value(), 0, 1000000);
         else if (a == "--candidates") opt.candidates = int_option(a, value(), 1, 100000);
         else if (a == "--max-chain") opt.max_chain = int_option(a, value(), 0, 100000000);
-        else if (a == "--name") name = value();
+        else if (a == "--name") { name = value(); named = true; }
         else if (a == "--stats") stats = true;
         else if (a == "-h" || a == "--help") { std::cout << kUsage; return 0; }
         else if (!a.empty() && a[0] == '-') fail("unknown option '" + a + "'\n" + kUsage);
@@ -77,7 +79,14 @@ int main(int argc, char** argv) {
     const bool header = has_extension(out_path, ".hpp");  // in any case, as the other tools
     if (!header && !has_extension(out_path, ".hbsp")) fail("output '" + out_path + "': use .hbsp (a blob) or .hpp (a C++ header)");
     std::string why;
-    if (!bake::valid_name(name, why)) fail("--name '" + name + "' " + why);
+    if (named) {
+        if (!bake::valid_name(name, why)) fail("--name '" + name + "' " + why);
+    } else if (header) {  // the header's file name: two default headers never share a namespace
+        name = std::filesystem::path(out_path).stem().string();
+        if (!bake::valid_name(name, why))
+            fail("output '" + out_path + "': its file name '" + name + "' " + why +
+                 ", and it names the header's namespace: give --name NAME");
+    }
     if (!camera_options.empty() && !header) fail("camera options need a .hpp output (a blob holds no camera)");
 
     const auto start = std::chrono::steady_clock::now();
