@@ -14,12 +14,15 @@ public:
 
     NewellQueue(BoundedList<ScreenPoly>& polys, const NewellScratch& s) : polys_(polys), s_(s) {}
 
-    /// Sorts the pool's polygons by depth: all of them wait in the sorted input. Returns it, farthest first.
+    /// Sorts the pool's polygons by depth: all of them wait in the sorted input, none moved in a chain of
+    /// this run (an earlier run's chain numbers would close cycles that are not there). Returns it,
+    /// farthest first.
     Span<const SortKey> start() {
         n_ = polys_.size();
         for (uint32_t i = 0; i < n_; ++i) {
             s_.keys[i] = {~polys_[i].zmax, i};  // ascending ~zmax: farthest first, ties by index
             s_.heap_pos[i] = kPending;
+            polys_[i].moved_at = kNotMoved;
         }
         radix_sort({s_.keys.data(), n_}, {s_.sort_scratch.data(), n_});
         return {s_.keys.data(), n_};
