@@ -39,6 +39,22 @@ struct ScreenVertex {
 };
 static_assert(sizeof(ScreenVertex) == 8, "ScreenVertex is two halfwords and a word");
 
+/// Whether v is a vertex the drawing code can trust: outside a clip plane (z == 0, planes in x), or
+/// within |x|, |y| <= kCoordLimit and z in [kDepthNear, kDepthFar], as project_vertices() gives them.
+/// The draw calls take their vertices on trust (an edge function past the limit overflows int32);
+/// with HIDER_ENABLE_ASSERTS they check hand-made ones with screen_vertices_valid().
+constexpr bool screen_vertex_valid(const ScreenVertex& v) {
+    return v.z == 0 || (v.x >= -kCoordLimit && v.x <= kCoordLimit && v.y >= -kCoordLimit && v.y <= kCoordLimit &&
+                        v.z >= kDepthNear && v.z <= kDepthFar);
+}
+
+/// screen_vertex_valid() for the first n vertices.
+constexpr bool screen_vertices_valid(const ScreenVertex* v, size_t n) {
+    for (size_t i = 0; i < n; ++i)
+        if (!screen_vertex_valid(v[i])) return false;
+    return true;
+}
+
 /// 1 when none of the first n vertices has z == 0 (outside a clip plane, or hand-made with z == 0): the
 /// Cortex-M3 triangle loops then skip their per-triangle clip test (a vertex serves about six triangles,
 /// so one scan a frame costs less than the tests).

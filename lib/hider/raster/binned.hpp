@@ -75,6 +75,7 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
         st.status = Status::invalid_argument;
         return st;
     }
+    HIDER_ASSERT(screen_vertices_valid(verts.data(), mesh.positions.size()));
     for (size_t b = 0; b < bands; ++b) scratch.head[b] = kNoTriangle;
     st.triangles_in = static_cast<uint32_t>(tri_count);
     const BandBounds bb = band_bounds(band_view<Format, Depth>(nullptr, nullptr, buffers.width, height, 0, height));
@@ -98,7 +99,7 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
 /// Draws `mesh` band by band: for each band of `buffers.y1` rows (buffers: a view of rows [0, y1) whose
 /// memory, `buffers.stride` elements a row, is reused for every band), clears it to `background`, draws
 /// every triangle's rows in it and calls done(band), a FrameView of the band's rows; done() returns
-/// false to stop the frame. Same
+/// false to stop the frame. `verts` as for draw_zbuffer(). Same
 /// bytes as clear() + draw_zbuffer() on the whole frame; statistics as the whole frame's. `bs`, if
 /// given, receives this frame's carried-slot figures (it is reset, not added to). Errors: invalid_argument (unusable buffers: among them a
 /// band taller than the frame, y1 > height, which is refused rather than clamped; a mesh of more

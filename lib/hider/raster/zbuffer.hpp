@@ -257,7 +257,8 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
 }  // namespace detail
 
 /// Draws `mesh` into `frame` with the z-buffer. The caller cleared the band (clear()) and projected
-/// the vertices into `verts` with project_vertices() for the same view. Borrows everything for the call.
+/// the vertices into `verts` with project_vertices() for the same view (hand-made ones must pass
+/// screen_vertex_valid(); HIDER_ASSERT checks). Borrows everything for the call.
 /// Errors: invalid_argument when the frame is unusable, has no depth buffer, or its size differs from the view.
 template <bool kCount = false, class Format, class Depth>
 FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
@@ -268,6 +269,7 @@ FrameStats draw_zbuffer(const View& view, const Mesh& mesh, Span<const ScreenVer
         st.status = Status::invalid_argument;
         return st;
     }
+    HIDER_ASSERT(screen_vertices_valid(verts.data(), mesh.positions.size()));
     if constexpr (!kCount && detail::is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2) {
         if (opt.shade != Shade::depth) {
             detail::draw_flat_kernel(view, mesh, verts, frame, opt, st);
