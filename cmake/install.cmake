@@ -12,6 +12,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/port/display DESTINATION ${CMAKE_INSTALL
         FILES_MATCHING PATTERN "*.hpp")
 if(TARGET hider_port_host)
   install(FILES ${PROJECT_SOURCE_DIR}/port/host/ppm.hpp ${PROJECT_SOURCE_DIR}/port/host/png.hpp
+                ${PROJECT_SOURCE_DIR}/port/host/assert.hpp
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hider-port/host)
 endif()
 if(TARGET hider_port_semihost)
