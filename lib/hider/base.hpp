@@ -50,6 +50,16 @@ extern "C" void hider_assert_fail(const char* file, int line);
     __attribute__((naked, noinline, no_instrument_function)) HIDER_ATTR_NO_STACK_PROTECTOR_ HIDER_ATTR_NO_PROFILE_ \
     HIDER_ATTR_NO_COVERAGE_ HIDER_ATTR_NO_ZERO_REGS_
 
+// The core hider's assembly and core-specific arithmetic take: HIDER_ARMV7M for ARMv7-M (Cortex-M3, M4,
+// M7: Thumb-2, 32-bit divide, 64-bit products), HIDER_ARMV6M for ARMv6-M (Cortex-M0, M0+, M1: Thumb-1,
+// no divide, 32-bit products only). Other ARM cores take the portable C++.
+#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#define HIDER_ARMV7M 1
+#endif
+#if defined(__ARM_ARCH_6M__)
+#define HIDER_ARMV6M 1
+#endif
+
 // HIDER_RV32_ASM selects the RV32 assembly routines: RV32I with multiply and divide (M; Zmmul alone has
 // no divide) and all 32 registers. RV32E and cores without M take the portable C++ paths.
 #if defined(__riscv) && defined(__riscv_xlen) && defined(__riscv_mul) && defined(__riscv_div) && \

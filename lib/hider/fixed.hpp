@@ -29,7 +29,7 @@ constexpr int64_t mul_wide_by_parts(int32_t a, int32_t b) {
 
 /// Exact 32x32 -> 64-bit unsigned product: the single place a target-specific multiply goes.
 constexpr uint64_t mul_wide_u(uint32_t a, uint32_t b) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     return mul_wide_u_by_parts(a, b);
 #else
     return uint64_t{a} * b;
@@ -38,7 +38,7 @@ constexpr uint64_t mul_wide_u(uint32_t a, uint32_t b) {
 
 /// Exact 32x32 -> 64-bit signed product.
 constexpr int64_t mul_wide(int32_t a, int32_t b) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     return mul_wide_by_parts(a, b);
 #else
     return static_cast<int64_t>(a) * b;
@@ -128,7 +128,7 @@ constexpr int64_t mul_i33_i16_by_parts(int64_t a, int32_t b) {
 
 /// a * b for |a| < 2^32 and |b| < 2^15.
 constexpr int64_t mul_i33_i16(int64_t a, int32_t b) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     return mul_i33_i16_by_parts(a, b);
 #else
     return a * b;
@@ -146,7 +146,7 @@ constexpr int64_t mul_i64_i16_by_parts(int64_t a, int32_t b) {
 
 /// a * b for |b| < 2^15 and a product that fits int64.
 constexpr int64_t mul_i64_i16(int64_t a, int32_t b) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     return mul_i64_i16_by_parts(a, b);
 #else
     return a * b;
@@ -160,7 +160,7 @@ constexpr uint64_t mul_u32_u64_by_parts(uint32_t a, uint64_t b) {
 
 /// a * b modulo 2^64 for unsigned a.
 constexpr uint64_t mul_u32_u64(uint32_t a, uint64_t b) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     return mul_u32_u64_by_parts(a, b);
 #else
     return a * b;
@@ -296,7 +296,7 @@ private:
 
 /// The divisor for several 64/32 quotients by one value on this target: a reciprocal where 32-bit
 /// division is itself a library call (ARMv6-M: two library divisions saved a quotient), else udiv64_32.
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
 using SharedDivisor32 = Divisor32;
 #else
 using SharedDivisor32 = LongDivisor32;

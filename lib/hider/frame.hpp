@@ -124,7 +124,7 @@ constexpr FrameView<Format, Depth> frame_view(typename Format::Pixel* color, Dep
 namespace detail {
 using AliasWord = uint32_t __attribute__((may_alias));  // fills 16-bit buffers two elements per store
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
 /// Stores `word` to [p, end), a whole number of 96-word blocks: eight 12-register store-multiples a pass.
 HIDER_NAKED inline void fill_words_v7m(AliasWord*, AliasWord*, uint32_t) {
     __asm__ volatile(
@@ -169,7 +169,7 @@ HIDER_NAKED inline void fill_words_v6m(AliasWord*, AliasWord*, uint32_t) {
 /// small frame's cost.
 inline void fill_words(void* p, size_t n, uint32_t word) {
     detail::AliasWord* w = static_cast<detail::AliasWord*>(p);
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
     // Cortex-M3/M4: eight 12-register store-multiples per 96 words (GCC -Os emits one str per word, and
     // shorter store-multiples cost more per word).
     if (size_t blocks = n / 96) {

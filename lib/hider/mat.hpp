@@ -54,7 +54,7 @@ constexpr int32_t dot3_q30_floor_by_parts(int32_t r0, int32_t r1, int32_t r2, in
 
 /// Row r of a Q30 matrix times a Q16 vector, plus a Q16 offset; one floor at the end.
 __attribute__((always_inline)) constexpr Q16 row_dot(const Q30 (&row)[3], const Vec3q16& p, Q16 offset) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     return Q16::from_raw(dot3_q30_floor_by_parts(row[0].raw(), row[1].raw(), row[2].raw(), p.x.raw(), p.y.raw(),
                                                  p.z.raw()) + offset.raw());
 #else
@@ -107,7 +107,7 @@ public:
     constexpr const Transform& transform() const { return t_; }
 
     constexpr Vec3q16 apply(const Vec3q16& p) const {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
         return apply_by_parts(p);
 #else
         return hider::apply(t_, p);

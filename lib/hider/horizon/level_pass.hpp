@@ -46,7 +46,7 @@ inline void level_pass_portable(const LevelPass& p) {
     }
 }
 
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
 /// level_pass_portable() in Thumb-1. r0 values, r1 out, r2 u, r3 knots, r4 h, r5..r7 scratch; r8 du,
 /// r9 hu, r10 out_end, r11 s. The knot's two halves come in with two load-multiples (24 instructions a point).
 HIDER_NAKED inline void level_pass_v6m(const LevelPass*) {
@@ -128,7 +128,7 @@ inline bool make_level_knots(int32_t w0, int32_t v0, int32_t dw, int32_t dv, int
 
 /// Runs the level pass (Thumb-1 on ARMv6-M, else the portable loop).
 inline void run_level_pass(const LevelPass& p) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     level_pass_v6m(&p);
 #else
     level_pass_portable(p);

@@ -83,7 +83,7 @@ inline void coordinate_pass_portable(const RowPass& p) {
     }
 }
 
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
 /// reciprocal_pass_portable() in Thumb-1. r0 values, r1 out, r2 w', r3..r6 scratch; r8 dw', r9 hw',
 /// r10 table, r11 out_end, r12 s0. The two table entries come in with one load-multiple, s and r go
 /// out with one store-multiple (23 instructions a point, 4 more per normalisation step).
@@ -215,7 +215,7 @@ void row_passes_any(const T* values, const RowPass& p) {
 
 /// Both passes (Thumb-1 on ARMv6-M, else the portable loops).
 inline void run_row_passes(const RowPass& p) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     reciprocal_pass_v6m(&p);
     coordinate_pass_v6m(&p);
 #else

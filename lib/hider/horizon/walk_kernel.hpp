@@ -70,7 +70,7 @@ inline int walk_kernel_portable(WalkKernel& k) {
     return kWalkDone;
 }
 
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
 /// walk_kernel_portable() in Thumb-1. r0 p, r4 col, r5 ymin, r6 ymax, r1 r2 r3 r7 scratch; r8 end,
 /// r9 upper, r10 lower, r11 width, r12 slope, lr scratch; the state pointer at [sp].
 HIDER_NAKED inline int walk_kernel_v6m(WalkKernel*) {
@@ -210,7 +210,7 @@ HIDER_NAKED inline int walk_kernel_v6m(WalkKernel*) {
 
 /// Runs the walk (Thumb-1 on ARMv6-M, else the portable loop).
 inline int run_walk_kernel(WalkKernel& k) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     return walk_kernel_v6m(&k);
 #else
     return walk_kernel_portable(k);

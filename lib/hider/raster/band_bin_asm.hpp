@@ -38,7 +38,7 @@ static_assert(sizeof(Tri) == 6 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVe
 constexpr uint32_t band_scale_v(uint32_t rows) { return ((uint32_t{1} << 28) + rows - 1) / rows; }
 }  // namespace detail
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
 /// HIDER_V7M_BIN_LINK: bin_triangles_v7m()'s loop from the vertex indices r0 r1 r2 of a drawable
 /// triangle on: the area, the cull, the link into its band's list, the step to the triangle below (back
 /// to local label 1; to the caller's local label 7, defined after it, when none is left). Uses local

@@ -82,7 +82,7 @@ public:
         const uint8_t capacity = static_cast<uint8_t>(scratch.carried.size());
         for (uint32_t k = 0; k < capacity; ++k) free_base_[k] = static_cast<uint8_t>(k);
         cs_ = {pool_, scratch.slots.data(), scratch.slots.data(), scratch.slots.data() + capacity, free_base_ + capacity};
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
         use_asm_ = kAsmLoop && opt.shade == Shade::headlight && !mesh.normals.empty();
         loop_.tris = mesh.tris.data();
         loop_.verts = verts.data();
@@ -120,7 +120,7 @@ public:
             const int32_t y0 = static_cast<int32_t>(b) * rows;
             ok = band(b, bands, y0, min(height, y0 + rows), background, done);
         }
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
         st_.triangles_drawn += loop_.drawn;  // the assembly loop's, counted up by every band
 #endif
         return ok;
@@ -146,7 +146,7 @@ private:
         insert_prev_ = kNoTriangle;
         const uint8_t* const band_cur = cs_.cur;
         uint8_t* const band_nxt = cs_.nxt;
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
         if (use_asm_) {  // the band in assembly but for the listed triangles it hands back
             loop_.y0 = y0;
             loop_.y1 = y1;
@@ -205,7 +205,7 @@ private:
 
     /// A triangle of this band's list: set up in a free slot (or the spare), its rows drawn; continuing
     /// into the next band in its slot, or re-linked there when it has none.
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     __attribute__((noinline))  // Thumb-1's low registers cannot hold the band loop's values and this one's
 #else
     __attribute__((always_inline))  // in the band loop: no call, no registers saved per triangle
@@ -235,7 +235,7 @@ private:
         insert_prev_ = insert_sorted(next_, *next_head_, insert_prev_, tri);
     }
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
     /// A listed triangle whose set-up draw_band_v7m() found generic: drawn by draw_generic() and
     /// re-linked when it continues, as new_triangle() does after its own set-up.
     __attribute__((noinline)) void generic_again(uint16_t tri) {
@@ -333,7 +333,7 @@ private:
     int32_t count_from_ = 0;  // a set-up counts as drawn in this band from this top row on (INT32_MIN: band 0)
     bool continues_ = false;
     bool packed_ = false;  // clear_band(): rows packed and both buffers word-aligned
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
     bool use_asm_ = false;
     BandLoopArm loop_{};
 #endif

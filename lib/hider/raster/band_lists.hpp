@@ -95,7 +95,7 @@ struct ScreenXY {
     int32_t x, y;
 };
 __attribute__((always_inline)) inline ScreenXY screen_xy(const ScreenVertex& v) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     const uint32_t w = *reinterpret_cast<const AliasWord*>(&v);  // ScreenVertex is word-aligned
     return {static_cast<int16_t>(w), static_cast<int32_t>(w) >> 16};
 #else
@@ -123,7 +123,7 @@ __attribute__((noinline)) uint32_t bin_triangles(const View& view, const Mesh& m
     const uint32_t band_scale = ((uint32_t{1} << 20) + static_cast<uint32_t>(rows) - 1) / static_cast<uint32_t>(rows);
     uint32_t culled = 0;
     const ClippedBinning clipped{view, mesh, verts, cull, bb, height, st};
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
     if constexpr (kAsm) {
         const uint32_t projected = all_projected(vp, mesh.positions.size());  // one scan a frame
         BinLoopArm d{y_lift, height * kSubpixel - 1, band_scale_v(static_cast<uint32_t>(rows)), head, next,

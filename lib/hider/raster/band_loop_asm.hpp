@@ -58,7 +58,7 @@ constexpr uint32_t kGenericHandBack = 0x10000;
 static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(KernelSetupIo, area) + sizeof(int32_t), "io area and out: one strd");
 }  // namespace detail
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
 /// Draws the band from listed triangle t on (following d->next), resuming every carried set-up from
 /// d->cur whose triangle comes before the next listed one; returns kNoTriangle when the list and the
 /// carried set-ups are done, else a listed triangle it hands back (a vertex outside a clip plane, no free

@@ -78,7 +78,7 @@ inline DrawLoopArm draw_loop_arm(const Tri* tris, const Mesh& mesh, Span<const S
 }
 }  // namespace detail
 
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
 /// Draws triangles from p on until one it hands back (a vertex outside a clip plane, or a generic
 /// set-up) or the end; returns that triangle (d->end when none). Culled faces and kernel set-ups are
 /// counted into d. Registers: r4 the triangle, r6 d, r8 the end, r9 the vertices; on the stack the three
@@ -252,7 +252,7 @@ HIDER_NAKED inline const Tri* draw_flat_v6m(const Tri*, detail::DrawLoopArm*) {
 }
 #endif
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
 /// Thumb-2 text of draw_flat_v7m()'s general loop (the projected one and draw_band_v7m() compute the area
 /// in other registers, keeping the vertex indices or pointers). HIDER_V7M_AREA:
 /// stores the vertex pointers r0 r1 r2 at sp and leaves signed_area() of their vertices in r10 (r0-r3,

@@ -9,7 +9,7 @@
 
 // The Cortex-M routines address their subroutines and tables absolutely (a clear stop here instead of
 // GCC's "impossible constraint in 'asm'" deep inside them).
-#if defined(__PIC__) && (defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__))
+#if defined(__PIC__) && (defined(HIDER_ARMV6M) || defined(HIDER_ARMV7M))
 #error "hider: the Cortex-M assembly routines are not position-independent: compile hider's code without -fPIC, -fpic, -fPIE or -fpie"
 #endif
 
@@ -52,9 +52,9 @@ namespace hider {
 /// Cost: the two plane quotients and one division per edge walker (two for flat edges).
 __attribute__((always_inline)) inline KernelSetup kernel_setup(const ScreenVertex& a, const ScreenVertex& b,
                                                                const ScreenVertex& c, KernelSetupIo& io) {
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
     return static_cast<KernelSetup>(kernel_setup_v7m(&a, &b, &c, &io));
-#elif defined(__ARM_ARCH_6M__)
+#elif defined(HIDER_ARMV6M)
     return static_cast<KernelSetup>(kernel_setup_v6m(&a, &b, &c, &io));
 #elif defined(HIDER_RV32_ASM)
     return static_cast<KernelSetup>(kernel_setup_rv32(&a, &b, &c, &io));

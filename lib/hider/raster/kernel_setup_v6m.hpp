@@ -6,7 +6,7 @@
 
 namespace hider {
 
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
 /// Thumb-1 (no long multiply, no divide, eight low registers): the same set-up with its state in a
 /// 184-byte frame. Depth products by balanced 16-bit halves of s = z - 2^31 (the three differences sum
 /// to zero, so each half's sum stays in 32 bits); the two plane quotients by one estimate of

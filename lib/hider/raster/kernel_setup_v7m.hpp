@@ -8,7 +8,7 @@
 
 namespace hider {
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
 /// The Thumb-2 set-up's text, shared by kernel_setup_v7m() and kernel_draw_v7m(): HIDER_V7M_SETUP_MACROS
 /// (the assembler macros below), HIDER_V7M_SETUP (from the entry to the complete record: on to local label
 /// 16 without a lower short edge in [y0, end), to 17 with one and lr = end; r4 the band, r6 the record),

@@ -22,9 +22,9 @@ namespace hider {
 /// run_kernel_triangle_portable()).
 __attribute__((always_inline)) inline uint16_t* run_kernel_triangle(KernelTriangle& t, uint16_t* zrow, int32_t row_stop,
                                                                     const KernelTarget& target) {
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
     return run_kernel_triangle_v7m(&t, zrow, row_stop, &target);
-#elif defined(__ARM_ARCH_6M__)
+#elif defined(HIDER_ARMV6M)
     return run_kernel_triangle_v6m(&t, zrow, row_stop, &target);
 #elif defined(HIDER_RV32_ASM)
     return run_kernel_triangle_rv32(&t, zrow, row_stop, &target);

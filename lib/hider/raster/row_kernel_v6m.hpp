@@ -6,7 +6,7 @@
 
 namespace hider {
 
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
 /// Thumb-1 (Cortex-M0/M0+: eight low registers, no conditional execution). In the row loop r0 holds
 /// the state, r1..r5 lp lg lz rp rg, r7 rows left in this phase, r12 the state again, r8 the colour
 /// offset, r9 dz, r10 the colour; on the stack the middle row's depth pointer, the rows after the switch

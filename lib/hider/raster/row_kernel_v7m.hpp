@@ -6,7 +6,7 @@
 
 namespace hider {
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
 /// HIDER_V7M_PIXEL(entry, skip): one pixel of HIDER_V7M_ROWS's 16-pixel turn, entered at local label
 /// `entry`: the depth at r9 (post-incremented) against z = lr's top half, on a pass both stores (colour at
 /// r9 + r7, r10), then z += dzdx (r8); r12 scratch.

@@ -126,11 +126,11 @@ __attribute__((always_inline)) inline void project_by_loop(const View& view, con
     }
 }
 
-#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV6M) || defined(HIDER_ARMV7M)
 /// project_vertices() through the chip's assembly loop. Out of line: the loop's constants stay off the
 /// caller's frame, which a band renderer keeps through the frame.
 __attribute__((noinline)) inline void project_all(const View& view, Span<const Vec3q16> positions, ScreenVertex* out) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
     project_by_loop(view, vertex_prep(view), project_common_v6m, PreparedTransform(view.to_view), positions, out);
 #else
     project_by_loop(view, vertex_prep_v7m(view), project_common_v7m, view, positions, out);
@@ -165,7 +165,7 @@ __attribute__((noinline)) inline Status check_placement(const View& view, Span<c
 inline Status project_vertices(const View& view, Span<const Vec3q16> positions, Span<ScreenVertex> out,
                                DepthRange* range = nullptr) {
     if (out.size() < positions.size()) return Status::invalid_argument;
-#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV6M) || defined(HIDER_ARMV7M)
     // Checked first on ARM: ARMv6-M's 32-bit transform must not meet a coordinate that overflows.
     const Status placed = detail::check_placement(view, positions, out, range);
     if (placed != Status::ok) return placed;
@@ -192,7 +192,7 @@ inline Status project_vertices(const View& view, Span<const Vec3q16> positions, 
         }
         *range = r;
     }
-#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV6M) || defined(HIDER_ARMV7M)
     return Status::ok;  // checked before the loop
 #else
     // Checked last elsewhere: apply() wraps here without overflow (64-bit sums, unsigned adds, z negated
@@ -219,14 +219,14 @@ class VertexProjector {
 public:
     explicit VertexProjector(const View& view)
         : view_(view), to_view_(view.to_view)
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
           , prep_(detail::vertex_prep_v7m(view))
 #endif
     {
     }
     /// Out of line: a walk's loop keeps its registers around the call.
     __attribute__((noinline)) void operator()(const Vec3q16& position, ScreenVertex& out) const {
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
         if (project_common_v7m(&prep_, &position, &out, &position + 1) != &position + 1)
             detail::project_one(view_, to_view_point(to_view_, position), out);
 #else
@@ -237,7 +237,7 @@ public:
 private:
     const View& view_;
     PreparedTransform to_view_;
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
     detail::VertexPrepV7m prep_;
 #endif
 };

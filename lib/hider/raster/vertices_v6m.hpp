@@ -43,7 +43,7 @@ inline VertexPrep vertex_prep(const View& v) {
 }
 }  // namespace detail
 
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
 /// Projects positions [p, end) into out while each lies inside the view volume with w < 2^29; returns
 /// the first position it did not project (end when it did all). Per vertex: the transform as
 /// dot3_split_floor() does it (twelve 32-bit multiplies a row), the guard band from |x| k and

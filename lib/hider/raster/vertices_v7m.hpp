@@ -7,7 +7,7 @@
 
 namespace hider {
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
 namespace detail {
 /// Per-frame constants of the Thumb-2 vertex loop (the layout is its contract). Each row is a rotation
 /// row and the 64-bit sum it starts from (lo, hi), t 2^30, so that floor((start + row . p) / 2^30) is

@@ -226,12 +226,12 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
         else kt.k.color = Format::pack(shading.color(mesh, t, area < 0));
         run_kernel_triangle(kt, depth + static_cast<ptrdiff_t>(kt.row - y0) * stride, y1, target);
     };
-#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV6M) || defined(HIDER_ARMV7M)
     if constexpr (kAsmLoop && is_same_type<Format, Rgb565Format>::value) {
         if (whole_frame && opt.shade == Shade::headlight && !mesh.normals.empty()) {
             const Tri* const tris = mesh.tris.data();
             DrawLoopArm d = draw_loop_arm(tris, mesh, verts, shading, opt.cull, io, depth, y0, stride, y1, target);
-#if !defined(__ARM_ARCH_6M__)
+#if !defined(HIDER_ARMV6M)
             d.projected = all_projected(verts.data(), mesh.positions.size());
             band.depth_origin = reinterpret_cast<uintptr_t>(depth) -
                                 static_cast<uintptr_t>(y0) * static_cast<uintptr_t>(band.stride_bytes);
@@ -239,7 +239,7 @@ void draw_flat_kernel(const View& view, const Mesh& mesh, Span<const ScreenVerte
             band.stop = y1;
 #endif
             for_each_drawable(view, mesh, verts, opt.cull, bb, whole_frame, y0, y1, height, st, draw, [&](size_t t) {
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
                 return static_cast<size_t>(draw_flat_v6m(tris + t, &d) - tris);
 #else
                 return static_cast<size_t>(draw_flat_v7m(tris + t, &d) - tris);
