@@ -108,6 +108,18 @@ inline Vec3q30 facing_normal(const Scene& s, const Hit& h, const Vec3q16& p, con
     return n;
 }
 
+/// The normal a ray is mirrored about: facing_normal()'s, made unit again where it is a mesh's Normal14,
+/// which validate_scene() accepts within 2^-10 of unit (its rounding alone leaves 2^-13): reflect()
+/// keeps a ray's length only about a unit normal, and the sphere test takes every ray as unit (mirror
+/// rays 2e-4 too long hit spheres off their surface, which then shadowed themselves). A zero normal
+/// stays zero (the ray goes on).
+inline Vec3q30 mirror_normal(const Scene& s, const Hit& h, const Vec3q30& n) {
+    Vec3q30 u = n;
+    if (h.kind == ObjectKind::triangle && !s.meshes[h.object].mesh.normals.empty())
+        (void)unit_q30(n.x.raw(), n.y.raw(), n.z.raw(), u);
+    return u;
+}
+
 /// The triangle test's vertex grid step (raw) for rays of `bvh` from `origin` (bvh_triangle_ray_grid()).
 inline int64_t mesh_grid_step(const Bvh& bvh, const Vec3q16& origin) {
     return int64_t{1} << triangle_grid_shift(bvh_reach(bvh, origin));
@@ -228,7 +240,7 @@ inline Rgb trace(const Scene& s, const Ray& primary, Span<BvhStackEntry> stack, 
         }
         weight = (weight * r) >> 15;
         if (weight == 0) break;
-        set_ray(ray, from, reflect(ray.dir, n));
+        set_ray(ray, from, reflect(ray.dir, detail::mirror_normal(s, h, n)));
     }
     auto out = [](uint32_t a) { return static_cast<uint8_t>(min<uint32_t>((a + (1u << 22)) >> 23, 255u)); };
     return {out(acc[0]), out(acc[1]), out(acc[2])};
