@@ -67,6 +67,12 @@ TEST_CASE("every malformed scene line is reported with file, line and what is wr
         {c + "plane 1e-300 0 0 1\n", "t.txt:2: ", "plane: offset 1e+300 (along the unit normal) outside the world"},
         {c + "max-distance 1e-9\n", "t.txt:2: ", "max-distance: 1e-09 is below the fixed-point resolution"},
         {c + "triangle 0 0 0 1 0 0 0 1e5 0\n", "t.txt:2: ", "triangle: vertex 3 y 100000 is outside the world cube"},
+        // A triangle on a line or a point (a red team's: accepted without a word, as a mesh of such is not):
+        {c + "triangle 0 0 0 1 1 1 2 2 2\n", "t.txt:2: ", "triangle: no area at the fixed-point resolution (2^-16)"},
+        {c + "triangle 0 0 0 0 0 0 0 0 0\n", "t.txt:2: ", "triangle: no area"},
+        // A byte a message cannot show is written as \xNN (a NUL was invisible: "bad number '1'"):
+        {c + std::string("sphere 0 0 0 1\0 2\n", 18), "t.txt:2: ", "sphere: bad number '1\\x00' for radius"},
+        {c + "triangle 0 0 0 1e-6 0 0 0 1e-6 0\n", "t.txt:2: ", "triangle: no area"},
         {c + "light point 0 9000 0\n", "t.txt:2: ", "light: position y 9000 is outside the world cube"},
         {c + "light directional 0 0 0\n", "t.txt:2: ", "light: direction is the zero vector"},
         {c + "light spot 0 1 0\n", "t.txt:2: ", "expected 'point' or 'directional' (got 'spot')"},

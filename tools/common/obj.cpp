@@ -18,10 +18,30 @@
 #include <utility>
 
 namespace hider::tool {
+
+constexpr std::size_t kPrintableTokenBytes = 40;  // longer tokens are cut in messages
+
+std::string printable_token(std::string_view token) {
+    static constexpr char kHex[] = "0123456789abcdef";
+    std::string s;
+    const std::size_t length = token.size() < kPrintableTokenBytes ? token.size() : kPrintableTokenBytes;
+    for (std::size_t i = 0; i < length; ++i) {
+        const auto byte = static_cast<unsigned char>(token[i]);
+        if (byte >= 0x20 && byte < 0x7f && byte != '\\') {
+            s += static_cast<char>(byte);
+        } else {
+            s += "\\x";
+            s += kHex[byte >> 4];
+            s += kHex[byte & 0xf];
+        }
+    }
+    if (length < token.size()) s += "...";
+    return s;
+}
+
 namespace {
 
 constexpr std::size_t kChunkBytes = std::size_t{1} << 16;  // stream read size
-constexpr std::size_t kShownTokenBytes = 40;               // longer tokens are cut in messages
 constexpr int64_t kIndexSaturation = (INT64_MAX - 9) / 10;  // past this, one more digit could overflow
 
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
@@ -37,26 +57,7 @@ std::string_view next_token(std::string_view& rest) {
     return token;
 }
 
-/// Renders `token` for a message: non-printable bytes become \xNN and long tokens are cut with "...".
-std::string shown(std::string_view token) {
-    static constexpr char kHex[] = "0123456789abcdef";
-    std::string s;
-    const std::size_t length = token.size() < kShownTokenBytes ? token.size() : kShownTokenBytes;
-    for (std::size_t i = 0; i < length; ++i) {
-        const auto byte = static_cast<unsigned char>(token[i]);
-        if (byte >= 0x20 && byte < 0x7f && byte != '\\') {
-            s += static_cast<char>(byte);
-        } else {
-            s += "\\x";
-            s += kHex[byte >> 4];
-            s += kHex[byte & 0xf];
-        }
-    }
-    if (length < token.size()) s += "...";
-    return s;
-}
-
-std::string quoted(std::string_view token) { return "'" + shown(token) + "'"; }
+std::string quoted(std::string_view token) { return "'" + printable_token(token) + "'"; }
 
 std::string count_of(uint64_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
@@ -315,7 +316,7 @@ private:
         const auto defined = static_cast<int64_t>(model_.vertices.size());
         const int64_t resolved = value > 0 ? value - 1 : defined + value;
         if (resolved < 0 || resolved >= defined) {
-            return fail(line_, "vertex index " + shown(text) + " out of range (" +
+            return fail(line_, "vertex index " + printable_token(text) + " out of range (" +
                                    count_of(static_cast<uint64_t>(defined), "vertex", "vertices") +
                                    " defined so far)");
         }

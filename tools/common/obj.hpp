@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
 
 // Accepted input (anything else on a `v` or `f` line is an error, never a guess):
@@ -76,5 +77,8 @@ bool parse_obj(std::istream& in, const std::string& name, ObjModel& out, ObjErro
 
 /// Formats `e` as "file:line: what", or "file: what" when e.line == 0.
 std::string format(const ObjError& e);
+
+/// `token` as a message shows it: non-printable bytes as \xNN, more than 40 bytes cut with "...".
+std::string printable_token(std::string_view token);
 
 }  // namespace hider::tool

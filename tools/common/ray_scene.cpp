@@ -74,7 +74,7 @@ public:
         }
         const std::string s = next();
         if (!parse_double(s, v)) {
-            error = keyword() + ": bad number '" + s + "' for " + field;
+            error = keyword() + ": bad number '" + printable_token(s) + "' for " + field;
             return false;
         }
         return true;
@@ -98,7 +98,7 @@ public:
     }
     bool end(std::string& error) const {
         if (done()) return true;
-        error = keyword() + ": unexpected '" + t_[pos_] + "'";
+        error = keyword() + ": unexpected '" + printable_token(t_[pos_]) + "'";
         return false;
     }
 
@@ -177,7 +177,7 @@ bool surface(Statement& st, RayScene& scene, uint16_t& index, std::string& error
             }
             f.reflect_q15 = static_cast<uint16_t>(std::lround(k * ray::kReflectOne));
         } else {
-            error = st.keyword() + ": unknown attribute '" + a + "' (expected color, checker or reflect)";
+            error = st.keyword() + ": unknown attribute '" + printable_token(a) + "' (expected color, checker or reflect)";
             return false;
         }
     }
@@ -220,7 +220,7 @@ bool read_camera(Statement& st, CameraLine& cam, std::string& error) {
                 return false;
             }
         } else {
-            error = "camera: unknown field '" + k + "' (expected eye, target, up or fov)";
+            error = "camera: unknown field '" + printable_token(k) + "' (expected eye, target, up or fov)";
             return false;
         }
     }
@@ -336,6 +336,11 @@ bool read_triangle(Statement& st, RayScene::MeshData& loose, RayScene& s, std::s
         double v[3];
         if (!st.vec(kNames[i], v, error) || !world_point(std::string("triangle: ") + kNames[i], v, p[i], error)) return false;
     }
+    const Vec3i64 n = cross_raw(p[1] - p[0], p[2] - p[0]);  // world points: edges below 2^30 raw
+    if (n.x == 0 && n.y == 0 && n.z == 0) {  // as a mesh of such triangles, or a sphere below 2^-16
+        error = "triangle: no area at the fixed-point resolution (2^-16): nothing of it could be hit";
+        return false;
+    }
     if (loose.positions.size() + 3 > kMaxMeshVertices) {
         error = "triangle: too many triangles (at most 21845)";
         return false;
@@ -435,7 +440,7 @@ bool read_mesh(Statement& st, const std::string& base_dir, RayScene& s, std::str
 
 bool read_light(Statement& st, RayScene& s, std::string& error) {
     if (st.done() || (st.peek() != "point" && st.peek() != "directional")) {
-        error = "light: expected 'point' or 'directional'" + (st.done() ? std::string() : " (got '" + st.peek() + "')");
+        error = "light: expected 'point' or 'directional'" + (st.done() ? std::string() : " (got '" + printable_token(st.peek()) + "')");
         return false;
     }
     ray::Light l;
@@ -448,7 +453,7 @@ bool read_light(Statement& st, RayScene& s, std::string& error) {
     while (!st.done()) {
         const std::string k = st.next();
         if (k != "color") {
-            error = "light: unknown attribute '" + k + "' (expected color)";
+            error = "light: unknown attribute '" + printable_token(k) + "' (expected color)";
             return false;
         }
         if (!st.first_time(k, error)) return false;
@@ -562,7 +567,7 @@ bool parse_ray_scene(std::istream& in, const std::string& name, const std::strin
         else if (k == "mesh") ok = read_mesh(st, base_dir, s, why);
         else if (k == "light") ok = read_light(st, s, why);
         else if (k == "size" || k == "background" || k == "ambient" || k == "bounces" || k == "max-distance") ok = read_setting(st, s, why);
-        else why = "unknown keyword '" + k + "'";
+        else why = "unknown keyword '" + printable_token(k) + "'";
         if (!ok) return fail(why);
         if (s.spheres.size() > ray::kMaxSceneObjects || s.planes.size() > ray::kMaxSceneObjects ||
             s.lights.size() > ray::kMaxSceneObjects || s.meshes.size() >= ray::kMaxSceneObjects)
