@@ -22,7 +22,8 @@ constexpr uint32_t kDepthFar = 0xFFFF0000u - 1 - kDepthMargin;
 /// (smaller = nearer, affine in screen space). A vertex outside a clip plane has z == 0 and its planes
 /// in x (8 bytes a vertex: indexing is a shift, and a mesh's vertex array is a third smaller).
 /// project_vertices() and project() never give a drawable vertex z == 0; a hand-made vertex with z == 0
-/// and x == 0 counts as drawable (outside() == 0) and takes draw_zbuffer's slower clipping path.
+/// and no plane in x's low byte would count as drawable (outside() == 0), at depth 0, and fails
+/// screen_vertex_valid().
 struct ScreenVertex {
     int16_t x = 0;
     int16_t y = 0;
@@ -39,13 +40,14 @@ struct ScreenVertex {
 };
 static_assert(sizeof(ScreenVertex) == 8, "ScreenVertex is two halfwords and a word");
 
-/// Whether v is a vertex the drawing code can trust: outside a clip plane (z == 0, planes in x), or
-/// within |x|, |y| <= kCoordLimit and z in [kDepthNear, kDepthFar], as project_vertices() gives them.
-/// The draw calls take their vertices on trust (an edge function past the limit overflows int32);
-/// with HIDER_ENABLE_ASSERTS they check hand-made ones with screen_vertices_valid().
+/// Whether v is a vertex the drawing code can trust, as project_vertices() gives them: outside a clip
+/// plane (z == 0, a plane in x's low byte; x and y are not read), or within |x|, |y| <= kCoordLimit and
+/// z in [kDepthNear, kDepthFar]. The draw calls take their vertices on trust (an edge function past the
+/// limit overflows int32); with HIDER_ENABLE_ASSERTS they check them with screen_vertices_valid().
 constexpr bool screen_vertex_valid(const ScreenVertex& v) {
-    return v.z == 0 || (v.x >= -kCoordLimit && v.x <= kCoordLimit && v.y >= -kCoordLimit && v.y <= kCoordLimit &&
-                        v.z >= kDepthNear && v.z <= kDepthFar);
+    if (v.z == 0) return v.outside() != 0;
+    return v.x >= -kCoordLimit && v.x <= kCoordLimit && v.y >= -kCoordLimit && v.y <= kCoordLimit &&
+           v.z >= kDepthNear && v.z <= kDepthFar;
 }
 
 /// screen_vertex_valid() for the first n vertices.

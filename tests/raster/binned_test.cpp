@@ -12,6 +12,8 @@
 
 #include <doctest/doctest.h>
 
+#include "support/assert_trap.hpp"
+#include "support/hand_made.hpp"
 #include "support/scene_util.hpp"
 
 using namespace hider;
@@ -431,3 +433,28 @@ TEST_CASE("the ARMv7-M binning loop's band of a subpixel row is exact for every 
     }
     CHECK(failures == 0);
 }
+
+#if defined(HIDER_ENABLE_ASSERTS)
+TEST_CASE("With asserts, draw_zbuffer_binned() checks hand-made vertices at entry, before any band") {
+    test::HandMadeTriangle h;
+    constexpr int n = test::HandMadeTriangle::kSize;
+    uint16_t color[n * 4], depth[n * 4], next[1], head[4];
+    const auto band = band_view<Rgb565Format, uint16_t>(color, depth, n, n, 0, 4);  // 4-row bands
+    const BinnedScratch scratch{{next, 1}, {head, 4}, {}, {}};
+    DrawOptions opt;
+    opt.cull = false;
+    int bands = 0;
+    auto done = [&bands](const FrameView<Rgb565Format, uint16_t>&) { return ++bands != 0; };
+    FrameStats st;
+    auto draw = [&] { st = draw_zbuffer_binned(h.view, h.mesh, {h.verts, 3}, band, opt, Rgb{0, 0, 0}, scratch, done); };
+    CHECK_FALSE(test::assert_trap::fails(draw));  // in range
+    CHECK(st.ok());
+    CHECK(st.triangles_drawn == 1);
+    CHECK(bands == 4);
+    h.past_the_limit();
+    bands = 0;
+    CHECK(test::assert_trap::fails(draw));
+    CHECK(test::assert_trap::file().find("raster/binned.hpp") != std::string::npos);
+    CHECK(bands == 0);  // no band drawn before it
+}
+#endif

@@ -1,18 +1,14 @@
 // The projection's fast path for targets with a 32-bit divide (project_common, ratio_q31) against
 // outcode() and project(), on random views and view points: every point it accepts must give exactly
 // project()'s vertex, and it must accept every point inside the view volume with w < 2^30. And the
-// range every projected vertex keeps (screen_vertex_valid()), which the draw calls assert of theirs.
+// range every projected vertex keeps (screen_vertex_valid()), which the draw calls assert of theirs
+// (zbuffer_test.cpp, binned_test.cpp, sort_test.cpp).
 #include <doctest/doctest.h>
 
-#include <hider/raster/binned.hpp>
 #include <hider/raster/vertices.hpp>
 
-#include <csetjmp>
 #include <random>
-#include <string>
 #include <vector>
-
-#include "host/assert.hpp"
 
 namespace hider {
 namespace {
@@ -158,92 +154,23 @@ TEST_CASE("project_vertices() gives only vertices screen_vertex_valid() accepts;
     };
     CHECK(screen_vertex_valid(vertex(kCoordLimit, -kCoordLimit, kDepthNear)));
     CHECK(screen_vertex_valid(vertex(-kCoordLimit, kCoordLimit, kDepthFar)));
-    CHECK(screen_vertex_valid(vertex(-32768, 32767, 0)));  // outside a clip plane: x holds the planes
+    CHECK(screen_vertex_valid(vertex(kClipNear, 0, 0)));  // outside a clip plane: x holds the planes
+    CHECK(screen_vertex_valid(vertex(0x3F, 0, 0)));
+    // z == 0 with no plane in x's low byte counts as drawable: its x and y are then read.
+    CHECK_FALSE(screen_vertex_valid(vertex(0, 0, 0)));
+    CHECK_FALSE(screen_vertex_valid(vertex(-32768, 32767, 0)));
+    CHECK_FALSE(screen_vertex_valid(vertex(256, 32767, 0)));
     CHECK_FALSE(screen_vertex_valid(vertex(kCoordLimit + 1, 0, kDepthNear)));
     CHECK_FALSE(screen_vertex_valid(vertex(0, -kCoordLimit - 1, kDepthNear)));
     CHECK_FALSE(screen_vertex_valid(vertex(-32768, -32768, 1u << 30)));
     CHECK_FALSE(screen_vertex_valid(vertex(0, 0, kDepthNear - 1)));
     CHECK_FALSE(screen_vertex_valid(vertex(0, 0, kDepthFar + 1)));
-    ScreenVertex three[3] = {vertex(0, 0, kDepthNear), vertex(1, 1, kDepthFar), vertex(2, 2, 0)};
+    ScreenVertex three[3] = {vertex(0, 0, kDepthNear), vertex(1, 1, kDepthFar), vertex(kClipNear, 0, 0)};
     CHECK(screen_vertices_valid(three, 3));
     three[1].x = kCoordLimit + 1;
     CHECK_FALSE(screen_vertices_valid(three, 3));
     CHECK(screen_vertices_valid(three, 1));  // only the first n
 }
-
-#if defined(HIDER_ENABLE_ASSERTS)
-std::jmp_buf g_assert_jump;
-std::string g_assert_file;
-void jump_out(const char* file, int) {
-    g_assert_file = file;
-    std::longjmp(g_assert_jump, 1);
-}
-
-/// Whether f() fails a HIDER_ASSERT (the host port's handler jumps back here instead of aborting, the
-/// assertion's file in g_assert_file).
-template <class F>
-bool asserts(F&& f) {
-    const port::AssertHandler previous = port::set_assert_handler(jump_out);
-    if (setjmp(g_assert_jump) != 0) {  // no local changed since setjmp() is read here
-        port::set_assert_handler(previous);
-        return true;
-    }
-    f();
-    port::set_assert_handler(previous);
-    return false;
-}
-
-TEST_CASE("With asserts, draw_zbuffer() and draw_zbuffer_binned() check hand-made vertices before drawing") {
-    Camera cam;
-    cam.eye = {Q16::from_int(0), Q16::from_int(0), Q16::from_int(5)};
-    cam.up = {Q16::from_int(0), Q16::from_int(1), Q16::from_int(0)};
-    cam.fovy = Angle::from_degrees(Q16::from_int(60));
-    cam.near = Q16::from_int(1);
-    cam.far = Q16::from_int(100);
-    View view;
-    REQUIRE(make_view(cam, 16, 16, view) == Status::ok);
-    Vec3q16 pos[3] = {};
-    ScreenVertex v[3];
-    const int16_t xs[3] = {-320, 320, 320}, ys[3] = {-320, -320, 320};
-    for (int i = 0; i < 3; ++i) {
-        v[i].x = xs[i];
-        v[i].y = ys[i];
-        v[i].z = 1u << 30;
-    }
-    const Tri tri{{0, 1, 2}};
-    Mesh mesh;
-    mesh.positions = {pos, 3};
-    mesh.tris = {&tri, 1};
-    uint16_t color[256], depth[256];
-    const auto frame = frame_view<Rgb565Format, uint16_t>(color, depth, 16, 16);
-    clear(frame, Rgb{0, 0, 0});
-    DrawOptions opt;
-    opt.cull = false;
-    uint16_t next[1], head[16];
-    const BinnedScratch scratch{{next, 1}, {head, 16}, {}, {}};
-    auto band_done = [](const FrameView<Rgb565Format, uint16_t>&) { return true; };
-    const auto band = frame_view<Rgb565Format, uint16_t>(color, depth, 16, 16);
-    FrameStats st;
-    auto zbuffer = [&] { st = draw_zbuffer(view, mesh, {v, 3}, frame, opt); };
-    auto binned = [&] { st = draw_zbuffer_binned(view, mesh, {v, 3}, band, opt, Rgb{0, 0, 0}, scratch, band_done); };
-    // In range (a triangle over the whole frame), both draw.
-    CHECK_FALSE(asserts(zbuffer));
-    CHECK(st.ok());
-    CHECK(st.triangles_drawn == 1);
-    CHECK_FALSE(asserts(binned));
-    CHECK(st.ok());
-    CHECK(st.triangles_drawn == 1);
-    // Past the coordinate limit (an edge function would overflow int32): the assert stops both.
-    v[0].x = v[0].y = -32768;
-    v[1].x = 32767;
-    v[2].x = v[2].y = 32767;
-    v[1].y = -32768;
-    CHECK(asserts(zbuffer));
-    CHECK(g_assert_file.find("raster/zbuffer.hpp") != std::string::npos);  // at the entry, before drawing
-    CHECK(asserts(binned));
-    CHECK(g_assert_file.find("raster/binned.hpp") != std::string::npos);
-}
-#endif
 
 }  // namespace
 }  // namespace hider

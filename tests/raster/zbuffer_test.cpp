@@ -9,6 +9,8 @@
 
 #include <doctest/doctest.h>
 
+#include "support/assert_trap.hpp"
+#include "support/hand_made.hpp"
 #include "support/scene_util.hpp"
 
 using namespace hider;
@@ -417,3 +419,27 @@ TEST_CASE("project_vertices' depth range spans exactly the drawable vertices") {
     CHECK(empty.min == kDepthFar);
     CHECK(empty.max == kDepthNear);
 }
+
+#if defined(HIDER_ENABLE_ASSERTS)
+TEST_CASE("With asserts, draw_zbuffer() checks hand-made vertices at entry, before drawing anything") {
+    test::HandMadeTriangle h;
+    constexpr int n = test::HandMadeTriangle::kSize;
+    uint16_t color[n * n], depth[n * n];
+    const auto frame = frame_view<Rgb565Format, uint16_t>(color, depth, n, n);
+    DrawOptions opt;
+    opt.cull = false;
+    FrameStats st;
+    auto draw = [&] { st = draw_zbuffer(h.view, h.mesh, {h.verts, 3}, frame, opt); };
+    clear(frame, Rgb{0, 0, 0});
+    CHECK_FALSE(test::assert_trap::fails(draw));  // in range
+    CHECK(st.ok());
+    CHECK(st.triangles_drawn == 1);
+    CHECK(std::count(color, color + n * n, uint16_t{0}) < n * n / 2);  // half the frame and its diagonal
+    h.past_the_limit();
+    clear(frame, Rgb{0, 0, 0});
+    CHECK(test::assert_trap::fails(draw));
+    CHECK(test::assert_trap::file().find("raster/zbuffer.hpp") != std::string::npos);
+    CHECK(std::count(color, color + n * n, uint16_t{0}) == n * n);  // nothing drawn before it
+    CHECK(std::count(depth, depth + n * n, uint16_t{0xFFFF}) == n * n);
+}
+#endif

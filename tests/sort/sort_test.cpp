@@ -13,6 +13,8 @@
 
 #include <doctest/doctest.h>
 
+#include "support/assert_trap.hpp"
+#include "support/hand_made.hpp"
 #include "support/scene_util.hpp"
 
 using namespace hider;
@@ -889,3 +891,20 @@ TEST_CASE("newell_order on its own output (the same cuts) decides as on those po
     CHECK(second_runs > 350);
     CHECK(moved_before > 100);  // first runs that left chain numbers behind
 }
+
+#if defined(HIDER_ENABLE_ASSERTS)
+TEST_CASE("With asserts, build_polys() checks hand-made vertices at entry, before appending any polygon") {
+    test::HandMadeTriangle h;
+    ScreenPoly store[4];
+    BoundedList<ScreenPoly> polys(store, 4);
+    FrameStats st;
+    auto build = [&] { build_polys(h.view, h.mesh, {h.verts, 3}, false, polys, st); };
+    CHECK_FALSE(test::assert_trap::fails(build));  // in range
+    CHECK(polys.size() == 1);
+    h.past_the_limit();
+    polys.clear();
+    CHECK(test::assert_trap::fails(build));
+    CHECK(test::assert_trap::file().find("sort/poly.hpp") != std::string::npos);
+    CHECK(polys.size() == 0);
+}
+#endif

@@ -70,12 +70,15 @@ inline void update_extents(ScreenPoly& p) {
 /// (zero area) or outside (clipped away or no pixel centre). When `out` fills, the rest are dropped
 /// and counted (st.status = capacity_exceeded); so are the triangles from kMaxPolyTriangles on (as outside).
 /// Fewer verts than mesh positions: nothing appended, st.status = invalid_argument (as draw_zbuffer()).
+/// `verts` as for draw_zbuffer(): from project_vertices(), or hand-made ones that pass
+/// screen_vertex_valid() (HIDER_ASSERT checks).
 inline void build_polys(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
                         BoundedList<ScreenPoly>& out, FrameStats& st) {
     if (verts.size() < mesh.positions.size()) {
         st.status = Status::invalid_argument;
         return;
     }
+    HIDER_ASSERT(screen_vertices_valid(verts.data(), mesh.positions.size()));
     FrameView<Grey8Format> whole;  // geometry only: bounds of the full frame
     whole.width = view.width;
     whole.height = view.height;
