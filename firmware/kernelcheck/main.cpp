@@ -33,7 +33,7 @@
 
 namespace {
 
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
 /// The Thumb-2 set-up's rounded quotient (its hider_divr and hider_divr_far macros) on its own:
 /// n = hi:lo, d in r2; INT32_MIN where the set-up would call the triangle generic.
 HIDER_NAKED int32_t divr_v7m(uint32_t, uint32_t, uint32_t) {
@@ -92,7 +92,7 @@ int main() {
         sh::print("\n");
         return 1;
     }
-#if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV7M)
     const int divr_case = kernelcheck::run_divr_cases(divr_v7m);
     if (divr_case >= 0) {
         sh::print("kernelcheck: the set-up's rounded quotient differs from div_round in case ");
@@ -121,14 +121,14 @@ int main() {
         kernelcheck::project_each,
         [&](const kernelcheck::VertexCase& c) {
             projector_differs += kernelcheck::projector_matches(c) ? 0u : 1u;
-#if defined(__ARM_ARCH_6M__)
+#if defined(HIDER_ARMV6M)
             // The Thumb-1 loop may stop only outside the view volume or at w >= 2^29.
             kernelcheck::walk_vertex_loop(c, hider::detail::vertex_prep(c.view), hider::project_common_v6m,
                                           [&](const hider::ViewPoint& q) {
                                               return hider::outcode(c.view, q) == 0 && q.w < (int32_t{1} << 29);
                                           },
                                           accepted, refused_inside);
-#elif defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#elif defined(HIDER_ARMV7M)
             // The Thumb-2 loop may stop only at a position project_common() refuses.
             kernelcheck::walk_vertex_loop(c, hider::detail::vertex_prep_v7m(c.view), hider::project_common_v7m,
                                           [&](const hider::ViewPoint& q) {
@@ -215,7 +215,7 @@ int main() {
     sh::print(" scenes the C++ draw loop, ");
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kBandCases));
     sh::print(" banded scenes the C++ band loop");
-#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
+#if defined(HIDER_ARMV6M) || defined(HIDER_ARMV7M)
     sh::print(" (the assembly vertex loop projected ");
     sh::print_u32(accepted);
     sh::print(")");

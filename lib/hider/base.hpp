@@ -52,7 +52,8 @@ extern "C" void hider_assert_fail(const char* file, int line);
 
 // The core hider's assembly and core-specific arithmetic take: HIDER_ARMV7M for ARMv7-M (Cortex-M3, M4,
 // M7: Thumb-2, 32-bit divide, 64-bit products), HIDER_ARMV6M for ARMv6-M (Cortex-M0, M0+, M1: Thumb-1,
-// no divide, 32-bit products only). Other ARM cores take the portable C++.
+// no divide, 32-bit products only). Other ARM cores take the portable C++, but for fill_words()'
+// store-multiples, which every Thumb core runs (frame.hpp).
 #if defined(__ARM_ARCH_7M__) || defined(__ARM_ARCH_7EM__)
 #define HIDER_ARMV7M 1
 #endif

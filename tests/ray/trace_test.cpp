@@ -162,7 +162,7 @@ TEST_CASE("a mirror triangle reflects as the same mirror plane: rays off a mesh'
         return r.rgb;
     };
     const std::string triangle = "triangle 0 58.83 -16.77  -49.85 -26.54 15.26  49.85 -32.29 -13.50";
-    const std::string plane = "plane 0.2822 0.1881 0.9407 -4.7035";
+    const std::string plane = "plane 0.282216 0.188154 0.940719 -4.706730";  // the triangle's plane, to 1e-6
     for (int radius : {20, 100, 500, 4000}) {
         const std::vector<uint8_t> a = render(triangle, radius), b = render(plane, radius);
         REQUIRE(a.size() == b.size());
@@ -173,7 +173,7 @@ TEST_CASE("a mirror triangle reflects as the same mirror plane: rays off a mesh'
         }
         INFO("radius " << radius << ": lit through the plane " << lit << " of 3,072, channels off by more than 3: " << off);
         CHECK(lit > 1500);     // the sphere's inside shows in the mirror
-        CHECK(off <= 30);  // both mirrors (their planes agree to 1e-4) show it alike (7 at radius 20)
+        CHECK(off <= 10);  // both mirrors show it alike (rounded apart: 1 channel at radius 20)
     }
 }
 

@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
     std::string why;
     if (named) {
         if (!bake::valid_name(name, why)) fail("--name '" + name + "' " + why);
-    } else if (header) {  // the header's file name: two default headers never share a namespace
+    } else if (header) {  // the header's file name: headers of different names never share a namespace
         name = std::filesystem::path(out_path).stem().string();
         if (!bake::valid_name(name, why))
             fail("output '" + out_path + "': its file name '" + name + "' " + why +

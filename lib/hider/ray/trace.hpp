@@ -109,10 +109,8 @@ inline Vec3q30 facing_normal(const Scene& s, const Hit& h, const Vec3q16& p, con
 }
 
 /// The normal a ray is mirrored about: facing_normal()'s, made unit again where it is a mesh's Normal14,
-/// which validate_scene() accepts within 2^-10 of unit (its rounding alone leaves 2^-13): reflect()
-/// keeps a ray's length only about a unit normal, and the sphere test takes every ray as unit (mirror
-/// rays 2e-4 too long hit spheres off their surface, which then shadowed themselves). A zero normal
-/// stays zero (the ray goes on).
+/// which is unit only within validate_scene()'s tolerance: reflect() keeps a ray's length only about a
+/// unit normal, and the sphere test takes every ray as unit. A zero normal stays zero (the ray goes on).
 inline Vec3q30 mirror_normal(const Scene& s, const Hit& h, const Vec3q30& n) {
     Vec3q30 u = n;
     if (h.kind == ObjectKind::triangle && !s.meshes[h.object].mesh.normals.empty())
