@@ -8,6 +8,15 @@
 
 namespace hider {
 
+/// True where the CPU has no 32x32 -> 64-bit multiply (ARMv6-M): wide products are built from 32-bit
+/// ones (the *_by_parts forms, available everywhere for tests).
+constexpr bool kNarrowMultiply =
+#if defined(HIDER_ARMV6M)
+    true;
+#else
+    false;
+#endif
+
 /// Exact 32x32 -> 64-bit unsigned product from four 16x16 products (what ARMv6-M uses: it has no
 /// long multiply instruction, and __aeabi_lmul is a full 64x64 routine).
 __attribute__((always_inline)) constexpr uint64_t mul_wide_u_by_parts(uint32_t a, uint32_t b) {
@@ -29,20 +38,14 @@ constexpr int64_t mul_wide_by_parts(int32_t a, int32_t b) {
 
 /// Exact 32x32 -> 64-bit unsigned product: the single place a target-specific multiply goes.
 constexpr uint64_t mul_wide_u(uint32_t a, uint32_t b) {
-#if defined(HIDER_ARMV6M)
-    return mul_wide_u_by_parts(a, b);
-#else
+    if constexpr (kNarrowMultiply) return mul_wide_u_by_parts(a, b);
     return uint64_t{a} * b;
-#endif
 }
 
 /// Exact 32x32 -> 64-bit signed product.
 constexpr int64_t mul_wide(int32_t a, int32_t b) {
-#if defined(HIDER_ARMV6M)
-    return mul_wide_by_parts(a, b);
-#else
+    if constexpr (kNarrowMultiply) return mul_wide_by_parts(a, b);
     return static_cast<int64_t>(a) * b;
-#endif
 }
 
 /// Number of leading zero bits of a nonzero 32-bit value (one instruction where the CPU has CLZ).
@@ -128,11 +131,8 @@ constexpr int64_t mul_i33_i16_by_parts(int64_t a, int32_t b) {
 
 /// a * b for |a| < 2^32 and |b| < 2^15.
 constexpr int64_t mul_i33_i16(int64_t a, int32_t b) {
-#if defined(HIDER_ARMV6M)
-    return mul_i33_i16_by_parts(a, b);
-#else
+    if constexpr (kNarrowMultiply) return mul_i33_i16_by_parts(a, b);
     return a * b;
-#endif
 }
 
 /// a * b modulo 2^64 for |b| < 2^15 from three 32-bit products (a's low word in 16-bit halves): the
@@ -146,11 +146,8 @@ constexpr int64_t mul_i64_i16_by_parts(int64_t a, int32_t b) {
 
 /// a * b for |b| < 2^15 and a product that fits int64.
 constexpr int64_t mul_i64_i16(int64_t a, int32_t b) {
-#if defined(HIDER_ARMV6M)
-    return mul_i64_i16_by_parts(a, b);
-#else
+    if constexpr (kNarrowMultiply) return mul_i64_i16_by_parts(a, b);
     return a * b;
-#endif
 }
 
 /// a * b modulo 2^64 for unsigned a from 32-bit parts: one 32x32->64 product and one 32-bit multiply.
@@ -160,11 +157,8 @@ constexpr uint64_t mul_u32_u64_by_parts(uint32_t a, uint64_t b) {
 
 /// a * b modulo 2^64 for unsigned a.
 constexpr uint64_t mul_u32_u64(uint32_t a, uint64_t b) {
-#if defined(HIDER_ARMV6M)
-    return mul_u32_u64_by_parts(a, b);
-#else
+    if constexpr (kNarrowMultiply) return mul_u32_u64_by_parts(a, b);
     return a * b;
-#endif
 }
 
 namespace detail {

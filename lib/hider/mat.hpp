@@ -54,16 +54,15 @@ constexpr int32_t dot3_q30_floor_by_parts(int32_t r0, int32_t r1, int32_t r2, in
 
 /// Row r of a Q30 matrix times a Q16 vector, plus a Q16 offset; one floor at the end.
 __attribute__((always_inline)) constexpr Q16 row_dot(const Q30 (&row)[3], const Vec3q16& p, Q16 offset) {
-#if defined(HIDER_ARMV6M)
-    return Q16::from_raw(dot3_q30_floor_by_parts(row[0].raw(), row[1].raw(), row[2].raw(), p.x.raw(), p.y.raw(),
-                                                 p.z.raw()) + offset.raw());
-#else
+    if constexpr (kNarrowMultiply) {
+        return Q16::from_raw(dot3_q30_floor_by_parts(row[0].raw(), row[1].raw(), row[2].raw(), p.x.raw(), p.y.raw(),
+                                                     p.z.raw()) + offset.raw());
+    }
     // floor((sum + t 2^30) / 2^30) = floor(sum / 2^30) + t: the translation after the shift (one 32-bit
     // add instead of building t 2^30 in 64 bits per point), modulo 2^32 like the 64-bit form.
     const int64_t acc = mul_wide(row[0].raw(), p.x.raw()) + mul_wide(row[1].raw(), p.y.raw()) +
                         mul_wide(row[2].raw(), p.z.raw());
     return Q16::from_raw(static_cast<int32_t>(static_cast<uint32_t>(acc >> 30) + static_cast<uint32_t>(offset.raw())));
-#endif
 }
 }  // namespace detail
 
@@ -107,11 +106,8 @@ public:
     constexpr const Transform& transform() const { return t_; }
 
     constexpr Vec3q16 apply(const Vec3q16& p) const {
-#if defined(HIDER_ARMV6M)
-        return apply_by_parts(p);
-#else
+        if constexpr (kNarrowMultiply) return apply_by_parts(p);
         return hider::apply(t_, p);
-#endif
     }
 
     /// The ARMv6-M form of apply() (32-bit multiplies only), available everywhere for tests.

@@ -23,13 +23,10 @@ namespace detail {
 /// s0 (d1 - d2) + sa d2 - sb d1: three 32x32->64 products, one multiply or multiply-accumulate each
 /// where the CPU has a long multiply. ARMv6-M keeps the differences' 33x16-bit products by parts.
 __attribute__((always_inline)) inline int64_t plane_cross(uint32_t z0, uint32_t za, uint32_t zb, int32_t d1, int32_t d2) {
-#if defined(HIDER_ARMV6M)
-    return mul_i33_i16(int64_t{za} - z0, d2) - mul_i33_i16(int64_t{zb} - z0, d1);
-#else
+    if constexpr (kNarrowMultiply) return mul_i33_i16(int64_t{za} - z0, d2) - mul_i33_i16(int64_t{zb} - z0, d1);
     const int32_t s0 = static_cast<int32_t>(z0 ^ 0x80000000u), sa = static_cast<int32_t>(za ^ 0x80000000u),
                   sb = static_cast<int32_t>(zb ^ 0x80000000u);
     return int64_t{s0} * (d1 - d2) + int64_t{sa} * d2 - int64_t{sb} * d1;
-#endif
 }
 }  // namespace detail
 
