@@ -329,13 +329,6 @@ std::vector<RayScene::MeshData> split_by_grid(const RayScene::MeshData& loose, c
     return groups;
 }
 
-/// Whether the triangle of world points has an area at the fixed-point resolution (exact: the world
-/// cube keeps edges below 2^30 raw, cross_raw()'s range).
-bool has_area(const Vec3q16& a, const Vec3q16& b, const Vec3q16& c) {
-    const Vec3i64 n = cross_raw(b - a, c - a);
-    return n.x != 0 || n.y != 0 || n.z != 0;
-}
-
 bool read_triangle(Statement& st, RayScene::MeshData& loose, RayScene& s, std::string& error) {
     Vec3q16 p[3];
     static const char* kNames[3] = {"vertex 1", "vertex 2", "vertex 3"};
@@ -343,7 +336,7 @@ bool read_triangle(Statement& st, RayScene::MeshData& loose, RayScene& s, std::s
         double v[3];
         if (!st.vec(kNames[i], v, error) || !world_point(std::string("triangle: ") + kNames[i], v, p[i], error)) return false;
     }
-    if (!has_area(p[0], p[1], p[2])) {  // refused as read_mesh() refuses a mesh of only such triangles
+    if (!area_on_grid(p[0], p[1], p[2])) {  // refused as read_mesh() refuses a mesh of only such triangles
         error = "triangle: no area at the fixed-point resolution (2^-16): nothing of it could be hit";
         return false;
     }
@@ -422,7 +415,7 @@ bool read_mesh(Statement& st, const std::string& base_dir, RayScene& s, std::str
     // Scaled below the fixed-point resolution, every triangle can round to a line or a point: nothing of the
     // mesh could be hit (as a sphere's radius below 2^-16 is refused).
     size_t flat = 0;
-    for (const Tri& t : m.tris) flat += !has_area(m.positions[t.v[0]], m.positions[t.v[1]], m.positions[t.v[2]]);
+    for (const Tri& t : m.tris) flat += !area_on_grid(m.positions[t.v[0]], m.positions[t.v[1]], m.positions[t.v[2]]);
     if (flat == m.tris.size()) {
         error = "mesh: " + path + ": all " + std::to_string(flat) + " triangles have no area at the fixed-point resolution (2^-16) after scale " +
                 fmt(scale) + ": nothing of it could be hit";

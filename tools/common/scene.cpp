@@ -225,14 +225,10 @@ bool build_scene(const ObjModel& model, const CameraArgs& args, Scene& out, std:
     return true;
 }
 
-namespace {
-/// True when triangle (a, b, c) of a scene's grid points has an area: its exact cross product is not zero
-/// (the scene lies in +-512 world units, inside cross_raw()'s range).
 bool area_on_grid(const Vec3q16& a, const Vec3q16& b, const Vec3q16& c) {
     const Vec3i64 n = cross_raw(b - a, c - a);
     return n.x != 0 || n.y != 0 || n.z != 0;
 }
-}  // namespace
 
 std::vector<int> collapsed_faces(const ObjModel& model, const Scene& scene) {
     std::vector<int> lines;

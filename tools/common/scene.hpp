@@ -61,6 +61,10 @@ std::vector<int> collapsed_faces(const ObjModel& model, const Scene& scene);
 /// the model or after collapsed_faces()): every algorithm draws only the background.
 bool any_triangle_with_area(const Scene& scene);
 
+/// True when triangle (a, b, c) of grid points inside the world cube (|raw| < 2^29: edges below 2^30,
+/// cross_raw()'s range) has an area: its exact cross product is not zero.
+bool area_on_grid(const Vec3q16& a, const Vec3q16& b, const Vec3q16& c);
+
 /// Warnings for collapsed_faces(): the first five by line, then how many more.
 std::vector<std::string> collapse_warnings(const std::string& path, const std::vector<int>& lines);
 

@@ -75,9 +75,8 @@ inline bool leaf_valid(const Bvh& bvh, const Mesh& mesh, const BvhNode& n) {
 }  // namespace detail
 
 /// Checks `bvh` against `mesh` once: magic and version (bad_data), sizes (triangle_arrays_fit() too), the
-/// pre-order tree shape, every index, every triangle listed once (by the entries' power sums: a red
-/// team's tree listed one twice and another never, which no ray could then hit), boxes nested and
-/// holding their triangles, the root inside the world
+/// pre-order tree shape, every index, every triangle listed once (by the entries' power sums: a
+/// triangle left out could never be hit), boxes nested and holding their triangles, the root inside the world
 /// cube (out_of_range), the recorded depth (bad_data if the tree is deeper). capacity_exceeded when stack.size() < max_depth.
 /// Cost O(nodes + triangles); uses `stack` as scratch.
 inline Status validate_bvh(const Bvh& bvh, const Mesh& mesh, Span<BvhStackEntry> stack) {

@@ -112,7 +112,7 @@ inline Status validate_meshes(const Scene& s, Span<BvhStackEntry> stack) {
 
 /// Checks a scene once. invalid_argument: a reflectivity above 1, a negative checker size, a radius
 /// <= 0, a plane normal or light direction that is not unit length (within 2^-20), a mesh normal neither
-/// zero nor unit (within 2^-10; a red team's -32768 overflowed when the tracer turned it), max_distance
+/// zero nor unit (within 2^-10: the tracer negates and reflects about it), max_distance
 /// <= 0, too many objects, a sphere bound that does not hold every sphere. out_of_range: a sphere not
 /// wholly inside the world cube, a point light outside it, a plane offset of 2^14 units or more, a mesh
 /// box outside it. bad_data: a surface index or a mesh/BVH fault (validate_bvh). capacity_exceeded:
