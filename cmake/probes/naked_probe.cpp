@@ -8,6 +8,7 @@
 #include <hider/horizon/walk_kernel.hpp>
 #include <hider/raster/band_bin_asm.hpp>
 #include <hider/raster/band_loop_asm.hpp>
+#include <hider/raster/band_resume.hpp>
 #include <hider/raster/draw_loop_asm.hpp>
 #include <hider/raster/kernel_setup_asm.hpp>
 #include <hider/raster/row_kernel_asm.hpp>
@@ -25,7 +26,7 @@ using namespace hider;
     X(horizon::walk_kernel_v6m) X(horizon::level_pass_v6m) X(horizon::reciprocal_pass_v6m)            \
     X(horizon::coordinate_pass_v6m) X(detail::fill_words_v6m)
 #elif defined(HIDER_RV32_ASM)
-#define HIDER_NAKED_ROUTINES X(kernel_setup_rv32) X(run_kernel_triangle_rv32)
+#define HIDER_NAKED_ROUTINES X(kernel_setup_rv32) X(run_kernel_triangle_rv32) X(resume_carried_rv32)
 #else
 #error "naked_probe.cpp: no assembly routines on this target"
 #endif

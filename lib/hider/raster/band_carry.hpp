@@ -1,67 +1,20 @@
 // The band renderer's carried set-ups (binned.hpp): a flat RGB565 triangle inside the columns is set
 // up once into a slot (kernel_triangle.hpp: edges, depth, the next short edge) and resumed by the next
 // bands without any division; each band merges them in mesh order with its own list. KernelBands draws
-// the bands; on ARMv7-M through the assembly loop of band_loop_asm.hpp.
+// the bands; on ARMv7-M through the assembly loop of band_loop_asm.hpp, on RV32 with the resumes in
+// assembly (band_resume.hpp).
 #pragma once
-#include <hider/raster/band_lists.hpp>
 #include <hider/raster/band_loop_asm.hpp>
+#include <hider/raster/band_resume.hpp>
 
 namespace hider {
 
 namespace detail {
-/// The carried set-ups of KernelBands: slots in use this band (mesh order) from `cur` to
-/// `cur_end`, the next band's from `nxt` (growing), and a stack of free slots below `free_top`.
-struct CarriedSlots {
-    KernelTriangle* pool;
-    const uint8_t* cur;
-    const uint8_t* cur_end;
-    uint8_t* nxt;
-    uint8_t* free_top;
-};
-
-/// Where a band's kernel rows go: the target, the band's first depth row and its end row.
-struct KernelBandTarget {
-    KernelTarget target;
-    uint16_t* zrow;
-    int32_t row_end;
-};
-
-/// The mesh triangle of the first carried set-up still to resume this band (kNoTriangle: none).
-inline uint32_t pending_carried(const CarriedSlots& cs) { return cs.cur != cs.cur_end ? cs.pool[*cs.cur].tri : kNoTriangle; }
-
-/// Resumes the carried set-ups whose triangle comes before `limit`: draws their rows of the band (each
-/// is on the band's first row) and moves each to the next band's slots or back to the free ones.
-/// Returns pending_carried() after them. Out of line with few live values, so GCC keeps the loop in
-/// registers.
-__attribute__((noinline)) inline uint32_t resume_carried(CarriedSlots& cs, uint32_t limit, const KernelBandTarget& bt) {
-    KernelTriangle* const pool = cs.pool;
-    const uint8_t* cur = cs.cur;
-    const uint8_t* const end = cs.cur_end;
-    uint8_t* nxt = cs.nxt;
-    uint8_t* free_top = cs.free_top;
-    uint32_t pending = kNoTriangle;
-    for (; cur != end; ++cur) {
-        const uint8_t s = *cur;
-        KernelTriangle& kt = pool[s];
-        if (kt.tri >= limit) {
-            pending = kt.tri;
-            break;
-        }
-        run_kernel_triangle(kt, bt.zrow, bt.row_end, bt.target);
-        if (kt.row < kt.end) *nxt++ = s;
-        else *free_top++ = s;
-    }
-    cs.cur = cur;
-    cs.nxt = nxt;
-    cs.free_top = free_top;
-    return pending;
-}
-
 /// The bands of draw_zbuffer_binned() for flat RGB565 over 16-bit depth: kernel set-ups carried in
 /// slots. A class rather than lambdas: the per-triangle code reaches the band's state through `this`
 /// (GCC rebuilt a closure of sixteen references per triangle). kAsmLoop: on ARMv7-M, runs of listed
-/// triangles go through draw_band_v7m() (headlight shading with normals); false keeps it out (the
-/// kernelcheck firmware compares both); `projected` (all_projected() of the vertices) spares the
+/// triangles go through draw_band_v7m() (headlight shading with normals), on RV32 the resumes through
+/// resume_carried_rv32(); false keeps both out (the kernelcheck firmware compares); `projected` (all_projected() of the vertices) spares the
 /// assembly its per-triangle clip test.
 template <bool kAsmLoop>
 class KernelBands {
@@ -175,7 +128,7 @@ private:
         {
             uint32_t pending = pending_carried(cs_);
             for (uint32_t t = head_[b];;) {
-                if (pending < t) pending = resume_carried(cs_, t, bt_);  // the carried triangles before t, in mesh order
+                if (pending < t) pending = resume(t);  // the carried triangles before t, in mesh order
                 if (t == kNoTriangle) break;
                 const uint16_t tri = static_cast<uint16_t>(t);
                 t = next_[t];
@@ -225,6 +178,15 @@ private:
             continues = continues_;
         }
         if (continues) relink(tri);
+    }
+
+    /// resume_carried() of the carried set-ups before `limit` (on RV32 in assembly but when kAsmLoop is
+    /// false: kernelcheck compares both).
+    __attribute__((always_inline)) uint32_t resume(uint32_t limit) {
+#if defined(HIDER_RV32_ASM)
+        if constexpr (kAsmLoop) return resume_carried_rv32(&cs_, limit, &bt_);
+#endif
+        return resume_carried(cs_, limit, bt_);
     }
 
     /// A triangle that continues below the band without a slot: linked into the next band's list, to be

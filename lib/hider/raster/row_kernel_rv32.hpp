@@ -6,6 +6,110 @@
 namespace hider {
 
 #if defined(HIDER_RV32_ASM)
+/// HIDER_RV32_ROWS: the row loop of run_kernel_triangle_rv32(), shared with resume_carried_rv32()
+/// (band_resume_rv32.hpp), from the first row (label 3) through the lower short edge's switch; it ends
+/// at local label 90, which its caller defines (the state's store-back). Registers and stack words as
+/// run_kernel_triangle_rv32() says; offsets from HIDER_RV32_ROWS_OPERANDS.
+#define HIDER_RV32_ROWS \
+    "3:\n\t"                            /* row */                                                     \
+    "bgeu   a4, a7, 5f\n\t"             /* empty span */                                              \
+    "mv     s1, a4\n\t"                                                                               \
+    "mv     s2, a6\n\t"                 /* z = lz */                                                  \
+    "sub    a1, a7, a4\n\t"                                                                           \
+    "andi   a1, a1, 2\n\t"                                                                            \
+    "beqz   a1, 4f\n\t"                 /* an even count: pairs only */                               \
+    "lhu    a1, 0(s1)\n\t"              /* the odd pixel */                                           \
+    "srli   s3, s2, 16\n\t"                                                                           \
+    "bgeu   s3, a1, 11f\n\t"            /* stored depth <= ours: keep it */                           \
+    "sh     s3, 0(s1)\n\t"                                                                            \
+    "add    s3, s1, a3\n\t"                                                                           \
+    "sh     s0, 0(s3)\n"                                                                              \
+    "11:\n\t"                                                                                         \
+    "add    s2, s2, t6\n\t"                                                                           \
+    "addi   s1, s1, 2\n\t"                                                                            \
+    "beq    s1, a7, 5f\n"                                                                             \
+    "4:\n\t"                            /* two pixels */                                              \
+    "lhu    a1, 0(s1)\n\t"                                                                            \
+    "srli   s3, s2, 16\n\t"                                                                           \
+    "bgeu   s3, a1, 12f\n\t"                                                                          \
+    "sh     s3, 0(s1)\n\t"                                                                            \
+    "add    s3, s1, a3\n\t"                                                                           \
+    "sh     s0, 0(s3)\n"                                                                              \
+    "12:\n\t"                                                                                         \
+    "add    s2, s2, t6\n\t"                                                                           \
+    "lhu    a1, 2(s1)\n\t"                                                                            \
+    "srli   s3, s2, 16\n\t"                                                                           \
+    "bgeu   s3, a1, 13f\n\t"                                                                          \
+    "sh     s3, 2(s1)\n\t"                                                                            \
+    "add    s3, s1, a3\n\t"                                                                           \
+    "sh     s0, 2(s3)\n"                                                                              \
+    "13:\n\t"                                                                                         \
+    "add    s2, s2, t6\n\t"                                                                           \
+    "addi   s1, s1, 4\n\t"                                                                            \
+    "bne    s1, a7, 4b\n"                                                                             \
+    "5:\n\t"                            /* left edge: g += m, p += step, z += dz_row, then correct */ \
+    "add    a5, a5, t1\n\t"                                                                           \
+    "add    a4, a4, t2\n\t"                                                                           \
+    "add    a6, a6, t3\n\t"                                                                           \
+    "bltz   a5, 7f\n\t"                 /* g < 0: no correction */                                    \
+    "lw     a1, %[la](a0)\n\t"                                                                        \
+    "sub    a5, a5, a1\n\t"                                                                           \
+    "addi   a4, a4, -2\n\t"                                                                           \
+    "sub    a6, a6, t6\n"               /* z -= dzdx */                                               \
+    "7:\n\t"                            /* right edge */                                              \
+    "add    t0, t0, t4\n\t"                                                                           \
+    "add    a7, a7, t5\n\t"                                                                           \
+    "bltz   t0, 8f\n\t"                                                                               \
+    "lw     a1, %[ra](a0)\n\t"                                                                        \
+    "sub    t0, t0, a1\n\t"                                                                           \
+    "addi   a7, a7, -2\n"                                                                             \
+    "8:\n\t"                                                                                          \
+    "addi   a2, a2, -1\n\t"                                                                           \
+    "bnez   a2, 3b\n\t"                                                                               \
+    "lw     a2, 16(sp)\n\t"             /* rows after the switch */                                   \
+    "bltz   a2, 90f\n\t"                /* no switch in this call */                                  \
+    "lw     a1, 20(sp)\n\t"             /* the middle row */                                          \
+    "lbu    s1, %[n_left](a0)\n\t"                                                                    \
+    "lw     s2, %[n_x](a0)\n\t"                                                                       \
+    "add    s2, s2, a1\n\t"                                                                           \
+    "lw     s3, %[n_g](a0)\n\t"                                                                       \
+    "lw     a1, %[n_a](a0)\n\t"                                                                       \
+    "beqz   s1, 9f\n\t"                                                                               \
+    "mv     a4, s2\n\t"                 /* the lower edge on the left */                              \
+    "mv     a5, s3\n\t"                                                                               \
+    "lw     a6, %[n_z](a0)\n\t"                                                                       \
+    "sw     a1, %[la](a0)\n\t"                                                                        \
+    "lw     t1, %[n_m](a0)\n\t"                                                                       \
+    "sw     t1, %[lm](a0)\n\t"                                                                        \
+    "lw     t2, %[n_step](a0)\n\t"                                                                    \
+    "sw     t2, %[lstep](a0)\n\t"                                                                     \
+    "lw     t3, %[n_dz](a0)\n\t"                                                                      \
+    "sw     t3, %[ldz](a0)\n\t"                                                                       \
+    "j      10f\n"                                                                                    \
+    "9:\n\t"                                                                                          \
+    "mv     a7, s2\n\t"                 /* the lower edge on the right */                             \
+    "mv     t0, s3\n\t"                                                                               \
+    "sw     a1, %[ra](a0)\n\t"                                                                        \
+    "lw     t4, %[n_m](a0)\n\t"                                                                       \
+    "sw     t4, %[rm](a0)\n\t"                                                                        \
+    "lw     t5, %[n_step](a0)\n\t"                                                                    \
+    "sw     t5, %[rstep](a0)\n"                                                                       \
+    "10:\n\t"                                                                                         \
+    "li     a1, -1\n\t"                                                                               \
+    "sw     a1, 16(sp)\n\t"             /* switched */                                                \
+    "bnez   a2, 3b\n"
+
+/// HIDER_RV32_ROWS's operands (its callers add their own).
+#define HIDER_RV32_ROWS_OPERANDS                                                                            \
+    [la] "i"(offsetof(RowKernel, la)), [lm] "i"(offsetof(RowKernel, lm)),                                  \
+    [lstep] "i"(offsetof(RowKernel, lstep)), [ldz] "i"(offsetof(RowKernel, ldz)),                          \
+    [ra] "i"(offsetof(RowKernel, ra)), [rm] "i"(offsetof(RowKernel, rm)),                                  \
+    [rstep] "i"(offsetof(RowKernel, rstep)), [n_left] "i"(offsetof(KernelTriangle, next_left)),            \
+    [n_x] "i"(offsetof(KernelTriangle, next_x)), [n_g] "i"(offsetof(KernelTriangle, next_g)),              \
+    [n_a] "i"(offsetof(KernelTriangle, next_a)), [n_m] "i"(offsetof(KernelTriangle, next_m)),              \
+    [n_step] "i"(offsetof(KernelTriangle, next_step)), [n_z] "i"(offsetof(KernelTriangle, next_z)),        \
+    [n_dz] "i"(offsetof(KernelTriangle, next_dz))
+
 /// RV32. In the row loop: a0 the state, a4..a7 lp lg lz rp, t0 rg, t1..t5 lm lstep ldz rm rstep, t6 dz,
 /// s0 the colour, a2 rows left in this phase, a3 the colour offset; la and ra are loaded by the
 /// corrections; on the stack the middle row's depth pointer, the rows after the switch (-1: none) and
@@ -63,93 +167,7 @@ HIDER_NAKED inline uint16_t* run_kernel_triangle_rv32(KernelTriangle*, uint16_t*
         "lw     t5, %[rstep](a0)\n\t"
         "lw     t6, %[dzdx](a0)\n\t"
         "lw     s0, %[color](a0)\n"
-        "3:\n\t"                            // row
-        "bgeu   a4, a7, 5f\n\t"             // empty span
-        "mv     s1, a4\n\t"
-        "mv     s2, a6\n\t"                 // z = lz
-        "sub    a1, a7, a4\n\t"
-        "andi   a1, a1, 2\n\t"
-        "beqz   a1, 4f\n\t"                 // an even count: pairs only
-        "lhu    a1, 0(s1)\n\t"              // the odd pixel
-        "srli   s3, s2, 16\n\t"
-        "bgeu   s3, a1, 11f\n\t"            // stored depth <= ours: keep it
-        "sh     s3, 0(s1)\n\t"
-        "add    s3, s1, a3\n\t"
-        "sh     s0, 0(s3)\n"
-        "11:\n\t"
-        "add    s2, s2, t6\n\t"
-        "addi   s1, s1, 2\n\t"
-        "beq    s1, a7, 5f\n"
-        "4:\n\t"                            // two pixels
-        "lhu    a1, 0(s1)\n\t"
-        "srli   s3, s2, 16\n\t"
-        "bgeu   s3, a1, 12f\n\t"
-        "sh     s3, 0(s1)\n\t"
-        "add    s3, s1, a3\n\t"
-        "sh     s0, 0(s3)\n"
-        "12:\n\t"
-        "add    s2, s2, t6\n\t"
-        "lhu    a1, 2(s1)\n\t"
-        "srli   s3, s2, 16\n\t"
-        "bgeu   s3, a1, 13f\n\t"
-        "sh     s3, 2(s1)\n\t"
-        "add    s3, s1, a3\n\t"
-        "sh     s0, 2(s3)\n"
-        "13:\n\t"
-        "add    s2, s2, t6\n\t"
-        "addi   s1, s1, 4\n\t"
-        "bne    s1, a7, 4b\n"
-        "5:\n\t"                            // left edge: g += m, p += step, z += dz_row, then correct
-        "add    a5, a5, t1\n\t"
-        "add    a4, a4, t2\n\t"
-        "add    a6, a6, t3\n\t"
-        "bltz   a5, 7f\n\t"                 // g < 0: no correction
-        "lw     a1, %[la](a0)\n\t"
-        "sub    a5, a5, a1\n\t"
-        "addi   a4, a4, -2\n\t"
-        "sub    a6, a6, t6\n"               // z -= dzdx
-        "7:\n\t"                            // right edge
-        "add    t0, t0, t4\n\t"
-        "add    a7, a7, t5\n\t"
-        "bltz   t0, 8f\n\t"
-        "lw     a1, %[ra](a0)\n\t"
-        "sub    t0, t0, a1\n\t"
-        "addi   a7, a7, -2\n"
-        "8:\n\t"
-        "addi   a2, a2, -1\n\t"
-        "bnez   a2, 3b\n\t"
-        "lw     a2, 16(sp)\n\t"             // rows after the switch
-        "bltz   a2, 90f\n\t"                // no switch in this call
-        "lw     a1, 20(sp)\n\t"             // the middle row
-        "lbu    s1, %[n_left](a0)\n\t"
-        "lw     s2, %[n_x](a0)\n\t"
-        "add    s2, s2, a1\n\t"
-        "lw     s3, %[n_g](a0)\n\t"
-        "lw     a1, %[n_a](a0)\n\t"
-        "beqz   s1, 9f\n\t"
-        "mv     a4, s2\n\t"                 // the lower edge on the left
-        "mv     a5, s3\n\t"
-        "lw     a6, %[n_z](a0)\n\t"
-        "sw     a1, %[la](a0)\n\t"
-        "lw     t1, %[n_m](a0)\n\t"
-        "sw     t1, %[lm](a0)\n\t"
-        "lw     t2, %[n_step](a0)\n\t"
-        "sw     t2, %[lstep](a0)\n\t"
-        "lw     t3, %[n_dz](a0)\n\t"
-        "sw     t3, %[ldz](a0)\n\t"
-        "j      10f\n"
-        "9:\n\t"
-        "mv     a7, s2\n\t"                 // the lower edge on the right
-        "mv     t0, s3\n\t"
-        "sw     a1, %[ra](a0)\n\t"
-        "lw     t4, %[n_m](a0)\n\t"
-        "sw     t4, %[rm](a0)\n\t"
-        "lw     t5, %[n_step](a0)\n\t"
-        "sw     t5, %[rstep](a0)\n"
-        "10:\n\t"
-        "li     a1, -1\n\t"
-        "sw     a1, 16(sp)\n\t"             // switched
-        "bnez   a2, 3b\n"
+        HIDER_RV32_ROWS
         "90:\n\t"
         "lw     a1, 24(sp)\n\t"             // the depth row after the last
         "sub    a4, a4, a1\n\t"             // back to offsets in that row
@@ -172,13 +190,7 @@ HIDER_NAKED inline uint16_t* run_kernel_triangle_rv32(KernelTriangle*, uint16_t*
         :
         : [row] "i"(offsetof(KernelTriangle, row)), [mid] "i"(offsetof(KernelTriangle, mid)),
           [end] "i"(offsetof(KernelTriangle, end)), [dzdx] "i"(offsetof(RowKernel, dzdx)),
-          [color] "i"(offsetof(RowKernel, color)), [la] "i"(offsetof(RowKernel, la)), [lm] "i"(offsetof(RowKernel, lm)),
-          [lstep] "i"(offsetof(RowKernel, lstep)), [ldz] "i"(offsetof(RowKernel, ldz)), [ra] "i"(offsetof(RowKernel, ra)),
-          [rm] "i"(offsetof(RowKernel, rm)), [rstep] "i"(offsetof(RowKernel, rstep)),
-          [n_left] "i"(offsetof(KernelTriangle, next_left)), [n_x] "i"(offsetof(KernelTriangle, next_x)),
-          [n_g] "i"(offsetof(KernelTriangle, next_g)), [n_a] "i"(offsetof(KernelTriangle, next_a)),
-          [n_m] "i"(offsetof(KernelTriangle, next_m)), [n_step] "i"(offsetof(KernelTriangle, next_step)),
-          [n_z] "i"(offsetof(KernelTriangle, next_z)), [n_dz] "i"(offsetof(KernelTriangle, next_dz)));
+          [color] "i"(offsetof(RowKernel, color)), HIDER_RV32_ROWS_OPERANDS);
 }
 #endif
 
