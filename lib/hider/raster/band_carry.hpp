@@ -185,6 +185,8 @@ private:
     __attribute__((always_inline)) uint32_t resume(uint32_t limit) {
 #if defined(HIDER_RV32_ASM)
         if constexpr (kAsmLoop) return resume_carried_rv32(&cs_, limit, &bt_);
+#elif defined(HIDER_ARMV6M)
+        if constexpr (kAsmLoop) return resume_carried_v6m(&cs_, limit, &bt_);
 #endif
         return resume_carried(cs_, limit, bt_);
     }

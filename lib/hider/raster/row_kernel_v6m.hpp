@@ -7,6 +7,106 @@
 namespace hider {
 
 #if defined(HIDER_ARMV6M)
+/// HIDER_V6M_ROWS: the row loop of run_kernel_triangle_v6m(), shared with resume_carried_v6m()
+/// (band_resume.hpp), from the first row (label 3) through the lower short edge's switch; it ends at
+/// local label 90, which its caller defines (the state's store-back). Registers and stack words as
+/// run_kernel_triangle_v6m() says; offsets from HIDER_V6M_ROWS_OPERANDS.
+#define HIDER_V6M_ROWS \
+    "3:\n\t"                            /* row */                                                     \
+    "subs   r6, r1, r4\n\t"             /* lp - rp: negative, counts up to 0 */                       \
+    "bge    5f\n\t"                     /* empty span */                                              \
+    "stm    r0!, {r1, r2, r3, r7}\n\t"  /* park lp lg lz rows */                                      \
+    "mov    r1, r8\n\t"                                                                               \
+    "adds   r1, r1, r4\n\t"             /* the colour end */                                          \
+    "mov    r7, r10\n"                  /* colour */                                                  \
+    "4:\n\t"                            /* pixel */                                                   \
+    "ldrh   r2, [r4, r6]\n\t"                                                                         \
+    "lsrs   r0, r3, #16\n\t"                                                                          \
+    "cmp    r2, r0\n\t"                                                                               \
+    "bls    6f\n\t"                     /* stored depth <= ours: keep it */                           \
+    "strh   r0, [r4, r6]\n\t"                                                                         \
+    "strh   r7, [r1, r6]\n"                                                                           \
+    "6:\n\t"                                                                                          \
+    "add    r3, r9\n\t"                                                                               \
+    "adds   r6, r6, #2\n\t"                                                                           \
+    "bne    4b\n\t"                                                                                   \
+    "mov    r0, r12\n\t"                                                                              \
+    "ldm    r0!, {r1, r2, r3, r7}\n\t"  /* lp lg lz rows back */                                      \
+    "mov    r0, r12\n"                                                                                \
+    "5:\n\t"                            /* left edge: p += step, z += dz_row, g += m, then correct */ \
+    "ldr    r6, [r0, %[lstep]]\n\t"                                                                   \
+    "adds   r1, r1, r6\n\t"                                                                           \
+    "ldr    r6, [r0, %[ldz]]\n\t"                                                                     \
+    "adds   r3, r3, r6\n\t"                                                                           \
+    "ldr    r6, [r0, %[lm]]\n\t"                                                                      \
+    "adds   r2, r2, r6\n\t"                                                                           \
+    "bmi    7f\n\t"                     /* g < 0: no correction */                                    \
+    "ldr    r6, [r0, %[la]]\n\t"                                                                      \
+    "subs   r2, r2, r6\n\t"                                                                           \
+    "subs   r1, r1, #2\n\t"                                                                           \
+    "mov    r6, r9\n\t"                                                                               \
+    "subs   r3, r3, r6\n"               /* z -= dzdx */                                               \
+    "7:\n\t"                            /* right edge */                                              \
+    "ldr    r6, [r0, %[rstep]]\n\t"                                                                   \
+    "adds   r4, r4, r6\n\t"                                                                           \
+    "ldr    r6, [r0, %[rm]]\n\t"                                                                      \
+    "adds   r5, r5, r6\n\t"                                                                           \
+    "bmi    8f\n\t"                                                                                   \
+    "ldr    r6, [r0, %[ra]]\n\t"                                                                      \
+    "subs   r5, r5, r6\n\t"                                                                           \
+    "subs   r4, r4, #2\n"                                                                             \
+    "8:\n\t"                                                                                          \
+    "subs   r7, r7, #1\n\t"                                                                           \
+    "bne    3b\n\t"                                                                                   \
+    "ldr    r7, [sp, #4]\n\t"           /* rows after the switch */                                   \
+    "cmp    r7, #0\n\t"                                                                               \
+    "blt    90f\n\t"                    /* no switch in this call */                                  \
+    "movs   r6, %[n_left]\n\t"                                                                        \
+    "ldrb   r6, [r0, r6]\n\t"                                                                         \
+    "cmp    r6, #0\n\t"                                                                               \
+    "ldr    r6, [sp]\n\t"               /* the middle row */                                          \
+    "beq    9f\n\t"                                                                                   \
+    "ldr    r1, [r0, %[n_x]]\n\t"       /* the lower edge on the left */                              \
+    "adds   r1, r1, r6\n\t"                                                                           \
+    "ldr    r2, [r0, %[n_a]]\n\t"                                                                     \
+    "str    r2, [r0, %[la]]\n\t"                                                                      \
+    "ldr    r2, [r0, %[n_m]]\n\t"                                                                     \
+    "str    r2, [r0, %[lm]]\n\t"                                                                      \
+    "ldr    r2, [r0, %[n_step]]\n\t"                                                                  \
+    "str    r2, [r0, %[lstep]]\n\t"                                                                   \
+    "ldr    r2, [r0, %[n_dz]]\n\t"                                                                    \
+    "str    r2, [r0, %[ldz]]\n\t"                                                                     \
+    "ldr    r3, [r0, %[n_z]]\n\t"                                                                     \
+    "ldr    r2, [r0, %[n_g]]\n\t"                                                                     \
+    "b      10f\n"                                                                                    \
+    "9:\n\t"                                                                                          \
+    "ldr    r4, [r0, %[n_x]]\n\t"       /* the lower edge on the right */                             \
+    "adds   r4, r4, r6\n\t"                                                                           \
+    "ldr    r5, [r0, %[n_a]]\n\t"                                                                     \
+    "str    r5, [r0, %[ra]]\n\t"                                                                      \
+    "ldr    r5, [r0, %[n_m]]\n\t"                                                                     \
+    "str    r5, [r0, %[rm]]\n\t"                                                                      \
+    "ldr    r5, [r0, %[n_step]]\n\t"                                                                  \
+    "str    r5, [r0, %[rstep]]\n\t"                                                                   \
+    "ldr    r5, [r0, %[n_g]]\n"                                                                       \
+    "10:\n\t"                                                                                         \
+    "movs   r6, #0\n\t"                                                                               \
+    "mvns   r6, r6\n\t"                                                                               \
+    "str    r6, [sp, #4]\n\t"           /* switched */                                                \
+    "cmp    r7, #0\n\t"                                                                               \
+    "bne    3b\n"
+
+/// HIDER_V6M_ROWS's operands (its callers add their own).
+#define HIDER_V6M_ROWS_OPERANDS                                                                            \
+    [la] "i"(offsetof(RowKernel, la)), [lm] "i"(offsetof(RowKernel, lm)),                                  \
+    [lstep] "i"(offsetof(RowKernel, lstep)), [ldz] "i"(offsetof(RowKernel, ldz)),                          \
+    [ra] "i"(offsetof(RowKernel, ra)), [rm] "i"(offsetof(RowKernel, rm)),                                  \
+    [rstep] "i"(offsetof(RowKernel, rstep)), [n_left] "i"(offsetof(KernelTriangle, next_left)),            \
+    [n_x] "i"(offsetof(KernelTriangle, next_x)), [n_g] "i"(offsetof(KernelTriangle, next_g)),              \
+    [n_a] "i"(offsetof(KernelTriangle, next_a)), [n_m] "i"(offsetof(KernelTriangle, next_m)),              \
+    [n_step] "i"(offsetof(KernelTriangle, next_step)), [n_z] "i"(offsetof(KernelTriangle, next_z)),        \
+    [n_dz] "i"(offsetof(KernelTriangle, next_dz))
+
 /// Thumb-1 (Cortex-M0/M0+: eight low registers, no conditional execution). In the row loop r0 holds
 /// the state, r1..r5 lp lg lz rp rg, r7 rows left in this phase, r12 the state again, r8 the colour
 /// offset, r9 dz, r10 the colour; on the stack the middle row's depth pointer, the rows after the switch
@@ -70,89 +170,7 @@ HIDER_NAKED inline uint16_t* run_kernel_triangle_v6m(KernelTriangle*, uint16_t*,
         "mov    r0, r12\n\t"
         "adds   r1, r1, r6\n\t"             // lp
         "adds   r4, r4, r6\n"               // rp
-        "3:\n\t"                            // row
-        "subs   r6, r1, r4\n\t"             // lp - rp: negative, counts up to 0
-        "bge    5f\n\t"                     // empty span
-        "stm    r0!, {r1, r2, r3, r7}\n\t"  // park lp lg lz rows
-        "mov    r1, r8\n\t"
-        "adds   r1, r1, r4\n\t"             // the colour end
-        "mov    r7, r10\n"                  // colour
-        "4:\n\t"                            // pixel
-        "ldrh   r2, [r4, r6]\n\t"
-        "lsrs   r0, r3, #16\n\t"
-        "cmp    r2, r0\n\t"
-        "bls    6f\n\t"                     // stored depth <= ours: keep it
-        "strh   r0, [r4, r6]\n\t"
-        "strh   r7, [r1, r6]\n"
-        "6:\n\t"
-        "add    r3, r9\n\t"
-        "adds   r6, r6, #2\n\t"
-        "bne    4b\n\t"
-        "mov    r0, r12\n\t"
-        "ldm    r0!, {r1, r2, r3, r7}\n\t"  // lp lg lz rows back
-        "mov    r0, r12\n"
-        "5:\n\t"                            // left edge: p += step, z += dz_row, g += m, then correct
-        "ldr    r6, [r0, %[lstep]]\n\t"
-        "adds   r1, r1, r6\n\t"
-        "ldr    r6, [r0, %[ldz]]\n\t"
-        "adds   r3, r3, r6\n\t"
-        "ldr    r6, [r0, %[lm]]\n\t"
-        "adds   r2, r2, r6\n\t"
-        "bmi    7f\n\t"                     // g < 0: no correction
-        "ldr    r6, [r0, %[la]]\n\t"
-        "subs   r2, r2, r6\n\t"
-        "subs   r1, r1, #2\n\t"
-        "mov    r6, r9\n\t"
-        "subs   r3, r3, r6\n"               // z -= dzdx
-        "7:\n\t"                            // right edge
-        "ldr    r6, [r0, %[rstep]]\n\t"
-        "adds   r4, r4, r6\n\t"
-        "ldr    r6, [r0, %[rm]]\n\t"
-        "adds   r5, r5, r6\n\t"
-        "bmi    8f\n\t"
-        "ldr    r6, [r0, %[ra]]\n\t"
-        "subs   r5, r5, r6\n\t"
-        "subs   r4, r4, #2\n"
-        "8:\n\t"
-        "subs   r7, r7, #1\n\t"
-        "bne    3b\n\t"
-        "ldr    r7, [sp, #4]\n\t"           // rows after the switch
-        "cmp    r7, #0\n\t"
-        "blt    90f\n\t"                    // no switch in this call
-        "movs   r6, %[n_left]\n\t"
-        "ldrb   r6, [r0, r6]\n\t"
-        "cmp    r6, #0\n\t"
-        "ldr    r6, [sp]\n\t"               // the middle row
-        "beq    9f\n\t"
-        "ldr    r1, [r0, %[n_x]]\n\t"       // the lower edge on the left
-        "adds   r1, r1, r6\n\t"
-        "ldr    r2, [r0, %[n_a]]\n\t"
-        "str    r2, [r0, %[la]]\n\t"
-        "ldr    r2, [r0, %[n_m]]\n\t"
-        "str    r2, [r0, %[lm]]\n\t"
-        "ldr    r2, [r0, %[n_step]]\n\t"
-        "str    r2, [r0, %[lstep]]\n\t"
-        "ldr    r2, [r0, %[n_dz]]\n\t"
-        "str    r2, [r0, %[ldz]]\n\t"
-        "ldr    r3, [r0, %[n_z]]\n\t"
-        "ldr    r2, [r0, %[n_g]]\n\t"
-        "b      10f\n"
-        "9:\n\t"
-        "ldr    r4, [r0, %[n_x]]\n\t"       // the lower edge on the right
-        "adds   r4, r4, r6\n\t"
-        "ldr    r5, [r0, %[n_a]]\n\t"
-        "str    r5, [r0, %[ra]]\n\t"
-        "ldr    r5, [r0, %[n_m]]\n\t"
-        "str    r5, [r0, %[rm]]\n\t"
-        "ldr    r5, [r0, %[n_step]]\n\t"
-        "str    r5, [r0, %[rstep]]\n\t"
-        "ldr    r5, [r0, %[n_g]]\n"
-        "10:\n\t"
-        "movs   r6, #0\n\t"
-        "mvns   r6, r6\n\t"
-        "str    r6, [sp, #4]\n\t"           // switched
-        "cmp    r7, #0\n\t"
-        "bne    3b\n"
+        HIDER_V6M_ROWS
         "90:\n\t"
         "ldr    r6, [sp, #8]\n\t"           // the depth row after the last
         "subs   r1, r1, r6\n\t"             // back to offsets in that row
@@ -168,13 +186,7 @@ HIDER_NAKED inline uint16_t* run_kernel_triangle_v6m(KernelTriangle*, uint16_t*,
         :
         : [row] "i"(offsetof(KernelTriangle, row)), [mid] "i"(offsetof(KernelTriangle, mid)),
           [end] "i"(offsetof(KernelTriangle, end)), [dzdx] "i"(offsetof(RowKernel, dzdx)),
-          [color] "i"(offsetof(RowKernel, color)), [la] "i"(offsetof(RowKernel, la)), [lm] "i"(offsetof(RowKernel, lm)),
-          [lstep] "i"(offsetof(RowKernel, lstep)), [ldz] "i"(offsetof(RowKernel, ldz)), [ra] "i"(offsetof(RowKernel, ra)),
-          [rm] "i"(offsetof(RowKernel, rm)), [rstep] "i"(offsetof(RowKernel, rstep)),
-          [n_left] "i"(offsetof(KernelTriangle, next_left)), [n_x] "i"(offsetof(KernelTriangle, next_x)),
-          [n_g] "i"(offsetof(KernelTriangle, next_g)), [n_a] "i"(offsetof(KernelTriangle, next_a)),
-          [n_m] "i"(offsetof(KernelTriangle, next_m)), [n_step] "i"(offsetof(KernelTriangle, next_step)),
-          [n_z] "i"(offsetof(KernelTriangle, next_z)), [n_dz] "i"(offsetof(KernelTriangle, next_dz)));
+          [color] "i"(offsetof(RowKernel, color)), HIDER_V6M_ROWS_OPERANDS);
 }
 #endif
 
