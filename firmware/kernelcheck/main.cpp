@@ -17,7 +17,8 @@
 //   without the assembly draw loop (Thumb-1 on ARMv6-M, Thumb-2 on ARMv7-M; on RV32 both are the C++
 //   loop): same frame and counts.
 // - kernelcheck::kBandCases random small scenes (band_cases.hpp) through the band renderer with and
-//   without the assembly band loop (Thumb-2 on ARMv7-M; elsewhere both are the C++ loop), in bands of 1
+//   without the assembly band loop (Thumb-2 on ARMv7-M; on ARMv6-M and RV32 the C++ loop with the
+//   resumes in assembly, resume_carried_v6m() and resume_carried_rv32()), in bands of 1
 //   to 6 rows with 0 to 5 carried slots: same bands and counts.
 // - The frame clear (detail::fill, store-multiples on Cortex-M) against a plain loop for every length up
 //   to kFillMax.
