@@ -20,6 +20,9 @@
 //   without the assembly band loop (Thumb-2 on ARMv7-M; on ARMv6-M and RV32 the C++ loop with the
 //   resumes in assembly, resume_carried_v6m() and resume_carried_rv32()), in bands of 1
 //   to 6 rows with 0 to 5 carried slots: same bands and counts.
+// - kernelcheck::kResumeCases random runs of carried set-ups (resume_cases.hpp) through the M0+ and RV32
+//   assembly resumes (resume_carried_v6m(), resume_carried_rv32(); elsewhere resume_carried() twice) and
+//   resume_carried(): same buffers, slot lists, pending triangle and onward states.
 // - The frame clear (detail::fill, store-multiples on Cortex-M) against a plain loop for every length up
 //   to kFillMax.
 // The chip's digests go to kernelcheck.bin, which the host twin writes from the portable code (ctest
@@ -29,6 +32,7 @@
 #include "kernelcheck/setup_cases.hpp"
 #include "kernelcheck/band_cases.hpp"
 #include "kernelcheck/draw_cases.hpp"
+#include "kernelcheck/resume_cases.hpp"
 #include "kernelcheck/vertex_cases.hpp"
 #include "semihost/semihost.hpp"
 
@@ -59,7 +63,8 @@ HIDER_NAKED int32_t divr_v7m(uint32_t, uint32_t, uint32_t) {
 
 constexpr int kDrawAt = kernelcheck::kCases + kernelcheck::kSetupCases + kernelcheck::kVertexCases;
 constexpr int kBandAt = kDrawAt + kernelcheck::kDrawCases;
-constexpr int kWords = kBandAt + kernelcheck::kBandCases + 1;  // the last word: the fill digest
+constexpr int kResumeAt = kBandAt + kernelcheck::kBandCases;
+constexpr int kWords = kResumeAt + 2;  // the last word: the fill digest
 kernelcheck::Buffers g_buffers;
 uint32_t g_digests[kWords];
 
@@ -195,6 +200,26 @@ int main() {
         sh::print("\n");
         return 1;
     }
+    const int resume_case = kernelcheck::run_resume_cases(
+        [](hider::detail::CarriedSlots& cs, uint32_t limit, const hider::detail::KernelBandTarget& bt) {
+#if defined(HIDER_RV32_ASM)
+            return hider::resume_carried_rv32(&cs, limit, &bt);
+#elif defined(HIDER_ARMV6M)
+            return hider::resume_carried_v6m(&cs, limit, &bt);
+#else
+            return hider::detail::resume_carried(cs, limit, bt);
+#endif
+        },
+        [](hider::detail::CarriedSlots& cs, uint32_t limit, const hider::detail::KernelBandTarget& bt) {
+            return hider::detail::resume_carried(cs, limit, bt);
+        },
+        g_buffers, g_digests + kResumeAt);
+    if (resume_case >= 0) {
+        sh::print("kernelcheck: the resume run differs from resume_carried() in case ");
+        sh::print_u32(static_cast<uint32_t>(resume_case));
+        sh::print("\n");
+        return 1;
+    }
     g_digests[kWords - 1] = kernelcheck::fill_digest(
         [](uint16_t* p, uint32_t n, uint16_t v) { hider::detail::fill<uint16_t>(p, n, v); }, g_buffers);
     if (g_digests[kWords - 1] != kernelcheck::fill_digest(kernelcheck::fill_plain, g_buffers)) {
@@ -215,7 +240,9 @@ int main() {
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kDrawCases));
     sh::print(" scenes the C++ draw loop, ");
     sh::print_u32(static_cast<uint32_t>(kernelcheck::kBandCases));
-    sh::print(" banded scenes the C++ band loop");
+    sh::print(" banded scenes the C++ band loop, ");
+    sh::print_u32(static_cast<uint32_t>(kernelcheck::kResumeCases));
+    sh::print(" resume runs resume_carried()");
 #if defined(HIDER_ARMV6M) || defined(HIDER_ARMV7M)
     sh::print(" (the assembly vertex loop projected ");
     sh::print_u32(accepted);

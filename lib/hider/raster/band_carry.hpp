@@ -1,8 +1,8 @@
 // The band renderer's carried set-ups (binned.hpp): a flat RGB565 triangle inside the columns is set
 // up once into a slot (kernel_triangle.hpp: edges, depth, the next short edge) and resumed by the next
 // bands without any division; each band merges them in mesh order with its own list. KernelBands draws
-// the bands; on ARMv7-M through the assembly loop of band_loop_asm.hpp, on RV32 with the resumes in
-// assembly (band_resume.hpp).
+// the bands; on ARMv7-M through the assembly loop of band_loop_asm.hpp, on ARMv6-M and RV32 with the
+// resumes in assembly (band_resume.hpp).
 #pragma once
 #include <hider/raster/band_loop_asm.hpp>
 #include <hider/raster/band_resume.hpp>
@@ -13,9 +13,10 @@ namespace detail {
 /// The bands of draw_zbuffer_binned() for flat RGB565 over 16-bit depth: kernel set-ups carried in
 /// slots. A class rather than lambdas: the per-triangle code reaches the band's state through `this`
 /// (GCC rebuilt a closure of sixteen references per triangle). kAsmLoop: on ARMv7-M, runs of listed
-/// triangles go through draw_band_v7m() (headlight shading with normals), on RV32 the resumes through
-/// resume_carried_rv32(); false keeps both out (the kernelcheck firmware compares); `projected` (all_projected() of the vertices) spares the
-/// assembly its per-triangle clip test.
+/// triangles go through draw_band_v7m() (headlight shading with normals), on ARMv6-M and RV32 the
+/// resumes through resume_carried_v6m() and resume_carried_rv32(); false keeps them out (the kernelcheck
+/// firmware compares); `projected` (all_projected() of the vertices) spares the assembly its
+/// per-triangle clip test.
 template <bool kAsmLoop>
 class KernelBands {
 public:
@@ -180,8 +181,8 @@ private:
         if (continues) relink(tri);
     }
 
-    /// resume_carried() of the carried set-ups before `limit` (on RV32 in assembly but when kAsmLoop is
-    /// false: kernelcheck compares both).
+    /// resume_carried() of the carried set-ups before `limit` (on ARMv6-M and RV32 in assembly but when
+    /// kAsmLoop is false: kernelcheck compares both).
     __attribute__((always_inline)) uint32_t resume(uint32_t limit) {
 #if defined(HIDER_RV32_ASM)
         if constexpr (kAsmLoop) return resume_carried_rv32(&cs_, limit, &bt_);

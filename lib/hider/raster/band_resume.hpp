@@ -1,8 +1,10 @@
 // The band renderer's resumes (band_carry.hpp): the set-ups carried from the band above, in slots kept in
 // mesh order, each drawn on the band's rows and then moved to the next band's slots or back to the free
-// ones. resume_carried() is the C++ loop; on RV32 resume_carried_rv32() runs it in assembly with the row
-// kernel's loop inline (HIDER_RV32_ROWS), so a resume costs no call and no register saves of its own.
-// (On ARMv7-M the band loop of band_loop_asm.hpp resumes inline.) firmware/kernelcheck compares both.
+// ones. resume_carried() is the C++ loop; on RV32 and ARMv6-M resume_carried_rv32() and
+// resume_carried_v6m() run it in assembly with the row kernel's loop inline (HIDER_RV32_ROWS,
+// HIDER_V6M_ROWS), so a resume costs no call and no register saves of its own. (On ARMv7-M the band loop
+// of band_loop_asm.hpp resumes inline.) firmware/kernelcheck compares them with resume_carried() on random
+// runs of records and through the band renderer.
 #pragma once
 #include <hider/raster/band_lists.hpp>
 #include <hider/raster/kernel_triangle.hpp>
@@ -12,7 +14,7 @@ namespace hider {
 namespace detail {
 /// The carried set-ups of KernelBands: slots in use this band (mesh order) from `cur` to
 /// `cur_end`, the next band's from `nxt` (growing), and a stack of free slots below `free_top`.
-/// The layout is resume_carried_rv32()'s contract.
+/// The layout is the assembly runs' contract.
 struct CarriedSlots {
     KernelTriangle* pool;
     const uint8_t* cur;
@@ -22,7 +24,7 @@ struct CarriedSlots {
 };
 
 /// Where a band's kernel rows go: the target, the band's first depth row and its end row (the layout is
-/// resume_carried_rv32()'s contract).
+/// the assembly runs' contract).
 struct KernelBandTarget {
     KernelTarget target;
     uint16_t* zrow;
@@ -70,9 +72,11 @@ static_assert(sizeof(KernelTriangle) == 96, "resume_carried_rv32() indexes slots
 
 /// resume_carried() in RV32IM. s4..s11: cur, cur_end, nxt, free_top, pool, limit, the band's first depth
 /// row, its end row; ra the stride; a3 the colour offset. Per record, run_kernel_triangle_rv32()'s
-/// entry (rows, the middle row's switch, the state into registers) without the call, HIDER_RV32_ROWS,
-/// the store-back, then the slot onward or back. The stack: 16..24 the row loop's three words, 28..76
-/// the saved registers, 0 `cs`.
+/// entry (rows, the middle row's switch, the state into registers) without the call, the slot onward or
+/// back, HIDER_RV32_ROWS, then the store-back of a record sent onward. The stack: 16..24 the row loop's
+/// three words (24: 0 for a record sent back, which needs no store-back: a depth row never lies at
+/// address 0), 28..76 the saved registers, 0 `cs`. A record without a row to draw (KernelBands never
+/// resumes one; kernelcheck's resume cases do) goes onward or back by row < end, as in resume_carried().
 HIDER_NAKED inline uint32_t resume_carried_rv32(detail::CarriedSlots*, uint32_t, const detail::KernelBandTarget*) {
     __asm__ volatile(
         "addi   sp, sp, -80\n\t"
@@ -218,15 +222,16 @@ static_assert(sizeof(KernelTriangle) == 96 && offsetof(KernelTriangle, row) < 64
 
 /// resume_carried() in Thumb-1 for ARMv6-M. The row loop's registers are run_kernel_triangle_v6m()'s
 /// (HIDER_V6M_ROWS; r8 the colour offset, set once); the run's state lives on the stack: 0..8 the row
-/// loop's three words (8: 0 when the record ends in this band, so nothing is stored back), 12 `cs`, 16
-/// cur, 20 cur_end, 24 nxt, 28 free_top, 32 pool, 36 limit, 40 the band's first depth row, 44 its end
-/// row, 48 the stride. Per record, the kernel's entry without the call and its register saves, the
-/// slot onward or back before the rows.
+/// loop's three words (8: 0 when the record ends in this band, so nothing is stored back: a depth row
+/// never lies at address 0), 12 `cs`, 16 cur, 20 cur_end, 24 nxt, 28 free_top, 32 pool, 36 limit, 40
+/// the band's first depth row, 44 its end row, 48 the stride. Per record, the kernel's entry without the
+/// call and its register saves, the slot onward or back before the rows; a record without a row to draw
+/// as in resume_carried_rv32().
 HIDER_NAKED inline uint32_t resume_carried_v6m(detail::CarriedSlots*, uint32_t, const detail::KernelBandTarget*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         HIDER_V6M_SAVE_ALL
-        "sub    sp, sp, #56\n\t"            // 36 + 56: an 8-byte aligned stack
+        "sub    sp, sp, #52\n\t"            // 36 + 52: the stack stays 8-byte aligned
         "str    r0, [sp, #12]\n\t"
         "ldm    r0!, {r3-r7}\n\t"           // pool cur cur_end nxt free_top
         "str    r3, [sp, #32]\n\t"
@@ -366,7 +371,7 @@ HIDER_NAKED inline uint32_t resume_carried_v6m(detail::CarriedSlots*, uint32_t, 
         "ldr    r2, [sp, #28]\n\t"
         "str    r2, [r1, #16]\n\t"
         "mov    r0, r4\n\t"
-        "add    sp, sp, #56\n\t"
+        "add    sp, sp, #52\n\t"
         HIDER_V6M_RESTORE_ALL
         :
         : [tri] "i"(offsetof(KernelTriangle, tri)), [row] "i"(offsetof(KernelTriangle, row)),

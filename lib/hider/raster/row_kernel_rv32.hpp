@@ -7,7 +7,7 @@ namespace hider {
 
 #if defined(HIDER_RV32_ASM)
 /// HIDER_RV32_ROWS: the row loop of run_kernel_triangle_rv32(), shared with resume_carried_rv32()
-/// (band_resume_rv32.hpp), from the first row (label 3) through the lower short edge's switch; it ends
+/// (band_resume.hpp), from the first row (label 3) through the lower short edge's switch; it ends
 /// at local label 90, which its caller defines (the state's store-back). Registers and stack words as
 /// run_kernel_triangle_rv32() says; offsets from HIDER_RV32_ROWS_OPERANDS.
 #define HIDER_RV32_ROWS \
