@@ -56,6 +56,19 @@ bool write_in_place(const std::string& path, const char* data, size_t size, bool
     return true;
 }
 
+#if !defined(__wasi__)
+/// All of [data, data + size) to descriptor fd; false on an error.
+bool write_all(int fd, const char* data, size_t size) {
+    for (size_t done = 0; done < size;) {
+        const ssize_t n = ::write(fd, data + done, size - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        done += static_cast<size_t>(n);
+    }
+    return true;
+}
+#endif
+
 bool write_bytes(const std::string& path, const char* data, size_t size, std::string& error) {
     // POSIX calls rather than <filesystem>, which the WebAssembly build's libc++ lacks.
     struct stat st {};
@@ -63,6 +76,13 @@ bool write_bytes(const std::string& path, const char* data, size_t size, std::st
 #if defined(__wasi__)
     return write_in_place(path, data, size, exists, error);  // the web build's file system: no mkstemp
 #else
+    if (is_standard_output(path)) {  // after what the tool printed before, at the descriptor's own offset
+        if (std::fflush(stdout) != 0 || !write_all(STDOUT_FILENO, data, size)) {
+            error = path + ": write failed: " + std::strerror(errno);
+            return false;
+        }
+        return true;
+    }
     if (exists && (!S_ISREG(st.st_mode) || st.st_nlink > 1)) return write_in_place(path, data, size, true, error);
     if (exists && ::access(path.c_str(), W_OK) != 0) {  // a read-only file stays refused
         error = path + ": " + std::strerror(errno);
@@ -85,13 +105,7 @@ bool write_bytes(const std::string& path, const char* data, size_t size, std::st
         ::umask(narrow_mode<mode_t>(umask_bits));
         mode = narrow_mode<mode_t>(0666u & ~umask_bits);
     }
-    bool ok = ::fchmod(fd, mode) == 0;
-    for (size_t done = 0; ok && done < size;) {
-        const ssize_t n = ::write(fd, data + done, size - done);
-        if (n < 0 && errno == EINTR) continue;
-        ok = n > 0;
-        if (ok) done += static_cast<size_t>(n);
-    }
+    bool ok = ::fchmod(fd, mode) == 0 && write_all(fd, data, size);
     ok = (::close(fd) == 0) && ok;
     if (!ok) {
         ::unlink(temp.data());
@@ -108,6 +122,17 @@ bool write_bytes(const std::string& path, const char* data, size_t size, std::st
 }
 
 }  // namespace
+
+bool is_standard_output(const std::string& path) {
+#if defined(__wasi__)
+    (void)path;
+    return false;
+#else
+    struct stat out {}, target {};
+    return ::fstat(STDOUT_FILENO, &out) == 0 && ::stat(path.c_str(), &target) == 0 && out.st_dev == target.st_dev &&
+           out.st_ino == target.st_ino;
+#endif
+}
 
 bool write_file(const std::string& path, const std::vector<uint8_t>& bytes, std::string& error) {
     return write_bytes(path, reinterpret_cast<const char*>(bytes.data()), bytes.size(), error);

@@ -34,10 +34,17 @@ std::vector<uint8_t> ppm_bytes(int width, int height, const std::vector<uint8_t>
 /// file's mode), renamed over `path` only when every byte is written: a failed write leaves an existing
 /// file as it was and no partial one. Written in place: a device, a pipe, a symlink, a file with other
 /// hard links, a writable file in a directory that is not, and every file in the WebAssembly build; a
-/// failed write there leaves what was written. On failure returns false and sets `error` to "path: reason".
+/// failed write there leaves what was written. Standard output (is_standard_output()) is written through
+/// descriptor 1 after stdout's buffer, never reopened: a redirection's file is neither truncated nor
+/// overwritten from its start, an append stays one. On failure returns false and sets `error` to "path: reason".
 /// Shared by the PPM and PNG writers and the tools' other outputs.
 bool write_file(const std::string& path, const std::vector<uint8_t>& bytes, std::string& error);
 bool write_file(const std::string& path, const std::string& bytes, std::string& error);
+
+/// Whether `path` names the file open as standard output (the same device and inode as descriptor 1:
+/// /dev/stdout, or the file or pipe the shell redirected it to). write_file() writes such a path through
+/// descriptor 1, and the tools then print their statistics on stderr. False in the WebAssembly build.
+bool is_standard_output(const std::string& path);
 
 /// Writes a P6 file; on failure returns false and sets `error` to "path: reason".
 bool write_ppm(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, std::string& error);

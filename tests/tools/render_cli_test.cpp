@@ -5,6 +5,7 @@
 // numbers stated in their first line) and small models written at test time into HIDER_TEST_OUT.
 #include <doctest/doctest.h>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <cstdint>
@@ -1330,4 +1331,74 @@ TEST_CASE("--scene: a far loose triangle does not coarsen the grid of near ones 
     CHECK(frames[0].find_first_not_of('\0', 13) != std::string::npos);  // the fan is in view
     CHECK(frames[1] == frames[0]);
     CHECK(frames[2] == frames[0]);
+}
+
+TEST_CASE("-o /dev/stdout writes the image through standard output: --stats goes to stderr, an append stays one") {
+    // The image was written by reopening /dev/stdout: a redirection's file was truncated (an append lost
+    // what it held) and the statistics, printed on descriptor 1 at its own offset, overwrote the image.
+    const std::string model = write_model("stdout_tri.obj", kTriangle);
+    const Run r = run({model, "-o", "/dev/stdout", "--size", "4x2", "--stats"}, scratch_path("none"));
+    CHECK_MESSAGE(r.code == 0, r.err);
+    CHECK(r.out.size() == 4 * 2 * 3 + 11);
+    CHECK(r.out.rfind("P6\n4 2\n255\n", 0) == 0);
+    CHECK(r.err.find("triangles 1 drawn") != std::string::npos);
+    const std::string log = scratch_path("appended.txt");
+    std::ofstream(log, std::ios::binary) << "log\n";
+    const std::string cmd = shell_quoted(kExe) + " " + shell_quoted(model) + " -o /dev/stdout --size 4x2 >>" + shell_quoted(log);
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    const std::string both = read_file(log);
+    CHECK(both.size() == 4 + 4 * 2 * 3 + 11);
+    CHECK(both.rfind("log\nP6\n4 2\n255\n", 0) == 0);
+}
+
+TEST_CASE("A directory given as the .hbsp model or as the scene is refused with exit 2 and the reason") {
+    // The .hbsp reader let libstdc++'s read error escape (abort, exit 134); the scene reader said "read error".
+    const std::string dir = scratch_path("dir.hbsp");
+    fs::create_directories(dir);
+    const Run bsp = run({dir, "-o", out_ppm(), "--algo", "bsp"});
+    CHECK(bsp.code == 2);
+    CHECK_MESSAGE(bsp.err.find(dir + ": cannot open file: Is a directory") != std::string::npos, bsp.err);
+    CHECK_FALSE(bsp.output_created);
+    const Run scene = run({"--scene", dir, "-o", out_ppm()});
+    CHECK(scene.code == 2);
+    CHECK_MESSAGE(scene.err.find(dir + ": cannot open file: Is a directory") != std::string::npos, scene.err);
+    const Run missing = run({scratch_path("missing.hbsp"), "-o", out_ppm(), "--algo", "bsp"});  // with the reason
+    CHECK(missing.code == 2);
+    CHECK(missing.err.find("missing.hbsp: cannot open file: No such file or directory") != std::string::npos);
+    const std::string fifo = scratch_path("fifo.hbsp");  // a device or pipe could grow the buffer without end
+    fs::remove(fifo);
+    if (::mkfifo(fifo.c_str(), 0600) == 0) {
+        const Run pipe = run({fifo, "-o", out_ppm(), "--algo", "bsp"});
+        CHECK(pipe.code == 2);
+        CHECK(pipe.err.find("fifo.hbsp: cannot open file: not a regular file") != std::string::npos);
+    }
+}
+
+TEST_CASE("--scene refuses --algo other than raycast, even the default's name, and --strict") {
+    // An explicit --algo zbuffer was taken for the default and the scene silently ray traced.
+    const std::string scene = write_model("algo_scene.txt", "camera eye 0 2 8 target 0 0 0\nsphere 0 0 0 1\n");
+    const Run z = run({"--scene", scene, "-o", out_ppm(), "--algo", "zbuffer"});
+    CHECK(z.code == 2);
+    CHECK(z.err.find("--algo must be raycast (or left out)") != std::string::npos);
+    CHECK_FALSE(z.output_created);
+    const Run strict = run({"--scene", scene, "-o", out_ppm(), "--strict"});
+    CHECK(strict.code == 2);
+    CHECK(strict.err.find("--strict does not apply to --scene") != std::string::npos);
+    const Run ray = run({"--scene", scene, "-o", out_ppm(), "--algo", "raycast"});
+    CHECK_MESSAGE(ray.code == 0, ray.err);
+    CHECK(ray.output_created);
+}
+
+TEST_CASE("Standard output that cannot be written (/dev/full) is an error, exit 2") {
+    if (!exists("/dev/full")) return;  // Linux
+    const std::string model = write_model("full_tri.obj", kTriangle);
+    for (const Args& args : {Args{model, "-o", out_ppm(), "--stats"}, Args{"--help"}}) {
+        std::string cmd = shell_quoted(kExe);
+        for (const std::string& a : args) cmd += " " + shell_quoted(a);
+        const std::string err_file = scratch_path("full_err.txt");
+        const int status = std::system((cmd + " >/dev/full 2>" + shell_quoted(err_file)).c_str());
+        CHECK(WIFEXITED(status));
+        CHECK(WEXITSTATUS(status) == 2);
+        CHECK(read_file(err_file).find("hider-render: cannot write standard output") != std::string::npos);
+    }
 }

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 
 namespace hider::tool {
 
@@ -29,11 +30,20 @@ void out_of_memory() {
     std::fprintf(stderr, "%s: out of memory\n", g_tool_name);
     std::_Exit(2);  // outputs are written whole or not at all (port::write_file), so nothing partial is left
 }
+/// At exit: what the tool printed must have reached standard output (a full disk, /dev/full).
+void check_standard_output() {
+    errno = 0;
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return;
+    std::fprintf(stderr, "%s: cannot write standard output%s%s\n", g_tool_name, errno != 0 ? ": " : "",
+                 errno != 0 ? std::strerror(errno) : "");
+    std::_Exit(2);
+}
 }  // namespace
 
 void exit_2_when_out_of_memory(const char* tool) {
     g_tool_name = tool;
     std::set_new_handler(out_of_memory);
+    std::atexit(check_standard_output);
 }
 
 bool parse_int(const std::string& s, long& out) {
@@ -42,6 +52,11 @@ bool parse_int(const std::string& s, long& out) {
     errno = 0;
     out = std::strtol(s.c_str(), &end, 10);
     return end == s.c_str() + s.size() && errno == 0;
+}
+
+bool same_file(const std::string& a, const std::string& b) {
+    struct stat sa {}, sb {};
+    return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
 bool has_extension(const std::string& path, const std::string& ext) {

@@ -2,10 +2,14 @@
 // range lib/ can hold before it is converted to fixed point, once; meshes get their BVH here.
 #include "common/ray_scene.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -591,9 +595,14 @@ bool parse_ray_scene(std::istream& in, const std::string& name, const std::strin
 }
 
 bool load_ray_scene(const std::string& path, RayScene& out, std::string& error) {
+    struct stat st {};  // POSIX stat, as load_obj(): a directory opens on Linux, then fails to read
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+        error = path + ": cannot open file: " + std::strerror(EISDIR);
+        return false;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        error = path + ": cannot open";
+        error = path + ": cannot open file: " + std::strerror(errno);
         return false;
     }
     const size_t slash = path.find_last_of('/');

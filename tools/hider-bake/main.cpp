@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
     }
     if (model_path.empty()) fail(std::string("no model given\n") + kUsage);
     if (out_path.empty()) fail(std::string("no output given (-o OUT.hpp)\n") + kUsage);
+    if (same_file(model_path, out_path)) fail("output '" + out_path + "' is the model itself: give another -o");
     if (info.name.empty()) fail(std::string("no scene name given (--name NAME)\n") + kUsage);
     std::string why;
     if (!bake::valid_name(info.name, why)) fail("--name '" + info.name + "' " + why);

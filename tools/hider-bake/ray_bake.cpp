@@ -149,6 +149,7 @@ int main(int argc, char** argv) {
     }
     if (scene_path.empty()) fail(std::string("no scene given\n") + kUsage);
     if (out_path.empty()) fail(std::string("no output given (-o OUT.hpp)\n") + kUsage);
+    if (same_file(scene_path, out_path)) fail("output '" + out_path + "' is the scene itself: give another -o");
     if (name.empty()) fail(std::string("no scene name given (--name NAME)\n") + kUsage);
     std::string why;
     if (!bake::valid_name(name, why)) fail("--name '" + name + "' " + why);

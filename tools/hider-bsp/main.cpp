@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
     }
     if (model_path.empty()) fail(std::string("no model given\n") + kUsage);
     if (out_path.empty()) fail(std::string("no output given (-o OUT.hbsp)\n") + kUsage);
+    if (same_file(model_path, out_path)) fail("output '" + out_path + "' is the model itself: give another -o");
     const bool header = has_extension(out_path, ".hpp");  // in any case, as the other tools
     if (!header && !has_extension(out_path, ".hbsp")) fail("output '" + out_path + "': use .hbsp (a blob) or .hpp (a C++ header)");
     std::string why;

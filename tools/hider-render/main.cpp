@@ -1,10 +1,13 @@
 // hider-render: renders an OBJ model to a binary PPM with lib/ (the same code that runs on the chip).
 // Usage: see usage() below and README.md. Errors print "file:line: what" or a plain reason and exit 2.
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <vector>
@@ -54,6 +57,22 @@ Vec3d parse_vec(const std::string& opt, const std::string& s) {
 
 /// The whole file at `path`; false with "path: what" when it cannot be read.
 bool read_bytes(const std::string& path, std::vector<uint8_t>& out, std::string& why) {
+    // Only a regular file (a directory "opens" on Linux and its read throws from libstdc++; a device
+    // could grow the buffer until memory ends), no larger than a blob's 32-bit total_size.
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) {
+        why = path + ": cannot open file: " + std::strerror(errno);
+        return false;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        why = path + ": cannot open file: " + (S_ISDIR(st.st_mode) ? std::string(std::strerror(EISDIR)) : "not a regular file");
+        return false;
+    }
+    if (static_cast<unsigned long long>(st.st_size) > 0xFFFFFFFFull) {
+        why = path + ": " + std::to_string(static_cast<unsigned long long>(st.st_size)) +
+              " bytes, more than a BSP blob can hold (4 GiB - 1)";
+        return false;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         why = path + ": cannot open";
@@ -118,13 +137,18 @@ bool model_only_option(const std::string& a) {
            a == "--reorders";
 }
 
+/// Where --stats goes: stdout, or stderr when the image itself goes to standard output.
+std::FILE* stats_stream(const std::string& out_path) { return hider::port::is_standard_output(out_path) ? stderr : stdout; }
+
 /// --scene FILE.txt: ray traces a scene file (README.md, "Scene files (`hider-render --scene`)").
 int render_scene_file(const std::string& scene_path, const std::string& model_path, const std::string& out_path,
-                      bool size_given, const CameraArgs& cam, const RenderOptions& opt, bool stats, int argc, char** argv) {
+                      bool size_given, const CameraArgs& cam, const RenderOptions& opt, bool algo_given, bool strict,
+                      bool stats, int argc, char** argv) {
     if (!model_path.empty()) fail("give either a model or --scene, not both ('" + model_path + "', '" + scene_path + "')");
     for (int i = 1; i < argc; ++i)
         if (model_only_option(argv[i])) fail(std::string(argv[i]) + " does not apply to --scene (the scene file sets camera and shading)");
-    if (opt.algo != Algo::zbuffer && opt.algo != Algo::raycast) fail("--scene is ray traced: --algo must be raycast (or left out)");
+    if (algo_given && opt.algo != Algo::raycast) fail("--scene is ray traced: --algo must be raycast (or left out)");
+    if (strict) fail("--strict does not apply to --scene (a scene's frame is complete or the run fails)");
     if (out_path.empty()) fail(std::string("no output given (-o OUT.ppm)\n") + kUsage);
     bool png = false;
     std::string why_format;
@@ -139,7 +163,7 @@ int render_scene_file(const std::string& scene_path, const std::string& model_pa
     write_image(out_path, result);
     if (stats) {
         const RayCounts& r = result.ray;
-        std::printf("rays %llu hits %llu shadow-rays %llu box-tests %llu triangle-tests %llu\n",
+        std::fprintf(stats_stream(out_path), "rays %llu hits %llu shadow-rays %llu box-tests %llu triangle-tests %llu\n",
                     static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.hits),
                     static_cast<unsigned long long>(r.shadow_rays), static_cast<unsigned long long>(r.boxes),
                     static_cast<unsigned long long>(r.triangles));
@@ -155,7 +179,7 @@ int main(int argc, char** argv) {
     bool size_given = false;
     CameraArgs cam;
     RenderOptions opt;
-    bool stats = false, strict = false;
+    bool stats = false, strict = false, algo_given = false;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&]() -> std::string {
@@ -196,6 +220,7 @@ int main(int argc, char** argv) {
         } else if (a == "--no-cull") opt.cull = false;
         else if (a == "--algo") {
             const std::string v = value();
+            algo_given = true;
             if (!parse_algo(v, opt.algo)) fail("unknown algo '" + v + "' (available: " + algo_names() + ")");
         } else if (a == "--depth-bits") {
             const std::string v = value();
@@ -244,7 +269,7 @@ int main(int argc, char** argv) {
         else fail("more than one model given ('" + model_path + "', '" + a + "')");
     }
     std::string why_format;
-    if (!scene_path.empty()) return render_scene_file(scene_path, model_path, out_path, size_given, cam, opt, stats, argc, argv);
+    if (!scene_path.empty()) return render_scene_file(scene_path, model_path, out_path, size_given, cam, opt, algo_given, strict, stats, argc, argv);
     if (model_path.empty()) fail(std::string("no model given\n") + kUsage);
     if (out_path.empty()) fail(std::string("no output given (-o OUT.ppm)\n") + kUsage);
     bool png = false;
@@ -295,28 +320,29 @@ int main(int argc, char** argv) {
     if (!(strict && result.stats.status != Status::ok)) write_image(out_path, result);
     if (stats) {
         const FrameStats& s = result.stats;
+        std::FILE* const out = stats_stream(out_path);
         if (opt.algo == Algo::raycast)  // rays meet triangles through the BVH: none is set up, culled or clipped
-            std::printf("triangles %u (ray cast: no drawn, culled or clipped counts; rays below)\n", s.triangles_in);
+            std::fprintf(out, "triangles %u (ray cast: no drawn, culled or clipped counts; rays below)\n", s.triangles_in);
         else
-            std::printf("triangles %u drawn %u culled %u degenerate %u outside %u clipped %u\n", s.triangles_in,
+            std::fprintf(out, "triangles %u drawn %u culled %u degenerate %u outside %u clipped %u\n", s.triangles_in,
                         s.triangles_drawn, s.triangles_culled, s.triangles_degenerate, s.triangles_outside, s.triangles_clipped);
-        std::printf("fragments %llu written %llu covered %u overdraw %.2f\n", static_cast<unsigned long long>(s.fragments),
+        std::fprintf(out, "fragments %llu written %llu covered %u overdraw %.2f\n", static_cast<unsigned long long>(s.fragments),
                     static_cast<unsigned long long>(s.pixels_written), result.pixels_covered,
                     result.pixels_covered == 0 ? 0.0 : static_cast<double>(s.pixels_written) / result.pixels_covered);
         if (opt.algo == Algo::raycast)
-            std::printf("rays %llu hits %llu box-tests %llu triangle-tests %llu\n", static_cast<unsigned long long>(result.ray.rays),
+            std::fprintf(out, "rays %llu hits %llu box-tests %llu triangle-tests %llu\n", static_cast<unsigned long long>(result.ray.rays),
                         static_cast<unsigned long long>(result.ray.hits), static_cast<unsigned long long>(result.ray.boxes),
                         static_cast<unsigned long long>(result.ray.triangles));
         if (bsp)
-            std::printf("bsp nodes-visited %u subtrees-skipped %u triangles %zu\n", s.nodes_visited, s.subtrees_skipped,
+            std::fprintf(out, "bsp nodes-visited %u subtrees-skipped %u triangles %zu\n", s.nodes_visited, s.subtrees_skipped,
                         static_cast<size_t>(s.triangles_in));
         if (opt.algo == Algo::newell || opt.algo == Algo::reverse) {
             const NewellStats& n = result.newell;
-            std::printf("newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u pixel-ordered %u inexact-cuts %u reorders-peak %u\n",
+            std::fprintf(out, "newell polygons %zu pair-tests %llu moves %u splits %u cycles %u unresolved %u dropped %u too-deep %u pixel-ordered %u inexact-cuts %u reorders-peak %u\n",
                         result.polygons, static_cast<unsigned long long>(n.pair_tests), n.moves, n.splits, n.cycles,
                         n.unresolved, n.dropped, n.too_deep, n.pixel_ordered, n.inexact_cuts, n.reorders_peak);
         }
-        if (s.status != Status::ok) std::printf("status %s\n", status_name(s.status));
+        if (s.status != Status::ok) std::fprintf(out, "status %s\n", status_name(s.status));
     }
     return warn_incomplete(opt, result, strict);
 }
