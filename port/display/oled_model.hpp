@@ -18,7 +18,7 @@ namespace hider::port {
 
 class OledModel {
 public:
-    /// A module of `width` x `height` pixels whose first column is RAM column `column_offset`, wired for COM
+    /// A module of `width` x `height` pixels whose first column is RAM column `column_offset` upright (A1), wired for COM
     /// pins configuration `com_pins` (0: 0x12 for 64 rows, 0x02 otherwise). A geometry the controller does
     /// not have (columns past its RAM, a height not a multiple of 8 in 8..64) counts an error and shows nothing.
     OledModel(OledController controller, uint8_t width, uint8_t height, uint8_t column_offset, uint8_t com_pins = 0)
@@ -66,7 +66,9 @@ public:
         if (!com_down_) com = height_ - 1 - com;                     // C0: COM0 at the bottom of the glass
         if (com >= multiplex_) return false;                         // rows past the multiplex are not driven
         const uint32_t ram_row = (com + display_offset_ + start_line_) % 64;
-        const uint32_t column = offset_ + (seg_remap_ ? x : width_ - 1 - x);  // A1: column 0 at the left
+        // The glass sits on fixed segments: those RAM columns offset_ + x drive upright (A1: column c drives
+        // segment ram - 1 - c); turned (A0: segment c) they are driven by columns mirrored across the whole RAM.
+        const uint32_t column = seg_remap_ ? offset_ + x : ram_columns() - 1 - offset_ - x;
         const bool bit = ((ram_[ram_row / 8][column] >> (ram_row % 8)) & 1u) != 0;
         return bit != inverse_;
     }

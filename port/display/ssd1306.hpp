@@ -31,9 +31,10 @@ struct OledHal {
 enum class OledController : uint8_t { ssd1306, sh1106 };
 
 /// Panel geometry: width <= 128 (SSD1306) or <= 132 (SH1106) columns starting at RAM column `column_offset`
-/// (SH1106 modules of 128 columns: 2; SSD1306 64x32 and 64x48 modules: 32), height 16, 32, 48 or 64 rows.
-/// `flip` rotates the image by 180 degrees (segment and COM scan order; the glass must sit centred in the
-/// controller's RAM columns, as on the modules named here). `external_vcc` leaves the charge pump off.
+/// upright (SH1106 modules of 128 columns: 2; SSD1306 64x32 and 64x48 modules: 32; 96x16: 0), height 16, 32,
+/// 48 or 64 rows. `flip` rotates the image by 180 degrees (segment and COM scan order); the glass stays on its
+/// segments, so turned it starts at RAM column (128 or 132) - column_offset - width: the same column for a
+/// centred glass, 32 for a 96x16 SSD1306 (u8g2's flipmode_x_offset). `external_vcc` leaves the charge pump off.
 /// `com_pins` is the COM pins configuration (command 0xDA) the module is wired for; 0 takes the usual
 /// one, 0x12 for 64 rows and 0x02 otherwise (128x32, 96x16), but 64x32 and 64x48 modules need 0x12.
 struct OledConfig {
@@ -192,7 +193,7 @@ public:
     /// panel's left edge; refused before init or past the panel's pages.
     [[nodiscard]] bool write_page(uint8_t page, const uint8_t* bits) {
         if (!initialized_ || bits == nullptr || page >= config_.height / 8) return false;
-        const uint8_t c = config_.column_offset;
+        const uint8_t c = first_column();
         bool sent;
         if (config_.controller == OledController::sh1106) {
             const uint8_t address[] = {static_cast<uint8_t>(oled::kPageStart | page),
@@ -263,6 +264,13 @@ private:
         if (!sh && config_.controller != OledController::ssd1306) return false;
         if (config_.height < 16 || config_.height > 64 || config_.height % 8 != 0) return false;
         return config_.width > 0 && uint32_t{config_.column_offset} + config_.width <= (sh ? 132u : 128u);
+    }
+
+    // The RAM column written to the glass's left edge. A1 (upright) drives segment ram - 1 - c from RAM column
+    // c, A0 (turned) segment c, so turned the glass's segments take the columns mirrored across the whole RAM.
+    uint8_t first_column() const {
+        const uint32_t ram = config_.controller == OledController::sh1106 ? 132u : 128u;
+        return static_cast<uint8_t>(config_.flip ? ram - config_.column_offset - config_.width : config_.column_offset);
     }
 
     // Zeroes every page across the controller's whole RAM width (the glass's offset columns included).
