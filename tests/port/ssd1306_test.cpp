@@ -171,6 +171,71 @@ TEST_CASE("the OLED model follows hand-written datasheet sequences") {
     }
 }
 
+TEST_CASE("the OLED model takes every datasheet command with its parameters") {
+    // Each sequence ends by writing one byte at page 0, column 5 (page addressing, the reset mode): a
+    // parameter run as a command (0x00-0x0F set the column's low nibble) would move it.
+    const auto lands_at_column_5 = [](OledModel& m, const uint8_t* cmds, size_t len) {
+        const uint8_t on[] = {0xA1, 0xC8, 0xAF}, at5[] = {0xB0, 0x05, 0x10};
+        REQUIRE(m.receive(0x00, on, sizeof on));
+        REQUIRE(m.receive(0x00, at5, sizeof at5));
+        REQUIRE(m.receive(0x00, cmds, len));
+        const uint8_t one = 0x01;
+        REQUIRE(m.receive(0x40, &one, 1));
+        long lit = 0;
+        for (uint32_t x = 0; x < 128; ++x) lit += m.pixel(x, 0);
+        return lit == 1 && m.pixel(5, 0);
+    };
+    SUBCASE("SSD1306 (datasheet rev 1.1 table 9-1): scrolling, vertical scroll area and NOP") {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        const uint8_t cmds[] = {0x2E,                               // deactivate scroll
+                                0x26, 0x00, 0x01, 0x07, 0x02, 0x00, 0xFF,  // right horizontal scroll: 6 bytes
+                                0x27, 0x00, 0x00, 0x00, 0x07, 0x00, 0xFF,  // left
+                                0x29, 0x00, 0x00, 0x03, 0x07, 0x01,  // vertical and right horizontal: 5 bytes
+                                0x2A, 0x00, 0x02, 0x00, 0x05, 0x0F,  // vertical and left
+                                0xA3, 0x00, 0x08,                    // vertical scroll area: 2 bytes
+                                0x2F, 0x2E, 0xE3};                   // activate, deactivate, NOP
+        CHECK(lands_at_column_5(m, cmds, sizeof cmds));
+        CHECK(m.errors() == 0);
+    }
+    SUBCASE("SH1106 (datasheet v2.3 s.9): pump voltage 30-33 and NOP") {
+        OledModel m(OledController::sh1106, 128, 64, 0);
+        const uint8_t cmds[] = {0x30, 0x31, 0x32, 0x33, 0xE3};
+        CHECK(lands_at_column_5(m, cmds, sizeof cmds));
+        CHECK(m.errors() == 0);
+    }
+    SUBCASE("each controller refuses the other's commands") {
+        OledModel ssd(OledController::ssd1306, 128, 64, 0), sh(OledController::sh1106, 128, 64, 0);
+        for (const uint8_t c : {0x30, 0x31, 0x32, 0x33, 0xAD}) REQUIRE(ssd.receive(0x00, &c, 1));
+        CHECK(ssd.errors() == 5);
+        for (const uint8_t c : {0x26, 0x27, 0x29, 0x2A, 0x2E, 0x2F, 0xA3}) REQUIRE(sh.receive(0x00, &c, 1));
+        CHECK(sh.errors() == 7);
+    }
+    SUBCASE("SSD1306 multiplex: 16 to 64 rows (A8 0-14 are invalid), SH1106: 1 to 64") {
+        OledModel ssd(OledController::ssd1306, 128, 64, 0), sh(OledController::sh1106, 128, 64, 0);
+        for (const uint8_t n : {0x00, 0x07, 0x0E}) {
+            const uint8_t cmd[] = {0xA8, n};
+            REQUIRE(ssd.receive(0x00, cmd, sizeof cmd));
+            REQUIRE(sh.receive(0x00, cmd, sizeof cmd));
+            CHECK(int{sh.multiplex()} == n + 1);
+        }
+        CHECK(ssd.errors() == 3);
+        CHECK(int{ssd.multiplex()} == 64);  // an invalid entry leaves the ratio as it was
+        CHECK(sh.errors() == 0);
+        const uint8_t sixteen[] = {0xA8, 0x0F};
+        REQUIRE(ssd.receive(0x00, sixteen, sizeof sixteen));
+        CHECK(int{ssd.multiplex()} == 16);
+        CHECK(ssd.errors() == 3);
+    }
+    SUBCASE("an 8-row SSD1306 module does not exist (16MUX minimum); the driver refuses it too") {
+        OledModel m(OledController::ssd1306, 128, 8, 0);
+        CHECK(m.errors() == 1);
+        Oled oled(m.hal(), config(OledController::ssd1306, 128, 8, 0));
+        CHECK(!oled.init());
+        OledModel sh(OledController::sh1106, 128, 8, 0);  // SH1106 multiplex goes down to 1
+        CHECK(sh.errors() == 0);
+    }
+}
+
 TEST_CASE("the OLED driver sends the datasheets' bytes, in order") {
     {  // SSD1306 128x64: reset pulse, init, horizontal addressing, RAM cleared, display on
         Recorder r;
