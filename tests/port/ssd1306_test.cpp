@@ -548,3 +548,57 @@ TEST_CASE("the OLED driver stops at a refused transfer and refuses frames it can
     CHECK(!oled.write_page(8, page));  // past the 8 pages
     CHECK(oled.write_page(7, page));
 }
+
+TEST_CASE("the OLED driver's frame calls keep the BandSink contract around open and failed frames") {
+    const std::vector<uint16_t> white(128 * 64, 0xFFFF);
+    const uint8_t page[128] = {};
+    SUBCASE("write_page() is refused during a frame, as send_commands() is, and sends nothing") {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        Oled oled(m.hal(), config(OledController::ssd1306, 128, 64, 0));
+        REQUIRE(oled.init());
+        REQUIRE(oled.begin_frame(128, 64));
+        REQUIRE(oled.write_rows(0, 4, white.data(), 128));
+        const uint32_t sent = m.transfers();
+        const uint8_t off = 0xAE;
+        CHECK(!oled.send_commands(&off, 1));
+        CHECK(!oled.write_page(0, page));
+        CHECK(m.transfers() == sent);
+        CHECK(oled.last_band_status() == BandStatus::ok);  // neither is a frame call
+        CHECK(oled.initialized());
+        REQUIRE(oled.write_rows(4, 60, white.data() + 4 * 128, 128));
+        REQUIRE(oled.end_frame());
+        for (uint32_t x = 0; x < 128; ++x) CHECK(m.pixel(x, 0));  // the frame's first page, not write_page()'s
+        CHECK(oled.write_page(0, page));  // after the frame
+        CHECK(!m.pixel(0, 0));
+    }
+    SUBCASE("begin_frame() during a frame says frame_open, whatever the size") {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        Oled oled(m.hal(), config(OledController::ssd1306, 128, 64, 0));
+        REQUIRE(oled.init());
+        REQUIRE(oled.begin_frame(128, 64));
+        CHECK(!oled.begin_frame(128, 32));
+        CHECK(oled.last_band_status() == BandStatus::frame_open);
+        CHECK(!oled.begin_frame(0, 0));
+        CHECK(oled.last_band_status() == BandStatus::frame_open);
+        REQUIRE(oled.write_rows(0, 64, white.data(), 128));  // the open frame goes on
+        CHECK(oled.end_frame());
+    }
+    SUBCASE("after a failed frame, end_frame() without a frame says not_in_frame") {
+        for (const bool reinit : {false, true}) {
+            OledModel m(OledController::ssd1306, 128, 64, 0);
+            Oled oled(m.hal(19 + 2), config(OledController::ssd1306, 128, 64, 0));  // init, then one page
+            REQUIRE(oled.init());
+            REQUIRE(oled.begin_frame(128, 64));
+            CHECK(!oled.write_rows(0, 16, white.data(), 128));
+            CHECK(oled.last_band_status() == BandStatus::not_ready);
+            if (reinit) {
+                CHECK(!oled.init());  // the bus still refuses; init() closes the frame anyway
+            } else {
+                CHECK(!oled.end_frame());
+                CHECK(oled.last_band_status() == BandStatus::not_ready);
+            }
+            CHECK(!oled.end_frame());
+            CHECK(oled.last_band_status() == BandStatus::not_in_frame);
+        }
+    }
+}
