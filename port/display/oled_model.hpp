@@ -5,8 +5,8 @@
 // shows the pixel the module lights at (x, y). The module is wired for one COM pins configuration and
 // multiplex; a controller set otherwise shows interleaved or missing rows. Whatever it does not accept
 // counts in errors(): an unknown command or control byte, a parameter missing at the end of a transfer,
-// a data byte past the RAM, a display switched on with a setting that does not fit the module, a
-// geometry no controller has. Freestanding, no heap, about 1.1 KB.
+// an SSD1306 multiplex under 16, a data byte past the RAM, a display switched on with a setting that does
+// not fit the module, a geometry no controller has. Freestanding, no heap, about 1.1 KB.
 #pragma once
 
 #include <stddef.h>
@@ -18,14 +18,15 @@ namespace hider::port {
 
 class OledModel {
 public:
-    /// A module of `width` x `height` pixels whose first column is RAM column `column_offset`, wired for COM
-    /// pins configuration `com_pins` (0: 0x12 for 64 rows, 0x02 otherwise). A geometry the controller does
-    /// not have (columns past its RAM, a height not a multiple of 8 in 8..64) counts an error and shows nothing.
+    /// A module of `width` x `height` pixels whose first column is RAM column `column_offset` upright (A1),
+    /// wired for COM pins configuration `com_pins` (0: 0x12 for 64 rows, 0x02 otherwise). A geometry the
+    /// controller does not have (columns past its RAM, a height not a multiple of 8 in 16..64 on the SSD1306,
+    /// whose multiplex starts at 16, or 8..64 on the SH1106) counts an error and shows nothing.
     OledModel(OledController controller, uint8_t width, uint8_t height, uint8_t column_offset, uint8_t com_pins = 0)
         : controller_(controller), width_(width), height_(height), offset_(column_offset),
           wired_com_(com_pins != 0 ? com_pins : (height == 64 ? 0x12 : 0x02)) {
-        geometry_ok_ = width > 0 && uint32_t{column_offset} + width <= ram_columns() && height >= 8 && height <= 64 &&
-                       height % 8 == 0;
+        geometry_ok_ = width > 0 && uint32_t{column_offset} + width <= ram_columns() &&
+                       height >= (sh1106() ? 8 : 16) && height <= 64 && height % 8 == 0;
         if (!geometry_ok_) ++errors_;
     }
 
@@ -66,7 +67,9 @@ public:
         if (!com_down_) com = height_ - 1 - com;                     // C0: COM0 at the bottom of the glass
         if (com >= multiplex_) return false;                         // rows past the multiplex are not driven
         const uint32_t ram_row = (com + display_offset_ + start_line_) % 64;
-        const uint32_t column = offset_ + (seg_remap_ ? x : width_ - 1 - x);  // A1: column 0 at the left
+        // The glass sits on fixed segments: those RAM columns offset_ + x drive upright (A1: column c drives
+        // segment ram - 1 - c); turned (A0: segment c) they are driven by columns mirrored across the whole RAM.
+        const uint32_t column = seg_remap_ ? offset_ + x : ram_columns() - 1 - offset_ - x;
         const bool bit = ((ram_[ram_row / 8][column] >> (ram_row % 8)) & 1u) != 0;
         return bit != inverse_;
     }
@@ -87,23 +90,36 @@ private:
     uint32_t ram_columns() const { return sh1106() ? 132u : 128u; }
     bool page_mode() const { return sh1106() || mode_ == 2; }
 
-    // Parameter bytes a command takes (SSD1306 s.9 table 9-1; SH1106 s.9), -1 for a code it does not have.
+    // Parameter bytes a command takes, -1 for a code the controller does not have. SSD1306: Solomon Systech
+    // datasheet rev 1.1 s.9 table 9-1 (scrolling: 26/27 6 bytes, 29/2A 5, 2E/2F none, A3 2; NOP E3) and the
+    // charge pump 8D of its application note; SH1106: Sino Wealth datasheet v2.3 s.9 (pump voltage 30-33,
+    // DC-DC AD, NOP E3; no 20-22, scrolling or 8D). SH1106 read-modify-write E0/EE is not modelled: an error.
     int parameters(uint8_t c) const {
         if (c <= 0x1F || (c >= 0x40 && c <= 0x7F) || (c >= 0xB0 && c <= 0xB7)) return 0;
         switch (c) {
         case 0xA0: case 0xA1: case 0xA4: case 0xA5: case 0xA6: case 0xA7: case 0xAE: case 0xAF: case 0xC0: case 0xC8:
+        case 0xE3:
             return 0;
         case 0x81: case 0xA8: case 0xD3: case 0xD5: case 0xD9: case 0xDA: case 0xDB: return 1;
-        case 0x2E: case 0x20: case 0x21: case 0x22: case 0x8D:
-            return sh1106() ? -1 : (c == 0x2E ? 0 : (c == 0x20 || c == 0x8D ? 1 : 2));
+        case 0x30: case 0x31: case 0x32: case 0x33: return sh1106() ? 0 : -1;
         case 0xAD: return sh1106() ? 1 : -1;
+        default: break;
+        }
+        if (sh1106()) return -1;
+        switch (c) {
+        case 0x2E: case 0x2F: return 0;
+        case 0x20: case 0x8D: return 1;
+        case 0x21: case 0x22: case 0xA3: return 2;
+        case 0x29: case 0x2A: return 5;
+        case 0x26: case 0x27: return 6;
         default: return -1;
         }
     }
 
     void command_byte(uint8_t b) {
         if (pending_ != 0) {  // a parameter of pending_
-            params_[got_++] = b;
+            if (got_ < sizeof params_) params_[got_] = b;  // only the first two take effect here
+            ++got_;
             if (got_ == want_) apply(pending_);
             return;
         }
@@ -145,7 +161,8 @@ private:
         } else if (c == 0x81) {
             contrast_ = p0;
         } else if (c == 0xA8) {
-            multiplex_ = static_cast<uint8_t>((p0 & 0x3F) + 1);
+            if (!sh1106() && (p0 & 0x3F) < 15) ++errors_;  // SSD1306: 16MUX at least, 0-14 invalid
+            else multiplex_ = static_cast<uint8_t>((p0 & 0x3F) + 1);
         } else if (c == 0xD3) {
             display_offset_ = static_cast<uint8_t>(p0 & 0x3F);
         } else if (c == 0xDA) {
@@ -163,7 +180,8 @@ private:
             page_first_ = page_ = static_cast<uint8_t>(p0 & 7);
             page_last_ = static_cast<uint8_t>(p1 & 7);
         }
-        // D5, D9, DB, 2E: clock, precharge, VCOMH and scrolling, which the image here does not show
+        // D5, D9, DB, 30-33, 26-2F, A3, E3: clock, precharge, VCOMH, pump voltage, scrolling and NOP, which
+        // the image here does not show (an active scroll shows the unscrolled RAM)
     }
 
     void data_byte(uint8_t b) {

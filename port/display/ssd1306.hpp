@@ -31,9 +31,10 @@ struct OledHal {
 enum class OledController : uint8_t { ssd1306, sh1106 };
 
 /// Panel geometry: width <= 128 (SSD1306) or <= 132 (SH1106) columns starting at RAM column `column_offset`
-/// (SH1106 modules of 128 columns: 2; SSD1306 64x32 and 64x48 modules: 32), height 16, 32, 48 or 64 rows.
-/// `flip` rotates the image by 180 degrees (segment and COM scan order; the glass must sit centred in the
-/// controller's RAM columns, as on the modules named here). `external_vcc` leaves the charge pump off.
+/// upright (SH1106 modules of 128 columns: 2; SSD1306 64x32 and 64x48 modules: 32; 96x16: 0), height 16, 32,
+/// 48 or 64 rows. `flip` rotates the image by 180 degrees (segment and COM scan order); the glass stays on its
+/// segments, so turned it starts at RAM column (128 or 132) - column_offset - width: the same column for a
+/// centred glass, 32 for a 96x16 SSD1306 (u8g2's flipmode_x_offset). `external_vcc` leaves the charge pump off.
 /// `com_pins` is the COM pins configuration (command 0xDA) the module is wired for; 0 takes the usual
 /// one, 0x12 for 64 rows and 0x02 otherwise (128x32, 96x16), but 64x32 and 64x48 modules need 0x12.
 struct OledConfig {
@@ -189,34 +190,20 @@ public:
     const OledConfig& config() const { return config_; }
 
     /// Writes `bits` (width bytes: bit k of byte x lights row 8 page + k of column x) to page `page` at the
-    /// panel's left edge; refused before init or past the panel's pages.
+    /// panel's left edge; refused before init, during a frame (as send_commands()) or past the panel's pages.
     [[nodiscard]] bool write_page(uint8_t page, const uint8_t* bits) {
-        if (!initialized_ || bits == nullptr || page >= config_.height / 8) return false;
-        const uint8_t c = config_.column_offset;
-        bool sent;
-        if (config_.controller == OledController::sh1106) {
-            const uint8_t address[] = {static_cast<uint8_t>(oled::kPageStart | page),
-                                       static_cast<uint8_t>(oled::kColumnLow | (c & 0x0F)),
-                                       static_cast<uint8_t>(oled::kColumnHigh | (c >> 4))};
-            sent = hal_.write(hal_.user, oled::kCommands, address, sizeof address);
-        } else {
-            const uint8_t address[] = {oled::kColumnRange, c, static_cast<uint8_t>(c + config_.width - 1), oled::kPageRange,
-                                       page, page};
-            sent = hal_.write(hal_.user, oled::kCommands, address, sizeof address);
-        }
-        sent = sent && hal_.write(hal_.user, oled::kData, bits, config_.width);
-        if (!sent) initialized_ = false;
-        return sent;
+        return !band_.in_frame() && send_page(page, bits);
     }
 
     /// Opens a frame of exactly the panel's size, whose rows write_rows() dithers as oled::lit() says and
-    /// sends page by page; refused (last_band_status() says why) before init, for another size or while a
-    /// frame is open.
+    /// sends page by page; refused (last_band_status() says why) while a frame is open (frame_open, whatever
+    /// the size; the open frame keeps its rows), before init or for another size.
     [[nodiscard]] bool begin_frame(uint16_t width, uint16_t height) {
+        if (band_.in_frame()) return refuse(BandStatus::frame_open);
         if (!initialized_) return refuse(BandStatus::not_ready);
         if (width != config_.width || height != config_.height) return refuse(BandStatus::bad_size);
         last_band_status_ = band_.begin_frame(width, height);
-        if (last_band_status_ != BandStatus::ok) return false;  // an open frame keeps its rows
+        if (last_band_status_ != BandStatus::ok) return false;
         frame_failed_ = false;
         for (uint8_t& b : page_) b = 0;
         return true;
@@ -233,7 +220,7 @@ public:
             const uint32_t y = uint32_t{y0} + r;
             oled::dither_row(rgb565 + size_t{r} * stride_px, width, y, static_cast<uint8_t>(1u << (y & 7u)), page_);
             if ((y & 7u) == 7u) {  // the page is complete (heights are multiples of 8)
-                if (!write_page(static_cast<uint8_t>(y >> 3), page_)) {
+                if (!send_page(static_cast<uint8_t>(y >> 3), page_)) {
                     frame_failed_ = true;
                     return refuse(BandStatus::not_ready);
                 }
@@ -243,10 +230,12 @@ public:
         return true;
     }
 
-    /// Closes the frame; false when a row is missing (incomplete) or a page never reached the panel (not_ready).
+    /// Closes the frame; false without an open frame (not_in_frame), when a page of it never reached the panel
+    /// (not_ready) or a row is missing (incomplete).
     [[nodiscard]] bool end_frame() {
+        const bool failed = frame_failed_ && band_.in_frame();
         last_band_status_ = band_.end_frame();
-        if (frame_failed_) last_band_status_ = BandStatus::not_ready;
+        if (failed) last_band_status_ = BandStatus::not_ready;
         return last_band_status_ == BandStatus::ok;
     }
 
@@ -263,6 +252,33 @@ private:
         if (!sh && config_.controller != OledController::ssd1306) return false;
         if (config_.height < 16 || config_.height > 64 || config_.height % 8 != 0) return false;
         return config_.width > 0 && uint32_t{config_.column_offset} + config_.width <= (sh ? 132u : 128u);
+    }
+
+    // write_page() without its frame check, for write_rows().
+    bool send_page(uint8_t page, const uint8_t* bits) {
+        if (!initialized_ || bits == nullptr || page >= config_.height / 8) return false;
+        const uint8_t c = first_column();
+        bool sent;
+        if (config_.controller == OledController::sh1106) {
+            const uint8_t address[] = {static_cast<uint8_t>(oled::kPageStart | page),
+                                       static_cast<uint8_t>(oled::kColumnLow | (c & 0x0F)),
+                                       static_cast<uint8_t>(oled::kColumnHigh | (c >> 4))};
+            sent = hal_.write(hal_.user, oled::kCommands, address, sizeof address);
+        } else {
+            const uint8_t address[] = {oled::kColumnRange, c, static_cast<uint8_t>(c + config_.width - 1), oled::kPageRange,
+                                       page, page};
+            sent = hal_.write(hal_.user, oled::kCommands, address, sizeof address);
+        }
+        sent = sent && hal_.write(hal_.user, oled::kData, bits, config_.width);
+        if (!sent) initialized_ = false;
+        return sent;
+    }
+
+    // The RAM column written to the glass's left edge. A1 (upright) drives segment ram - 1 - c from RAM column
+    // c, A0 (turned) segment c, so turned the glass's segments take the columns mirrored across the whole RAM.
+    uint8_t first_column() const {
+        const uint32_t ram = config_.controller == OledController::sh1106 ? 132u : 128u;
+        return static_cast<uint8_t>(config_.flip ? ram - config_.column_offset - config_.width : config_.column_offset);
     }
 
     // Zeroes every page across the controller's whole RAM width (the glass's offset columns included).

@@ -171,6 +171,71 @@ TEST_CASE("the OLED model follows hand-written datasheet sequences") {
     }
 }
 
+TEST_CASE("the OLED model takes every datasheet command with its parameters") {
+    // Each sequence ends by writing one byte at page 0, column 5 (page addressing, the reset mode): a
+    // parameter run as a command (0x00-0x0F set the column's low nibble) would move it.
+    const auto lands_at_column_5 = [](OledModel& m, const uint8_t* cmds, size_t len) {
+        const uint8_t on[] = {0xA1, 0xC8, 0xAF}, at5[] = {0xB0, 0x05, 0x10};
+        REQUIRE(m.receive(0x00, on, sizeof on));
+        REQUIRE(m.receive(0x00, at5, sizeof at5));
+        REQUIRE(m.receive(0x00, cmds, len));
+        const uint8_t one = 0x01;
+        REQUIRE(m.receive(0x40, &one, 1));
+        long lit = 0;
+        for (uint32_t x = 0; x < 128; ++x) lit += m.pixel(x, 0);
+        return lit == 1 && m.pixel(5, 0);
+    };
+    SUBCASE("SSD1306 (datasheet rev 1.1 table 9-1): scrolling, vertical scroll area and NOP") {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        const uint8_t cmds[] = {0x2E,                               // deactivate scroll
+                                0x26, 0x00, 0x01, 0x07, 0x02, 0x00, 0xFF,  // right horizontal scroll: 6 bytes
+                                0x27, 0x00, 0x00, 0x00, 0x07, 0x00, 0xFF,  // left
+                                0x29, 0x00, 0x00, 0x03, 0x07, 0x01,  // vertical and right horizontal: 5 bytes
+                                0x2A, 0x00, 0x02, 0x00, 0x05, 0x0F,  // vertical and left
+                                0xA3, 0x00, 0x08,                    // vertical scroll area: 2 bytes
+                                0x2F, 0x2E, 0xE3};                   // activate, deactivate, NOP
+        CHECK(lands_at_column_5(m, cmds, sizeof cmds));
+        CHECK(m.errors() == 0);
+    }
+    SUBCASE("SH1106 (datasheet v2.3 s.9): pump voltage 30-33 and NOP") {
+        OledModel m(OledController::sh1106, 128, 64, 0);
+        const uint8_t cmds[] = {0x30, 0x31, 0x32, 0x33, 0xE3};
+        CHECK(lands_at_column_5(m, cmds, sizeof cmds));
+        CHECK(m.errors() == 0);
+    }
+    SUBCASE("each controller refuses the other's commands") {
+        OledModel ssd(OledController::ssd1306, 128, 64, 0), sh(OledController::sh1106, 128, 64, 0);
+        for (const uint8_t c : {0x30, 0x31, 0x32, 0x33, 0xAD}) REQUIRE(ssd.receive(0x00, &c, 1));
+        CHECK(ssd.errors() == 5);
+        for (const uint8_t c : {0x26, 0x27, 0x29, 0x2A, 0x2E, 0x2F, 0xA3}) REQUIRE(sh.receive(0x00, &c, 1));
+        CHECK(sh.errors() == 7);
+    }
+    SUBCASE("SSD1306 multiplex: 16 to 64 rows (A8 0-14 are invalid), SH1106: 1 to 64") {
+        OledModel ssd(OledController::ssd1306, 128, 64, 0), sh(OledController::sh1106, 128, 64, 0);
+        for (const uint8_t n : {0x00, 0x07, 0x0E}) {
+            const uint8_t cmd[] = {0xA8, n};
+            REQUIRE(ssd.receive(0x00, cmd, sizeof cmd));
+            REQUIRE(sh.receive(0x00, cmd, sizeof cmd));
+            CHECK(int{sh.multiplex()} == n + 1);
+        }
+        CHECK(ssd.errors() == 3);
+        CHECK(int{ssd.multiplex()} == 64);  // an invalid entry leaves the ratio as it was
+        CHECK(sh.errors() == 0);
+        const uint8_t sixteen[] = {0xA8, 0x0F};
+        REQUIRE(ssd.receive(0x00, sixteen, sizeof sixteen));
+        CHECK(int{ssd.multiplex()} == 16);
+        CHECK(ssd.errors() == 3);
+    }
+    SUBCASE("an 8-row SSD1306 module does not exist (16MUX minimum); the driver refuses it too") {
+        OledModel m(OledController::ssd1306, 128, 8, 0);
+        CHECK(m.errors() == 1);
+        Oled oled(m.hal(), config(OledController::ssd1306, 128, 8, 0));
+        CHECK(!oled.init());
+        OledModel sh(OledController::sh1106, 128, 8, 0);  // SH1106 multiplex goes down to 1
+        CHECK(sh.errors() == 0);
+    }
+}
+
 TEST_CASE("the OLED driver sends the datasheets' bytes, in order") {
     {  // SSD1306 128x64: reset pulse, init, horizontal addressing, RAM cleared, display on
         Recorder r;
@@ -314,6 +379,118 @@ TEST_CASE("the OLED sink lights exactly the dithered pixels, for any band height
     CHECK(compared == 3 * 6 * (128 * 64 * 4 + 128 * 32 + 64 * 32 + 64 * 48));
 }
 
+TEST_CASE("the OLED model shows RAM columns on the glass's segments, not mirrored around the glass") {
+    // A glass on segments that are not centred in the RAM: upright (A1) RAM column c drives segment
+    // ram columns - 1 - c, turned (A0) segment c. The glass's column x is RAM column offset + x upright.
+    SUBCASE("SSD1306 96x16 at column 0: turned, its columns are RAM columns 127 down to 32") {
+        OledModel m(OledController::ssd1306, 96, 16, 0);
+        const uint8_t cmds[] = {0xA8, 0x0F, 0xDA, 0x02, 0xA0, 0xC8, 0x20, 0x00, 0x21, 32, 127, 0x22, 0, 0, 0xAF};
+        REQUIRE(m.receive(0x00, cmds, sizeof cmds));
+        uint8_t data[96] = {};
+        data[0] = 0x01;   // RAM column 32, row 0
+        data[95] = 0x02;  // RAM column 127, row 1
+        REQUIRE(m.receive(0x40, data, sizeof data));
+        CHECK(m.errors() == 0);
+        CHECK(m.pixel(95, 0));
+        CHECK(m.pixel(0, 1));
+        long lit = 0;
+        for (uint32_t y = 0; y < 16; ++y)
+            for (uint32_t x = 0; x < 96; ++x) lit += m.pixel(x, y);
+        CHECK(lit == 2);
+        const uint8_t upright = 0xA1;  // now RAM column 32 is glass column 32, and 127 is off the glass
+        REQUIRE(m.receive(0x00, &upright, 1));
+        CHECK(m.pixel(32, 0));
+        CHECK(!m.pixel(95, 0));
+        CHECK(!m.pixel(0, 1));
+    }
+    SUBCASE("SH1106 128x64 at column 0: turned, glass column 0 is RAM column 131") {
+        OledModel m(OledController::sh1106, 128, 64, 0);
+        const uint8_t cmds[] = {0xA0, 0xC8, 0xB0, 0x03, 0x18, 0xAF};
+        REQUIRE(m.receive(0x00, cmds, sizeof cmds));
+        const uint8_t one = 0x01;
+        REQUIRE(m.receive(0x40, &one, 1));
+        CHECK(m.errors() == 0);
+        CHECK(m.pixel(0, 0));
+        CHECK(!m.pixel(127, 0));
+    }
+    SUBCASE("SSD1306 64x32 at odd column 7: turned, glass column 0 is RAM column 120") {
+        OledModel m(OledController::ssd1306, 64, 32, 7, 0x12);
+        const uint8_t cmds[] = {0xA8, 0x1F, 0xDA, 0x12, 0xA0, 0xC8, 0x20, 0x00, 0x21, 120, 120, 0x22, 0, 0, 0xAF};
+        REQUIRE(m.receive(0x00, cmds, sizeof cmds));
+        const uint8_t one = 0x01;
+        REQUIRE(m.receive(0x40, &one, 1));
+        CHECK(m.errors() == 0);
+        CHECK(m.pixel(0, 0));
+        CHECK(!m.pixel(63, 0));
+    }
+}
+
+TEST_CASE("turned, the OLED driver writes the RAM columns that drive the glass's segments") {
+    // u8g2's ssd1306_96x16: default_x_offset 0, flipmode_x_offset 32.
+    const uint8_t page[132] = {};
+    struct Case {
+        OledController c;
+        uint8_t w, h, offset;
+        bool flip;
+        const char* bytes;
+    };
+    for (const Case k : {Case{OledController::ssd1306, 96, 16, 0, false, "C[21 00 5F 22 01 01] D96 "},
+                         Case{OledController::ssd1306, 96, 16, 0, true, "C[21 20 7F 22 01 01] D96 "},
+                         Case{OledController::ssd1306, 64, 32, 7, true, "C[21 39 78 22 01 01] D64 "},
+                         Case{OledController::ssd1306, 128, 64, 0, true, "C[21 00 7F 22 01 01] D128 "},
+                         Case{OledController::ssd1306, 64, 48, 32, true, "C[21 20 5F 22 01 01] D64 "},
+                         Case{OledController::sh1106, 128, 64, 2, true, "C[B1 02 10] D128 "},
+                         Case{OledController::sh1106, 128, 64, 0, false, "C[B1 00 10] D128 "},
+                         Case{OledController::sh1106, 128, 64, 0, true, "C[B1 04 10] D128 "},
+                         Case{OledController::sh1106, 96, 32, 5, true, "C[B1 0F 11] D96 "}}) {
+        Recorder r;
+        Oled oled(r.hal(), config(k.c, k.w, k.h, k.offset, k.flip));
+        REQUIRE(oled.init());
+        r.trace.clear();
+        REQUIRE(oled.write_page(1, page));
+        CHECK(r.trace == k.bytes);
+    }
+}
+
+TEST_CASE("the OLED sink lights exactly the dithered pixels on glasses not centred in the RAM, both ways up") {
+    std::mt19937 rng(0x0A1Au);
+    struct Case {
+        OledController c;
+        uint8_t w, h, offset, com;
+    };
+    long compared = 0;
+    for (const Case k : {Case{OledController::ssd1306, 96, 16, 0, 0}, Case{OledController::ssd1306, 64, 32, 0, 0x12},
+                         Case{OledController::ssd1306, 64, 32, 7, 0x12}, Case{OledController::ssd1306, 120, 48, 3, 0x12},
+                         Case{OledController::ssd1306, 127, 64, 1, 0}, Case{OledController::sh1106, 128, 64, 0, 0},
+                         Case{OledController::sh1106, 128, 64, 3, 0}, Case{OledController::sh1106, 96, 32, 5, 0},
+                         Case{OledController::sh1106, 132, 16, 0, 0}})
+        for (const bool flip : {false, true})
+            for (int trial = 0; trial < 2; ++trial) {
+                std::vector<uint16_t> frame(size_t{k.w} * k.h);
+                for (size_t i = 0; i < frame.size(); ++i) {
+                    const int x = static_cast<int>(i % k.w), y = static_cast<int>(i / k.w);
+                    frame[i] = trial == 0 ? static_cast<uint16_t>(rng())
+                                          : hider::Rgb565Format::pack({static_cast<uint8_t>(x * 2), static_cast<uint8_t>(y * 4), 0});
+                }
+                OledModel m(k.c, k.w, k.h, k.offset, k.com);
+                Oled oled(m.hal(), config(k.c, k.w, k.h, k.offset, flip, k.com));
+                REQUIRE(oled.init());
+                REQUIRE(send(oled.sink(), frame, k.w, k.h, 5));
+                CHECK(m.errors() == 0);
+                long wrong = 0;
+                for (int y = 0; y < k.h; ++y)
+                    for (int x = 0; x < k.w; ++x) {
+                        const int gx = flip ? k.w - 1 - x : x, gy = flip ? k.h - 1 - y : y;
+                        wrong += m.pixel(static_cast<uint32_t>(gx), static_cast<uint32_t>(gy)) !=
+                                 expected_lit(frame[static_cast<size_t>(y * k.w + x)], x, y);
+                        ++compared;
+                    }
+                INFO("controller " << int(k.c) << " " << int(k.w) << "x" << int(k.h) << " at " << int(k.offset) << " flip " << flip);
+                CHECK(wrong == 0);
+            }
+    CHECK(compared == 2 * 2 * (96 * 16 + 64 * 32 * 2 + 120 * 48 + 127 * 64 + 128 * 64 * 2 + 96 * 32 + 132 * 16));
+}
+
 TEST_CASE("the OLED driver stops at a refused transfer and refuses frames it cannot show") {
     const std::vector<uint16_t> white(128 * 64, 0xFFFF);
     // init: 19 transfers on the SSD1306 (sequence, addressing mode, 8 cleared pages of 2, display on), 18 on
@@ -370,4 +547,58 @@ TEST_CASE("the OLED driver stops at a refused transfer and refuses frames it can
     const uint8_t page[128] = {};
     CHECK(!oled.write_page(8, page));  // past the 8 pages
     CHECK(oled.write_page(7, page));
+}
+
+TEST_CASE("the OLED driver's frame calls keep the BandSink contract around open and failed frames") {
+    const std::vector<uint16_t> white(128 * 64, 0xFFFF);
+    const uint8_t page[128] = {};
+    SUBCASE("write_page() is refused during a frame, as send_commands() is, and sends nothing") {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        Oled oled(m.hal(), config(OledController::ssd1306, 128, 64, 0));
+        REQUIRE(oled.init());
+        REQUIRE(oled.begin_frame(128, 64));
+        REQUIRE(oled.write_rows(0, 4, white.data(), 128));
+        const uint32_t sent = m.transfers();
+        const uint8_t off = 0xAE;
+        CHECK(!oled.send_commands(&off, 1));
+        CHECK(!oled.write_page(0, page));
+        CHECK(m.transfers() == sent);
+        CHECK(oled.last_band_status() == BandStatus::ok);  // neither is a frame call
+        CHECK(oled.initialized());
+        REQUIRE(oled.write_rows(4, 60, white.data() + 4 * 128, 128));
+        REQUIRE(oled.end_frame());
+        for (uint32_t x = 0; x < 128; ++x) CHECK(m.pixel(x, 0));  // the frame's first page, not write_page()'s
+        CHECK(oled.write_page(0, page));  // after the frame
+        CHECK(!m.pixel(0, 0));
+    }
+    SUBCASE("begin_frame() during a frame says frame_open, whatever the size") {
+        OledModel m(OledController::ssd1306, 128, 64, 0);
+        Oled oled(m.hal(), config(OledController::ssd1306, 128, 64, 0));
+        REQUIRE(oled.init());
+        REQUIRE(oled.begin_frame(128, 64));
+        CHECK(!oled.begin_frame(128, 32));
+        CHECK(oled.last_band_status() == BandStatus::frame_open);
+        CHECK(!oled.begin_frame(0, 0));
+        CHECK(oled.last_band_status() == BandStatus::frame_open);
+        REQUIRE(oled.write_rows(0, 64, white.data(), 128));  // the open frame goes on
+        CHECK(oled.end_frame());
+    }
+    SUBCASE("after a failed frame, end_frame() without a frame says not_in_frame") {
+        for (const bool reinit : {false, true}) {
+            OledModel m(OledController::ssd1306, 128, 64, 0);
+            Oled oled(m.hal(19 + 2), config(OledController::ssd1306, 128, 64, 0));  // init, then one page
+            REQUIRE(oled.init());
+            REQUIRE(oled.begin_frame(128, 64));
+            CHECK(!oled.write_rows(0, 16, white.data(), 128));
+            CHECK(oled.last_band_status() == BandStatus::not_ready);
+            if (reinit) {
+                CHECK(!oled.init());  // the bus still refuses; init() closes the frame anyway
+            } else {
+                CHECK(!oled.end_frame());
+                CHECK(oled.last_band_status() == BandStatus::not_ready);
+            }
+            CHECK(!oled.end_frame());
+            CHECK(oled.last_band_status() == BandStatus::not_in_frame);
+        }
+    }
 }

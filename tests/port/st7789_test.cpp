@@ -588,16 +588,18 @@ TEST_CASE("init during an open sink frame closes the frame and starts over") {
     CHECK(sink.begin_frame(sink.user, 2, 2));
 }
 
-TEST_CASE("display headers include only stdint.h, stddef.h, limits.h and each other, and use no float or std") {
+TEST_CASE("display headers include only stdint.h, stddef.h, limits.h, each other and lib/, and use no float or std") {
     std::string dir = __FILE__;
     const size_t at = dir.rfind("tests/port/st7789_test.cpp");
     REQUIRE(at != std::string::npos);
     dir = dir.substr(0, at) + "port/display/";
+    // hider/frame.hpp is lib/'s (freestanding by lib/'s own check); the OLED model runs on the firmware too.
     const std::vector<std::string> allowed = {"#include <stdint.h>", "#include <stddef.h>", "#include <limits.h>",
-                                              "#include <display/sink.hpp>"};
+                                              "#include <display/sink.hpp>", "#include <display/ssd1306.hpp>",
+                                              "#include <hider/frame.hpp>"};
     const std::vector<std::string> banned = {"float", "double", "std", "virtual", "new", "delete", "throw", "try"};
     std::string bad;  // "file:line: text" for each offending line
-    for (const char* name : {"sink.hpp", "st7789.hpp"}) {
+    for (const char* name : {"sink.hpp", "st7789.hpp", "ssd1306.hpp", "oled_model.hpp"}) {
         const std::string path = dir + name;
         std::ifstream file(path);
         REQUIRE_MESSAGE(file.good(), path);
