@@ -114,8 +114,10 @@ constexpr DitherTables make_dither_tables() {
 }
 inline constexpr DitherTables kDither = make_dither_tables();
 
-/// Ors `bit` into pages[x] for each lit pixel x of one row of `width` RGB565 pixels at row y.
-inline void dither_row(const uint16_t* row, uint32_t width, uint32_t y, uint8_t bit, uint8_t* pages) {
+/// Ors `bit` into pages[x] for each lit pixel x of one row of `width` RGB565 pixels at row y. Out of
+/// line: inlined into Oled::write_rows(), the M0+ loop kept `pages` on the stack (4 more instructions a
+/// lit pixel) once the page transfer around it changed.
+__attribute__((noinline)) inline void dither_row(const uint16_t* row, uint32_t width, uint32_t y, uint8_t bit, uint8_t* pages) {
     const uint16_t* lit_from = kDither.lit_from[y & 7u];
     for (uint32_t x = 0; x < width; ++x) {
         const uint32_t p = row[x];
