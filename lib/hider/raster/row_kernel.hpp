@@ -61,6 +61,18 @@ static_assert(sizeof(void*) != 4 || (offsetof(KernelTriangle, top) == 56 && offs
                                      offsetof(KernelTriangle, next_left) == 94 && sizeof(KernelTriangle) == 96),
               "kernel triangle layout");
 
+/// The asm operands of the row loops' edge constants and lower short edge, by field (the Thumb-1 and RV32
+/// loops address them from the record; the Thumb-2 one from its right edge, HIDER_V7M_ROWS_OPERANDS).
+#define HIDER_ROW_LOOP_OPERANDS                                                                             \
+    [la] "i"(offsetof(RowKernel, la)), [lm] "i"(offsetof(RowKernel, lm)),                                  \
+    [lstep] "i"(offsetof(RowKernel, lstep)), [ldz] "i"(offsetof(RowKernel, ldz)),                          \
+    [ra] "i"(offsetof(RowKernel, ra)), [rm] "i"(offsetof(RowKernel, rm)),                                  \
+    [rstep] "i"(offsetof(RowKernel, rstep)), [n_left] "i"(offsetof(KernelTriangle, next_left)),            \
+    [n_x] "i"(offsetof(KernelTriangle, next_x)), [n_g] "i"(offsetof(KernelTriangle, next_g)),              \
+    [n_a] "i"(offsetof(KernelTriangle, next_a)), [n_m] "i"(offsetof(KernelTriangle, next_m)),              \
+    [n_step] "i"(offsetof(KernelTriangle, next_step)), [n_z] "i"(offsetof(KernelTriangle, next_z)),        \
+    [n_dz] "i"(offsetof(KernelTriangle, next_dz))
+
 /// The row loop in C++: `rows` >= 1 rows from depth row `zrow` of target `t`; leaves k's edges and
 /// depth on the next row and returns that row's depth pointer.
 // kernel_setup() fills the fields only for triangles with rows, which GCC cannot tie to the calls here:

@@ -9,7 +9,7 @@ namespace hider {
 /// HIDER_RV32_ROWS: the row loop of run_kernel_triangle_rv32(), shared with resume_carried_rv32()
 /// (band_resume.hpp), from the first row (label 3) through the lower short edge's switch; it ends
 /// at local label 90, which its caller defines (the state's store-back). Registers and stack words as
-/// run_kernel_triangle_rv32() says; offsets from HIDER_RV32_ROWS_OPERANDS.
+/// run_kernel_triangle_rv32() says; offsets from HIDER_ROW_LOOP_OPERANDS (row_kernel.hpp).
 #define HIDER_RV32_ROWS \
     "3:\n\t"                            /* row */                                                     \
     "bgeu   a4, a7, 5f\n\t"             /* empty span */                                              \
@@ -100,15 +100,7 @@ namespace hider {
     "bnez   a2, 3b\n"
 
 /// HIDER_RV32_ROWS's operands (its callers add their own).
-#define HIDER_RV32_ROWS_OPERANDS                                                                            \
-    [la] "i"(offsetof(RowKernel, la)), [lm] "i"(offsetof(RowKernel, lm)),                                  \
-    [lstep] "i"(offsetof(RowKernel, lstep)), [ldz] "i"(offsetof(RowKernel, ldz)),                          \
-    [ra] "i"(offsetof(RowKernel, ra)), [rm] "i"(offsetof(RowKernel, rm)),                                  \
-    [rstep] "i"(offsetof(RowKernel, rstep)), [n_left] "i"(offsetof(KernelTriangle, next_left)),            \
-    [n_x] "i"(offsetof(KernelTriangle, next_x)), [n_g] "i"(offsetof(KernelTriangle, next_g)),              \
-    [n_a] "i"(offsetof(KernelTriangle, next_a)), [n_m] "i"(offsetof(KernelTriangle, next_m)),              \
-    [n_step] "i"(offsetof(KernelTriangle, next_step)), [n_z] "i"(offsetof(KernelTriangle, next_z)),        \
-    [n_dz] "i"(offsetof(KernelTriangle, next_dz))
+#define HIDER_RV32_ROWS_OPERANDS HIDER_ROW_LOOP_OPERANDS
 
 /// RV32. In the row loop: a0 the state, a4..a7 lp lg lz rp, t0 rg, t1..t5 lm lstep ldz rm rstep, t6 dz,
 /// s0 the colour, a2 rows left in this phase, a3 the colour offset; la and ra are loaded by the

@@ -10,7 +10,7 @@ namespace hider {
 /// HIDER_V6M_ROWS: the row loop of run_kernel_triangle_v6m(), shared with resume_carried_v6m()
 /// (band_resume.hpp), from the first row (label 3) through the lower short edge's switch; it ends at
 /// local label 90, which its caller defines (the state's store-back). Registers and stack words as
-/// run_kernel_triangle_v6m() says; offsets from HIDER_V6M_ROWS_OPERANDS.
+/// run_kernel_triangle_v6m() says; offsets from HIDER_ROW_LOOP_OPERANDS (row_kernel.hpp).
 #define HIDER_V6M_ROWS \
     "3:\n\t"                            /* row */                                                     \
     "subs   r6, r1, r4\n\t"             /* lp - rp: negative, counts up to 0 */                       \
@@ -97,15 +97,7 @@ namespace hider {
     "bne    3b\n"
 
 /// HIDER_V6M_ROWS's operands (its callers add their own).
-#define HIDER_V6M_ROWS_OPERANDS                                                                            \
-    [la] "i"(offsetof(RowKernel, la)), [lm] "i"(offsetof(RowKernel, lm)),                                  \
-    [lstep] "i"(offsetof(RowKernel, lstep)), [ldz] "i"(offsetof(RowKernel, ldz)),                          \
-    [ra] "i"(offsetof(RowKernel, ra)), [rm] "i"(offsetof(RowKernel, rm)),                                  \
-    [rstep] "i"(offsetof(RowKernel, rstep)), [n_left] "i"(offsetof(KernelTriangle, next_left)),            \
-    [n_x] "i"(offsetof(KernelTriangle, next_x)), [n_g] "i"(offsetof(KernelTriangle, next_g)),              \
-    [n_a] "i"(offsetof(KernelTriangle, next_a)), [n_m] "i"(offsetof(KernelTriangle, next_m)),              \
-    [n_step] "i"(offsetof(KernelTriangle, next_step)), [n_z] "i"(offsetof(KernelTriangle, next_z)),        \
-    [n_dz] "i"(offsetof(KernelTriangle, next_dz))
+#define HIDER_V6M_ROWS_OPERANDS HIDER_ROW_LOOP_OPERANDS
 
 /// Thumb-1 (Cortex-M0/M0+: eight low registers, no conditional execution). In the row loop r0 holds
 /// the state, r1..r5 lp lg lz rp rg, r7 rows left in this phase, r12 the state again, r8 the colour
