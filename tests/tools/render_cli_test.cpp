@@ -1401,4 +1401,11 @@ TEST_CASE("Standard output that cannot be written (/dev/full) is an error, exit 
         CHECK(WEXITSTATUS(status) == 2);
         CHECK(read_file(err_file).find("hider-render: cannot write standard output") != std::string::npos);
     }
+    // The image itself through standard output: its write fails, named with the path.
+    const std::string err_file = scratch_path("full_err.txt");
+    const std::string cmd = shell_quoted(kExe) + " " + shell_quoted(model) + " -o /dev/stdout >/dev/full 2>" + shell_quoted(err_file);
+    const int status = std::system(cmd.c_str());
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 2);
+    CHECK(read_file(err_file).find("/dev/stdout: write failed: No space left on device") != std::string::npos);
 }

@@ -106,13 +106,7 @@ HIDER_NAKED inline uint32_t resume_carried_rv32(detail::CarriedSlots*, uint32_t,
         "90:\n\t"
         "lw     a1, 24(sp)\n\t"             // the depth row after the last (0: the last rows)
         "beqz   a1, 20b\n\t"
-        "sub    a4, a4, a1\n\t"             // back to offsets in that row
-        "sub    a7, a7, a1\n\t"
-        "sw     a4, 0(a0)\n\t"
-        "sw     a5, 4(a0)\n\t"
-        "sw     a6, 8(a0)\n\t"
-        "sw     a7, 12(a0)\n\t"
-        "sw     t0, 16(a0)\n\t"
+        HIDER_RV32_STORE_STATE
         "j      20b\n"
         "62:\n\t"                           // no row drawn: onward while row < end (as resume_carried())
         "bge    t0, t6, 63f\n\t"

@@ -91,21 +91,7 @@ HIDER_NAKED inline uint32_t resume_carried_v6m(detail::CarriedSlots*, uint32_t, 
         "movs   r3, #0\n\t"
         "str    r3, [sp, #8]\n"             // no state to keep
         "6:\n\t"
-        "mov    r6, r2\n\t"                 // rows before a switch: all
-        "movs   r7, #0\n\t"
-        "mvns   r7, r7\n\t"                 // rows after it: none (-1)
-        "ldrh   r5, [r0, %[mid]]\n\t"
-        "sxth   r5, r5\n\t"
-        "subs   r4, r5, r4\n\t"             // m = mid - row
-        "ble    2f\n\t"                     // on or below the middle row
-        "ldrh   r3, [r0, %[end]]\n\t"
-        "sxth   r3, r3\n\t"
-        "cmp    r5, r3\n\t"
-        "bge    2f\n\t"                     // no lower short edge
-        "cmp    r4, r2\n\t"
-        "bgt    2f\n\t"                     // the middle row lies past this call
-        "mov    r6, r4\n\t"
-        "subs   r7, r2, r4\n\t"
+        HIDER_V6M_PHASES
         "ldr    r3, [sp, #48]\n\t"
         "muls   r4, r3, r4\n\t"
         "ldr    r3, [sp, #40]\n\t"

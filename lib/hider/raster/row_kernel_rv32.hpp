@@ -99,6 +99,18 @@ namespace hider {
     "sw     a1, 16(sp)\n\t"             /* switched */                                                \
     "bnez   a2, 3b\n"
 
+/// HIDER_RV32_STORE_STATE: the row loop's edges and depth back into record a0 (lx lg lz rx rg), the edges
+/// as offsets in depth row a1 (the row after the last drawn). Shared by run_kernel_triangle_rv32() and
+/// resume_carried_rv32().
+#define HIDER_RV32_STORE_STATE \
+    "sub    a4, a4, a1\n\t"             /* back to offsets in that row */ \
+    "sub    a7, a7, a1\n\t" \
+    "sw     a4, 0(a0)\n\t" \
+    "sw     a5, 4(a0)\n\t" \
+    "sw     a6, 8(a0)\n\t" \
+    "sw     a7, 12(a0)\n\t" \
+    "sw     t0, 16(a0)\n\t"
+
 /// HIDER_RV32_ROWS's operands (its callers add their own).
 #define HIDER_RV32_ROWS_OPERANDS HIDER_ROW_LOOP_OPERANDS
 
@@ -162,13 +174,7 @@ HIDER_NAKED inline uint16_t* run_kernel_triangle_rv32(KernelTriangle*, uint16_t*
         HIDER_RV32_ROWS
         "90:\n\t"
         "lw     a1, 24(sp)\n\t"             // the depth row after the last
-        "sub    a4, a4, a1\n\t"             // back to offsets in that row
-        "sub    a7, a7, a1\n\t"
-        "sw     a4, 0(a0)\n\t"
-        "sw     a5, 4(a0)\n\t"
-        "sw     a6, 8(a0)\n\t"
-        "sw     a7, 12(a0)\n\t"
-        "sw     t0, 16(a0)\n\t"
+        HIDER_RV32_STORE_STATE
         "mv     a0, a1\n\t"
         "lw     s0, 0(sp)\n\t"
         "lw     s1, 4(sp)\n\t"

@@ -96,6 +96,28 @@ namespace hider {
     "cmp    r7, #0\n\t"                                                                               \
     "bne    3b\n"
 
+/// HIDER_V6M_PHASES: the rows of a call before and after the middle row's switch, from r0 the record,
+/// r2 the rows of the call (n > 0) and r4 its first row: r6 the rows before the switch, r7 those after it
+/// (-1: no switch in this call), r4 the rows to the middle row. It branches to local label 2 (forward)
+/// without a switch and falls through with one. Shared by run_kernel_triangle_v6m() and
+/// resume_carried_v6m(); operands [mid] and [end].
+#define HIDER_V6M_PHASES \
+    "mov    r6, r2\n\t"                 /* rows before a switch: all */ \
+    "movs   r7, #0\n\t" \
+    "mvns   r7, r7\n\t"                 /* rows after it: none (-1) */ \
+    "ldrh   r5, [r0, %[mid]]\n\t" \
+    "sxth   r5, r5\n\t" \
+    "subs   r4, r5, r4\n\t"             /* m = mid - row */ \
+    "ble    2f\n\t"                     /* on or below the middle row */ \
+    "ldrh   r3, [r0, %[end]]\n\t" \
+    "sxth   r3, r3\n\t" \
+    "cmp    r5, r3\n\t" \
+    "bge    2f\n\t"                     /* no lower short edge */ \
+    "cmp    r4, r2\n\t" \
+    "bgt    2f\n\t"                     /* the middle row lies past this call */ \
+    "mov    r6, r4\n\t" \
+    "subs   r7, r2, r4\n"
+
 /// HIDER_V6M_ROWS's operands (its callers add their own).
 #define HIDER_V6M_ROWS_OPERANDS HIDER_ROW_LOOP_OPERANDS
 
@@ -124,21 +146,7 @@ HIDER_NAKED inline uint16_t* run_kernel_triangle_v6m(KernelTriangle*, uint16_t*,
         "subs   r2, r6, r4\n\t"             // n rows
         "ble    95f\n\t"
         "strh   r6, [r0, %[row]]\n\t"       // the row after this call
-        "mov    r6, r2\n\t"                 // rows before a switch: all
-        "movs   r7, #0\n\t"
-        "mvns   r7, r7\n\t"                 // rows after it: none (-1)
-        "ldrh   r5, [r0, %[mid]]\n\t"
-        "sxth   r5, r5\n\t"
-        "subs   r4, r5, r4\n\t"             // m = mid - row
-        "ble    2f\n\t"                     // on or below the middle row
-        "ldrh   r3, [r0, %[end]]\n\t"
-        "sxth   r3, r3\n\t"
-        "cmp    r5, r3\n\t"
-        "bge    2f\n\t"                     // no lower short edge
-        "cmp    r4, r2\n\t"
-        "bgt    2f\n\t"                     // the middle row lies past this call
-        "mov    r6, r4\n\t"
-        "subs   r7, r2, r4\n"
+        HIDER_V6M_PHASES
         "2:\n\t"
         "str    r7, [sp, #4]\n\t"
         "ldr    r3, [sp, #12]\n\t"          // target
