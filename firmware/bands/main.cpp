@@ -18,10 +18,17 @@ namespace scene = hider::scenes::city_street_160x128;
 #else
 namespace scene = hider::scenes::torus_160x128;
 #endif
-// 6-row bands leave the 16 KB room for more carried slots than this frame holds at any band boundary;
-// 8-row bands left too few, and a continuation without a slot is set up again, which costs more than
-// the extra bands (README.md, "Bands").
-using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, 6, 44>;
+// 832 band pixels hold 8 rows of the torus's 104-column window (5 of the full width, should a frame need
+// it) and leave the 16 KB room for 49 carried slots: a continuation without a slot is set up again, which
+// costs more than a row (README.md, "Bands"; bands_p* on the big machine: other choices).
+#ifndef BANDS_SLOTS
+#define BANDS_SLOTS 49
+#endif
+#ifndef BANDS_PIXELS
+#define BANDS_PIXELS 832
+#endif
+using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount,
+                           BANDS_PIXELS / scene::kWidth, BANDS_SLOTS, BANDS_PIXELS>;
 Sizes::Storage g;
 // The scene and the buffer spans are constants: in flash, not on the stack (hider-stack's bound).
 constexpr spin::Scene kScene{scene::kCamera, scene::kWidth, scene::kHeight, scene::mesh()};

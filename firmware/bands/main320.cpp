@@ -9,18 +9,19 @@
 
 namespace {
 
-// Band height and carried slots (3 and 43 fill the 16 KB; hider-bench builds taller bands on the big
-// machine for README.md's table of band height against RAM and cost).
-#ifndef BANDS320_ROWS
-#define BANDS320_ROWS 3
+// Band memory and carried slots: 970 pixels hold 5 rows of the torus's 194-column window (3 of the full
+// width, should a frame need it) and, with 43 slots, fill the 16 KB; hider-bench builds other heights on
+// the big machine for README.md's table of band height against RAM and cost.
+#ifndef BANDS320_PIXELS
+#define BANDS320_PIXELS 970
 #endif
 #ifndef BANDS320_SLOTS
 #define BANDS320_SLOTS 43
 #endif
 
 namespace scene = hider::scenes::torus_320x240;
-using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount, BANDS320_ROWS,
-                           BANDS320_SLOTS>;
+using Sizes = bands::Sizes<scene::kWidth, scene::kHeight, scene::kVertexCount, scene::kTriangleCount,
+                           BANDS320_PIXELS / scene::kWidth, BANDS320_SLOTS, BANDS320_PIXELS>;
 Sizes::Storage g;
 // The scene and the buffer spans are constants: in flash, not on the stack (hider-stack's bound).
 constexpr spin::Scene kScene{scene::kCamera, scene::kWidth, scene::kHeight, scene::mesh()};

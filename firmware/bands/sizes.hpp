@@ -6,17 +6,19 @@
 
 namespace bands {
 
-/// Sizes of a W x H scene of V vertices and T triangles drawn in bands of `Rows` rows with `Carried`
+/// Sizes of a W x H scene of V vertices and T triangles drawn in bands of `Rows` rows of the full width
+/// (more of a column window: render_in_bands()) in a band memory of `Pixels` pixels, with `Carried`
 /// carried set-ups.
-template <int32_t W, int32_t H, size_t V, size_t T, int32_t Rows, size_t Carried>
+template <int32_t W, int32_t H, size_t V, size_t T, int32_t Rows, size_t Carried, size_t Pixels = size_t{W} * Rows>
 struct Sizes {
+    static_assert(Pixels >= size_t{W} * Rows, "the band memory holds Rows rows of the full width");
     static constexpr size_t kBands = static_cast<size_t>((H + Rows - 1) / Rows);
-    static constexpr size_t kPpmChunk = 16;  ///< pixels converted to RGB888 at a time for the PPM sink
+    static constexpr size_t kPpmChunk = 8;  ///< pixels converted to RGB888 at a time for the PPM sink
 
     struct Storage {
         hider::ScreenVertex verts[V];
-        uint16_t color[W * Rows];
-        uint16_t depth[W * Rows];
+        uint16_t color[Pixels];
+        uint16_t depth[Pixels];
         uint16_t next[T];
         uint16_t head[kBands];
         hider::KernelTriangle carried[Carried];

@@ -23,8 +23,11 @@ public:
     PpmSink(Output& out, hider::Span<uint8_t> chunk_rgb, uint16_t max_width)
         : out_(out), row_(chunk_rgb), checker_(max_width) {}
 
-    /// The sink to hand to a renderer; valid while this object lives.
-    hider::port::BandSink sink() { return {this, &begin_thunk, &write_thunk, &end_thunk}; }
+    /// The sink to hand to a renderer; valid while this object lives. `windows` false leaves out
+    /// BandSink::write_columns (a sink of full-width rows only).
+    hider::port::BandSink sink(bool windows = true) {
+        return {this, &begin_thunk, &write_thunk, &end_thunk, windows ? &columns_thunk : nullptr};
+    }
 
     /// First refusal seen (ok if none): a contract breach from the checker, or not_ready when the
     /// output refused bytes.
@@ -37,6 +40,10 @@ private:
         return self(user).rows(y0, rows, rgb565, stride_px);
     }
     static bool end_thunk(void* user) { return self(user).end(); }
+    static bool columns_thunk(void* user, uint16_t y0, uint16_t rows, uint16_t x0, uint16_t width, uint16_t fill,
+                              const uint16_t* rgb565, uint32_t stride_px) {
+        return self(user).columns(y0, rows, x0, width, fill, rgb565, stride_px);
+    }
 
     bool refuse(hider::port::BandStatus s) {
         if (status_ == hider::port::BandStatus::ok) status_ = s;
@@ -59,16 +66,30 @@ private:
     bool rows(uint16_t y0, uint16_t count, const uint16_t* rgb565, uint32_t stride_px) {
         const hider::port::BandStatus s = checker_.write_rows(y0, count, rgb565, stride_px);
         if (s != hider::port::BandStatus::ok) return refuse(s);
-        const uint16_t width = checker_.width();
-        const uint16_t chunk = static_cast<uint16_t>(hider::min<size_t>(row_.size() / 3, width));
+        return emit(count, 0, checker_.width(), 0, rgb565, stride_px);
+    }
+
+    bool columns(uint16_t y0, uint16_t count, uint16_t x0, uint16_t width, uint16_t fill, const uint16_t* rgb565,
+                 uint32_t stride_px) {
+        const hider::port::BandStatus s = checker_.write_columns(y0, count, x0, width, rgb565, stride_px);
+        if (s != hider::port::BandStatus::ok) return refuse(s);
+        return emit(count, x0, width, fill, rgb565, stride_px);
+    }
+
+    /// Writes `count` full rows: columns [x0, x0 + width) from rgb565 (row r at r * stride_px), `fill`
+    /// elsewhere; in chunks of the caller's buffer.
+    bool emit(uint16_t count, uint16_t x0, uint16_t width, uint16_t fill, const uint16_t* rgb565, uint32_t stride_px) {
+        const uint16_t frame_width = checker_.width();
+        const uint16_t chunk = static_cast<uint16_t>(hider::min<size_t>(row_.size() / 3, frame_width));
         if (chunk == 0) return refuse(hider::port::BandStatus::too_large);
+        const uint32_t x1 = uint32_t{x0} + width;
         for (uint16_t r = 0; r < count; ++r) {
             const uint16_t* src = rgb565 + size_t{r} * stride_px;
-            for (uint16_t x0 = 0; x0 < width; x0 = static_cast<uint16_t>(x0 + chunk)) {
-                const uint16_t n = hider::min<uint16_t>(chunk, static_cast<uint16_t>(width - x0));
+            for (uint16_t at = 0; at < frame_width; at = static_cast<uint16_t>(at + chunk)) {
+                const uint16_t n = hider::min<uint16_t>(chunk, static_cast<uint16_t>(frame_width - at));
                 uint8_t* dst = row_.data();
-                for (uint16_t x = x0; x < x0 + n; ++x, dst += 3) {
-                    const hider::Rgb c = hider::Rgb565Format::unpack(src[x]);
+                for (uint16_t x = at; x < at + n; ++x, dst += 3) {
+                    const hider::Rgb c = hider::Rgb565Format::unpack(x >= x0 && x < x1 ? src[x - x0] : fill);
                     dst[0] = c.r;
                     dst[1] = c.g;
                     dst[2] = c.b;

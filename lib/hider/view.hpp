@@ -219,4 +219,62 @@ __attribute__((always_inline)) inline ScreenVertex project(const View& v, const 
 /// project() for a point whose products are not at hand.
 inline ScreenVertex project(const View& v, const ViewPoint& p) { return project(v, p, scaled_xy(v, p)); }
 
+/// Columns [x0, x0 + width) of a frame, centred in it: x0 columns left out on either side.
+struct ColumnWindow {
+    int32_t x0 = 0;
+    int32_t width = 0;
+};
+
+/// The narrowest centred window of a `frame_width`-wide frame outside which the triangles over `verts`
+/// (projected vertices) cover no pixel, so a frame drawn from them is background there: a triangle covers
+/// only pixels whose centres lie inside it, so within the vertices' largest |x|, and the window's first
+/// and last column centres lie at or beyond that on either side (so each triangle meets the same set-up
+/// path as in the whole frame). The whole width when a vertex is outside a clip plane (clipping makes new
+/// vertices anywhere), when one reaches past a side, or for no vertices. Centred because screen
+/// coordinates count from the frame's centre: window_view() draws exactly these columns with every
+/// set-up and the vertex cache unchanged (an object off centre gets a wider window than its extent).
+/// Out of line: one tight loop a frame.
+__attribute__((noinline)) inline ColumnWindow centred_window(Span<const ScreenVertex> verts, int32_t frame_width) {
+    const ColumnWindow whole{0, frame_width};
+    if (verts.empty() || frame_width < 1) return whole;
+    uint32_t far = 0;  // the largest |x|, less 1 where x < 0 (x ^ (x >> 31): one instruction)
+    auto reach_of = [&far](const ScreenVertex& v) __attribute__((always_inline)) {
+        const int32_t x = v.x;
+        const uint32_t a = static_cast<uint32_t>(x ^ (x >> 31));
+        if (a > far) far = a;
+    };
+    // Four a turn; the z tests written as the loop's condition, each a forward branch out (as all_projected()).
+    const ScreenVertex* v = verts.begin();
+    const ScreenVertex* const block_end = v + (verts.size() & ~size_t{3});
+    while (v != block_end && v[0].z != 0 && v[1].z != 0 && v[2].z != 0 && v[3].z != 0) {
+        reach_of(v[0]);
+        reach_of(v[1]);
+        reach_of(v[2]);
+        reach_of(v[3]);
+        v += 4;
+    }
+    if (v != block_end) return whole;
+    for (const ScreenVertex* const end = verts.end(); v != end; ++v) {
+        if (v->z == 0) return whole;
+        reach_of(*v);
+    }
+    const int32_t reach = static_cast<int32_t>(far) + 1;  // >= |x| of every vertex (at most 2^15)
+    const int32_t origin = pixel_centre_origin(frame_width);
+    const int32_t left = (-reach - origin) >> kSubpixelBits;                                      // centre <= -reach
+    const int32_t right = frame_width - 1 - ((reach - origin + kSubpixel - 1) >> kSubpixelBits);  // centre >= reach
+    const int32_t margin = min(left, right);
+    return margin > 0 ? ColumnWindow{margin, frame_width - 2 * margin} : whole;
+}
+
+/// `view` narrowed to the centred window `w` of its frame: a draw call given `out` and a frame of
+/// w.width columns draws the frame's columns [w.x0, w.x0 + w.width), the same bytes as the whole frame
+/// has there. The projection does not depend on the width: vertices projected with either view serve.
+/// Errors: invalid_argument for a window that is not centred in view's frame (2 x0 + width != width).
+inline Status window_view(const View& view, const ColumnWindow& w, View& out) {
+    if (w.x0 < 0 || w.width < 1 || int64_t{w.x0} * 2 + w.width != view.width) return Status::invalid_argument;
+    out = view;
+    out.width = w.width;
+    return Status::ok;
+}
+
 }  // namespace hider

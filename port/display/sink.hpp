@@ -13,11 +13,16 @@ namespace hider::port {
 // refused begin_frame the frame never opened, after a refused write_rows the caller still calls end_frame so
 // the sink can release its device. `rgb565` is borrowed for the call only; row r of the band starts at
 // rgb565 + r * stride_px. Plain function pointers plus a `user` context keep the struct usable from C.
+// write_columns is optional (null: the sink takes full-width rows only): a band of which only the columns
+// [x0, x0 + width) are in memory, every other pixel of its rows being `fill` (a renderer's column window,
+// <hider/view.hpp>'s centred_window(): the background outside it); it may stand for write_rows in any band.
 struct BandSink {
     void* user;
     bool (*begin_frame)(void* user, uint16_t width, uint16_t height);
     bool (*write_rows)(void* user, uint16_t y0, uint16_t rows, const uint16_t* rgb565, uint32_t stride_px);
     bool (*end_frame)(void* user);
+    bool (*write_columns)(void* user, uint16_t y0, uint16_t rows, uint16_t x0, uint16_t width, uint16_t fill,
+                          const uint16_t* rgb565, uint32_t stride_px) = nullptr;
 };
 
 /// Whether all three callbacks of `sink` are set.
@@ -62,12 +67,16 @@ public:
     /// Accepts rows [y0, y0 + rows) only if they continue the frame exactly where the previous band ended.
     BandStatus write_rows(uint16_t y0, uint16_t rows, const uint16_t* rgb565, uint32_t stride_px) {
         if (!in_frame_) return BandStatus::not_in_frame;
-        if (rows == 0) return BandStatus::bad_size;
-        if (y0 != next_row_) return BandStatus::out_of_order;
-        if (uint32_t{y0} + rows > height_) return BandStatus::past_end;
-        if (rgb565 == nullptr || stride_px < width_) return BandStatus::bad_pixels;
-        next_row_ = static_cast<uint16_t>(y0 + rows);
-        return BandStatus::ok;
+        return accept(y0, rows, rgb565, stride_px, width_);
+    }
+
+    /// write_rows() for a band of which columns [x0, x0 + width) are in memory (BandSink::write_columns):
+    /// also refuses an empty window or one past the frame's right side (bad_size), and stride_px < width.
+    BandStatus write_columns(uint16_t y0, uint16_t rows, uint16_t x0, uint16_t width, const uint16_t* rgb565,
+                             uint32_t stride_px) {
+        if (!in_frame_) return BandStatus::not_in_frame;
+        if (width == 0 || uint32_t{x0} + width > width_) return BandStatus::bad_size;
+        return accept(y0, rows, rgb565, stride_px, width);
     }
 
     /// Closes the frame and reports whether every row arrived.
@@ -87,6 +96,16 @@ public:
     uint16_t next_row() const { return next_row_; }
 
 private:
+    /// The band checks of write_rows() and write_columns(), rows `width` pixels wide in memory.
+    BandStatus accept(uint16_t y0, uint16_t rows, const uint16_t* rgb565, uint32_t stride_px, uint16_t width) {
+        if (rows == 0) return BandStatus::bad_size;
+        if (y0 != next_row_) return BandStatus::out_of_order;
+        if (uint32_t{y0} + rows > height_) return BandStatus::past_end;
+        if (rgb565 == nullptr || stride_px < width) return BandStatus::bad_pixels;
+        next_row_ = static_cast<uint16_t>(y0 + rows);
+        return BandStatus::ok;
+    }
+
     uint16_t max_width_;
     uint16_t max_height_;
     uint16_t width_ = 0;

@@ -1,8 +1,9 @@
 // libFuzzer target (clang, ASan, UBSan): arbitrary bytes as an OBJ file through parse_obj() (small
 // limits), build_scene() (the framing camera, culled; an eye inside the model's box, not culled) and every
-// algorithm at 24x17, whole and in 3-row bands. Fails on a crash or sanitizer report, a failure without a
-// reason, bands whose bytes differ from the whole frame's, or a pixel written twice by the reverse
-// painter or bsp-front. Run by ctest (obj_render_fuzz, host-asan preset) for a bounded time.
+// algorithm at 24x17, whole and in 3-row bands (the z-buffer also through its centred column window). Fails
+// on a crash or sanitizer report, a failure without a reason, bands or a window whose bytes or counts differ
+// from the whole frame's, or a pixel written twice by the reverse painter or bsp-front. Run by ctest
+// (obj_render_fuzz, host-asan preset) for a bounded time.
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -56,6 +57,19 @@ void exercise(const Scene& scene, bool cull) {
         const size_t bytes = static_cast<size_t>(scene.width) * scene.height * 3;
         if (whole.rgb.size() != bytes || banded.rgb.size() != bytes) fail("frame of the wrong size", name_of(algo), 0);
         if (whole.rgb != banded.rgb) fail("bands differ from the whole frame", name_of(algo), 3);
+        if (algo == Algo::zbuffer) {  // its centred column window, whole and in bands: the same bytes and counts
+            for (int rows : {0, 3}) {
+                opt.band_rows = rows;
+                opt.window = true;
+                RenderResult windowed;
+                std::string why_windowed;
+                if (!render(scene, opt, windowed, why_windowed)) fail("the window failed where the frame did not", name_of(algo), rows);
+                if (windowed.rgb != whole.rgb) fail("the window differs from the whole frame", name_of(algo), rows);
+                if (windowed.stats.triangles_drawn != whole.stats.triangles_drawn ||
+                    windowed.stats.fragments != whole.stats.fragments || windowed.pixels_covered != whole.pixels_covered)
+                    fail("the window's counts differ from the whole frame's", name_of(algo), rows);
+            }
+        }
         if ((algo == Algo::reverse || algo == Algo::bsp_front) && whole.stats.status == Status::ok &&
             whole.stats.pixels_written != whole.pixels_covered)
             fail("a pixel written twice", name_of(algo), 0);

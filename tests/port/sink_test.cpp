@@ -132,6 +132,36 @@ TEST_CASE("BandSequenceChecker rejects a null pixel pointer and a stride narrowe
     CHECK(checker.next_row() == 0);
 }
 
+TEST_CASE("BandSequenceChecker takes windowed bands (write_columns) mixed with full rows, and refuses bad windows") {
+    BandSequenceChecker checker;
+    REQUIRE(checker.begin_frame(8, 10) == BandStatus::ok);
+    CHECK(checker.write_columns(0, 3, 2, 4, kPixels, 4) == BandStatus::ok);  // columns 2..5 of rows 0..2
+    CHECK(checker.write_rows(3, 2, kPixels, 8) == BandStatus::ok);
+    // Refused, leaving the place at row 5: an empty window, one past the right side, a stride narrower
+    // than the window, no pixels, no rows, out of order, past the bottom, outside a frame.
+    CHECK(checker.write_columns(5, 2, 2, 0, kPixels, 4) == BandStatus::bad_size);
+    CHECK(checker.write_columns(5, 2, 5, 4, kPixels, 4) == BandStatus::bad_size);
+    CHECK(checker.write_columns(5, 2, UINT16_MAX, 2, kPixels, 4) == BandStatus::bad_size);
+    CHECK(checker.write_columns(5, 2, 2, 4, kPixels, 3) == BandStatus::bad_pixels);
+    CHECK(checker.write_columns(5, 2, 2, 4, nullptr, 4) == BandStatus::bad_pixels);
+    CHECK(checker.write_columns(5, 0, 2, 4, kPixels, 4) == BandStatus::bad_size);
+    CHECK(checker.write_columns(6, 2, 2, 4, kPixels, 4) == BandStatus::out_of_order);
+    CHECK(checker.write_columns(5, 6, 2, 4, kPixels, 4) == BandStatus::past_end);
+    CHECK(checker.next_row() == 5);
+    CHECK(checker.write_columns(5, 5, 0, 8, kPixels, 8) == BandStatus::ok);  // the whole width as a window
+    CHECK(checker.end_frame() == BandStatus::ok);
+    CHECK(checker.write_columns(0, 1, 0, 1, kPixels, 1) == BandStatus::not_in_frame);
+}
+
+TEST_CASE("BandSink::write_columns is optional: a sink built without it has none, and is still complete") {
+    BandSink s{nullptr, [](void*, uint16_t, uint16_t) { return true; },
+               [](void*, uint16_t, uint16_t, const uint16_t*, uint32_t) { return true; }, [](void*) { return true; }};
+    CHECK((s.write_columns == nullptr));
+    CHECK(hider::port::is_complete(s));
+    BandSink d;
+    CHECK((d.write_columns == nullptr));
+}
+
 TEST_CASE("BandSequenceChecker reports an incomplete frame at end_frame and then takes the next frame") {
     BandSequenceChecker checker;
     REQUIRE(checker.begin_frame(8, 10) == BandStatus::ok);

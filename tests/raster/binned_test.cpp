@@ -14,6 +14,8 @@
 
 #include "support/assert_trap.hpp"
 #include "support/hand_made.hpp"
+#include "support/projected.hpp"
+#include "support/soup.hpp"
 #include "support/scene_util.hpp"
 
 using namespace hider;
@@ -27,22 +29,8 @@ bool same_bytes(const std::vector<Pixel>& a, const std::vector<Pixel>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Pixel)) == 0;
 }
 
-struct Projected {
-    View view;
-    std::vector<ScreenVertex> verts;
-    DrawOptions opt;
-};
-
-Projected project(const tool::Scene& s, bool cull, Shade shade) {
-    Projected p;
-    REQUIRE(make_view(s.camera, s.width, s.height, p.view) == Status::ok);
-    const Mesh mesh = s.mesh();
-    p.verts.resize(mesh.positions.size());
-    p.opt.cull = cull;
-    p.opt.shade = shade;
-    REQUIRE(project_vertices(p.view, mesh.positions, {p.verts.data(), p.verts.size()}, &p.opt.depth_range) == Status::ok);
-    return p;
-}
+using test::Projected;
+using test::project;
 
 template <class Format, class Depth>
 std::vector<typename Format::Pixel> whole_frame(const tool::Scene& s, const Projected& p, FrameStats& st) {
@@ -309,26 +297,12 @@ TEST_CASE("binned bands give the whole frame's bytes and counts on random soups 
     // below the band of their triangle's list: the whole frame counts each as drawn, so the bands must
     // carry the triangle on to the band of that piece's first row (found by the adversarial hunt: 9 of
     // 3,000 random scenes were short by 1 or 2 drawn triangles).
-    uint64_t state = 0x2545F4914F6CDD1Dull;
-    auto next = [&state] {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        return state;
-    };
-    auto uniform = [&next](double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) / 9007199254740992.0; };
+    test::Xorshift64 rng{0x2545F4914F6CDD1Dull};
+    auto next = [&rng] { return rng.next(); };
+    auto uniform = [&rng](double lo, double hi) { return rng.uniform(lo, hi); };
     long clipped = 0, set_up_again = 0;
     for (int seed = 0; seed < 4000; ++seed) {
-        tool::ObjModel m;
-        const int verts = 3 + static_cast<int>(next() % 40), faces = 1 + static_cast<int>(next() % 40);
-        for (int i = 0; i < verts; ++i) m.vertices.push_back({uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)});
-        for (int f = 0; f < faces; ++f) {
-            tool::ObjFace face;
-            for (int k = 0; k < 3; ++k) face.v.push_back(static_cast<int32_t>(next() % static_cast<uint64_t>(verts)));
-            face.id = static_cast<uint32_t>(f + 1);
-            face.line = f + 1;
-            m.faces.push_back(face);
-        }
+        const tool::ObjModel m = test::random_soup(rng, 40, 40);
         tool::CameraArgs cam;
         const auto& on = m.vertices[0];
         cam.eye = next() % 4 == 0 ? tool::Vec3d{on[0], on[1], on[2]} : tool::Vec3d{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};

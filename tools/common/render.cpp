@@ -198,13 +198,25 @@ bool render_with(const Scene& scene, const RenderOptions& opt, RenderResult& out
     out.pixels_covered = 0;
     if (opt.algo != Algo::zbuffer) return render_sorted<Format, Depth>(scene, opt, view, mesh, verts, draw, out);
     const int rows = opt.band_rows > 0 ? opt.band_rows : scene.height;
-    std::vector<typename Format::Pixel> color(static_cast<size_t>(scene.width) * rows);
-    std::vector<Depth> depth(static_cast<size_t>(scene.width) * rows);
+    // With opt.window, bands of the frame's centred column window through the narrowed view, copied into
+    // full-width rows of the background.
+    ColumnWindow window{0, scene.width};
+    View drawn = view;
+    if (opt.window) {
+        window = centred_window({verts.data(), verts.size()}, scene.width);
+        if (window_view(view, window, drawn) != Status::ok) {
+            error = "internal: centred_window() gave a window window_view() refuses";
+            return false;
+        }
+    }
+    std::vector<typename Format::Pixel> color(static_cast<size_t>(window.width) * rows), full_color;
+    std::vector<Depth> depth(color.size());
+    if (window.width != scene.width) full_color.resize(static_cast<size_t>(scene.width) * rows);
     for (int y0 = 0; y0 < scene.height; y0 += rows) {
         const int y1 = std::min(scene.height, y0 + rows);
-        const auto band = band_view<Format, Depth>(color.data(), depth.data(), scene.width, scene.height, y0, y1);
+        const auto band = band_view<Format, Depth>(color.data(), depth.data(), window.width, scene.height, y0, y1);
         clear(band, opt.background);
-        const FrameStats st = draw_zbuffer<true>(view, mesh, {verts.data(), verts.size()}, band, draw);
+        const FrameStats st = draw_zbuffer<true>(drawn, mesh, {verts.data(), verts.size()}, band, draw);
         if (y0 == 0) {
             out.stats = st;
         } else {  // per-triangle counts (in, clipped, outside) repeat in every band; the rest add up
@@ -217,8 +229,15 @@ bool render_with(const Scene& scene, const RenderOptions& opt, RenderResult& out
             out.stats.merge(add);
         }
         for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < scene.width; ++x) out.pixels_covered += band.depth_row(y)[x] != DepthTraits<Depth>::kClear;
-        port::append_rgb888(band, out.rgb);
+            for (int x = 0; x < window.width; ++x) out.pixels_covered += band.depth_row(y)[x] != DepthTraits<Depth>::kClear;
+        if (window.width == scene.width) {
+            port::append_rgb888(band, out.rgb);
+            continue;
+        }
+        const auto full = band_view<Format, Depth>(full_color.data(), nullptr, scene.width, scene.height, y0, y1);
+        clear(full, opt.background);
+        for (int y = y0; y < y1; ++y) std::copy(band.row(y), band.row(y) + window.width, full.row(y) + window.x0);
+        port::append_rgb888(full, out.rgb);
     }
     // draw_zbuffer counts the triangles (or clipped pieces) it sets up and culls, not those of zero area
     // or with no pixel centre: the buckets come from build_polys, which puts each mesh triangle in exactly

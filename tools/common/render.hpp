@@ -34,6 +34,7 @@ struct RenderOptions {
     bool cull = true;
     int depth_bits = 16;  ///< 16 or 32
     int band_rows = 0;    ///< 0 = whole frame at once
+    bool window = false;  ///< zbuffer: draw only the frame's centred column window (centred_window()), background outside
     PixelFormat format = PixelFormat::rgb565;
     Rgb background{0, 0, 0};
     Rgb base{255, 255, 255};

@@ -1,21 +1,24 @@
 // Host side of the band renderer's buffers (what a band firmware declares statically), for the host
 // twins of the band firmware (bands_reference.cpp, oled_reference.cpp).
 #pragma once
+#include <algorithm>
 #include <vector>
 
 #include "bands/bands.hpp"
 
 namespace host {
 
-/// Band renderer memory for `rows` rows and `carried_slots` carried slots.
+/// Band renderer memory for `rows` rows of the full width (`pixels`, if more, for a column window) and
+/// `carried_slots` carried slots.
 struct BandMemory {
     std::vector<hider::ScreenVertex> verts;
     std::vector<uint16_t> color, depth, next, head;
     std::vector<hider::KernelTriangle> carried;
     std::vector<uint8_t> slots;
     int32_t rows;
-    BandMemory(const spin::Scene& s, int32_t band_rows, size_t carried_slots)
-        : verts(s.mesh.positions.size()), color(static_cast<size_t>(s.width) * band_rows), depth(color.size()),
+    BandMemory(const spin::Scene& s, int32_t band_rows, size_t carried_slots, size_t pixels = 0)
+        : verts(s.mesh.positions.size()),
+          color(std::max(static_cast<size_t>(s.width) * static_cast<size_t>(band_rows), pixels)), depth(color.size()),
           next(s.mesh.tris.size()), head(static_cast<size_t>((s.height + band_rows - 1) / band_rows)),
           carried(carried_slots), slots(3 * carried_slots), rows(band_rows) {}
     bands::BandBuffers buffers() {

@@ -45,7 +45,7 @@ std::vector<uint8_t> full_frame_ppm(const spin::Scene& s) {
     return io.bytes;
 }
 
-int run(const spin::Scene& s, const char* path, int32_t rows, size_t carried) {
+int run(const spin::Scene& s, const char* path, int32_t rows, size_t carried, size_t pixels) {
     const std::vector<uint8_t> full = full_frame_ppm(s);
     if (full.empty()) {
         std::fputs("bands_reference: full-frame render failed\n", stderr);
@@ -53,16 +53,19 @@ int run(const spin::Scene& s, const char* path, int32_t rows, size_t carried) {
     }
     uint8_t chunk[3 * 32];
     for (int32_t r : {1, 3, 7, 8, 13, s.height})
-        for (size_t slots : {size_t{0}, size_t{5}, size_t{64}}) {
-            Memory m(s, r, slots);
-            MemoryIo io;
-            if (bands::run(io, s, m.buffers(), chunk, path) != 0 || io.bytes != full) {
-                std::fprintf(stderr, "bands_reference: bands of %d rows with %d slots differ from the full frame\n",
-                             static_cast<int>(r), static_cast<int>(slots));
-                return 1;
+        for (size_t slots : {size_t{0}, size_t{5}, size_t{64}})
+            for (bool window : {true, false}) {
+                Memory m(s, r, slots);
+                MemoryIo io;
+                const int status = window ? bands::run<true>(io, s, m.buffers(), chunk, path)
+                                          : bands::run<false>(io, s, m.buffers(), chunk, path);
+                if (status != 0 || io.bytes != full) {
+                    std::fprintf(stderr, "bands_reference: bands of %d rows with %d slots%s differ from the full frame\n",
+                                 static_cast<int>(r), static_cast<int>(slots), window ? " in a window" : "");
+                    return 1;
+                }
             }
-        }
-    Memory m(s, rows, carried);
+    Memory m(s, rows, carried, pixels);
     spin::StdioIo io;
     return bands::run(io, s, m.buffers(), chunk, path);
 }
@@ -72,15 +75,15 @@ int run(const spin::Scene& s, const char* path, int32_t rows, size_t carried) {
 int main(int argc, char** argv) {
     if (argc == 2 && std::strcmp(argv[1], "160") == 0) {
         namespace sc = hider::scenes::torus_160x128;
-        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands.ppm", 6, 44);  // as firmware/bands/main.cpp
+        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands.ppm", 5, 49, 832);  // as firmware/bands/main.cpp
     }
     if (argc == 2 && std::strcmp(argv[1], "320") == 0) {
         namespace sc = hider::scenes::torus_320x240;
-        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands320.ppm", 3, 43);
+        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands320.ppm", 3, 43, 970);  // as main320.cpp
     }
     if (argc == 2 && std::strcmp(argv[1], "city") == 0) {
         namespace sc = hider::scenes::city_street_160x128;
-        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands.ppm", 6, 44);  // as bands_city
+        return run({sc::kCamera, sc::kWidth, sc::kHeight, sc::mesh()}, "bands.ppm", 5, 49, 832);  // as bands_city
     }
     std::fputs("usage: bands_reference 160|320|city\n", stderr);
     return 2;

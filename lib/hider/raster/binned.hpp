@@ -58,6 +58,17 @@ __attribute__((noinline)) void draw_bands_generic(const View& view, const Mesh& 
     }
 }
 
+/// The bands of draw_zbuffer_binned() for flat RGB565 over 16-bit depth (KernelBands). Out of line:
+/// the class's state stays off the frame under draw_bands_generic(), the other way a frame goes.
+template <bool kAsmLoop, class BandDone>
+__attribute__((noinline)) bool draw_kernel_bands(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts,
+                                                 const FrameView<Rgb565Format, uint16_t>& buffers, const DrawOptions& opt,
+                                                 Rgb background, const BinnedScratch& scratch, BandDone& done,
+                                                 BinnedStats& out, FrameStats& st, uint32_t projected) {
+    KernelBands<kAsmLoop> kb(view, mesh, verts, buffers, opt, scratch, out, st, projected);
+    return kb.draw(buffers.y1, buffers.height, background, done);
+}
+
 /// draw_zbuffer_binned(); kAsmLoop false keeps the assembly band and binning loops out (kernelcheck
 /// compares both).
 template <bool kAsmLoop, class Format, class Depth, class BandDone>
@@ -85,8 +96,8 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
     BinnedStats& out = bs != nullptr ? *bs : local;
     if constexpr (is_same_type<Format, Rgb565Format>::value && sizeof(Depth) == 2) {
         if (opt.shade != Shade::depth) {
-            KernelBands<kAsmLoop> kb(view, mesh, verts, buffers, opt, scratch, out, st, projected);
-            if (!kb.draw(rows, height, background, done)) st.status = Status::invalid_argument;
+            if (!draw_kernel_bands<kAsmLoop>(view, mesh, verts, buffers, opt, background, scratch, done, out, st, projected))
+                st.status = Status::invalid_argument;
             return st;
         }
     }
