@@ -154,14 +154,7 @@ public:
     /// Streams `count` copies of one RGB565 colour into the open window, with the same refusals as write_pixels.
     [[nodiscard]] bool fill_pixels(uint16_t rgb565, size_t count) {
         if (!writing_ || band_.in_frame() || count > window_left_) return false;
-        const size_t chunk_px = tft::kChunkBytes / 2;
-        for (size_t i = 0; i < chunk_px; ++i) put_pixel(i, rgb565);
-        window_left_ -= static_cast<uint32_t>(count);
-        while (count > 0) {
-            const size_t n = count < chunk_px ? count : chunk_px;
-            hal_.spi_write(hal_.user, chunk_, n * 2);
-            count -= n;
-        }
+        stream_fill(rgb565, count);
         return true;
     }
 
@@ -178,7 +171,9 @@ public:
 
     /// A BandSink that draws frames at the panel's top-left; it borrows this object, which must stay at one
     /// address and outlive the sink. begin_frame refuses frames larger than the panel or before init.
-    BandSink sink() { return BandSink{this, &sink_begin_frame, &sink_write_rows, &sink_end_frame}; }
+    /// Bands of a column window (BandSink::write_columns) go out as whole rows, the columns outside it as
+    /// the band's fill colour.
+    BandSink sink() { return BandSink{this, &sink_begin_frame, &sink_write_rows, &sink_end_frame, &sink_write_columns}; }
     /// Why the sink last refused a call (BandStatus::ok after an accepted one).
     BandStatus last_band_status() const { return last_band_status_; }
 
@@ -245,6 +240,18 @@ private:
         }
     }
 
+    // Caller checked the window has room for `count` pixels.
+    void stream_fill(uint16_t rgb565, size_t count) {
+        const size_t chunk_px = tft::kChunkBytes / 2;
+        for (size_t i = 0; i < chunk_px && i < count; ++i) put_pixel(i, rgb565);
+        window_left_ -= static_cast<uint32_t>(count);
+        while (count > 0) {
+            const size_t n = count < chunk_px ? count : chunk_px;
+            hal_.spi_write(hal_.user, chunk_, n * 2);
+            count -= n;
+        }
+    }
+
     static bool sink_begin_frame(void* user, uint16_t width, uint16_t height) {
         SpiTft& tft = *static_cast<SpiTft*>(user);
         if (!tft.initialized_) {
@@ -266,6 +273,20 @@ private:
             tft.stream(rgb565, size_t{rows} * width);  // contiguous band: fewest, fullest chunks
         } else {
             for (uint16_t r = 0; r < rows; ++r) tft.stream(rgb565 + size_t{r} * stride_px, width);
+        }
+        return true;
+    }
+
+    static bool sink_write_columns(void* user, uint16_t y0, uint16_t rows, uint16_t x0, uint16_t width, uint16_t fill,
+                                   const uint16_t* rgb565, uint32_t stride_px) {
+        SpiTft& tft = *static_cast<SpiTft*>(user);
+        tft.last_band_status_ = tft.band_.write_columns(y0, rows, x0, width, rgb565, stride_px);
+        if (tft.last_band_status_ != BandStatus::ok) return false;
+        const size_t right = size_t{tft.band_.width()} - x0 - width;
+        for (uint16_t r = 0; r < rows; ++r) {
+            if (x0 != 0) tft.stream_fill(fill, x0);
+            tft.stream(rgb565 + size_t{r} * stride_px, width);
+            if (right != 0) tft.stream_fill(fill, right);
         }
         return true;
     }

@@ -453,6 +453,57 @@ TEST_CASE("streaming a 40x30 frame in bands of 7 rows sends one window of the fr
     for (size_t len : bus.write_lengths) CHECK(len <= hider::port::tft::kChunkBytes);
 }
 
+TEST_CASE("bands of a column window (write_columns) send the whole frame, the columns outside as the fill") {
+    const uint16_t width = 40;
+    const uint16_t height = 30;
+    const uint16_t fill = 0x1234;
+    for (const uint16_t x0 : {uint16_t{0}, uint16_t{1}, uint16_t{13}, uint16_t{39}}) {
+        for (const uint16_t w : {uint16_t{1}, uint16_t{14}, uint16_t{40}}) {
+            if (x0 + w > width) continue;
+            CAPTURE(x0);
+            CAPTURE(w);
+            // The frame: a pattern in columns [x0, x0 + w), the fill elsewhere; the band memory holds only the
+            // window, rows w + 3 apart.
+            const std::vector<uint16_t> pattern = test_pattern(size_t{width} * height);
+            std::vector<uint16_t> frame(size_t{width} * height, fill), window((size_t{w} + 3) * height, 0xFFFF);
+            for (uint16_t y = 0; y < height; ++y)
+                for (uint16_t x = x0; x < x0 + w; ++x) {
+                    frame[size_t{y} * width + x] = pattern[size_t{y} * width + x];
+                    window[size_t{y} * (w + 3) + (x - x0)] = pattern[size_t{y} * width + x];
+                }
+            FakeBus bus;
+            SpiTft tft(bus.hal(), st7789_240x240());
+            REQUIRE(tft.init());
+            bus.clear();
+            const BandSink sink = tft.sink();
+            REQUIRE((sink.write_columns != nullptr));
+            REQUIRE(sink.begin_frame(sink.user, width, height));
+            for (uint16_t y = 0; y < height; y = static_cast<uint16_t>(y + 7)) {
+                const uint16_t rows = static_cast<uint16_t>(height - y < 7 ? height - y : 7);
+                REQUIRE(sink.write_columns(sink.user, y, rows, x0, w, fill, window.data() + size_t{y} * (w + 3), w + 3u));
+            }
+            CHECK(sink.end_frame(sink.user));
+            CHECK(tft.last_band_status() == BandStatus::ok);
+            CHECK(bus.commands() == std::vector<uint8_t>{0x2A, 0x2B, 0x2C});
+            CHECK(bus.params_of(0x2C) == big_endian(frame));
+            CHECK(bus.bytes_without_cs == 0);
+            for (size_t len : bus.write_lengths) CHECK(len <= hider::port::tft::kChunkBytes);
+        }
+    }
+    // A window past the frame's right side is refused with nothing sent.
+    FakeBus bus;
+    SpiTft tft(bus.hal(), st7789_240x240());
+    REQUIRE(tft.init());
+    const BandSink sink = tft.sink();
+    REQUIRE(sink.begin_frame(sink.user, width, height));
+    bus.clear();
+    const std::vector<uint16_t> band(size_t{width} * 7, 0);
+    CHECK_FALSE(sink.write_columns(sink.user, 0, 7, 30, 11, 0, band.data(), width));
+    CHECK(tft.last_band_status() == BandStatus::bad_size);
+    CHECK(bus.params_of(0x2C).empty());
+    (void)sink.end_frame(sink.user);
+}
+
 TEST_CASE("a band whose stride is wider than the frame sends only the frame's columns") {
     const uint16_t width = 40;
     const uint16_t height = 30;
