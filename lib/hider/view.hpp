@@ -266,9 +266,10 @@ __attribute__((noinline)) inline ColumnWindow centred_window(Span<const ScreenVe
     return margin > 0 ? ColumnWindow{margin, frame_width - 2 * margin} : whole;
 }
 
-/// `view` narrowed to the centred window `w` of its frame: a draw call given `out` and a frame of
-/// w.width columns draws the frame's columns [w.x0, w.x0 + w.width), the same bytes as the whole frame
-/// has there. The projection does not depend on the width: vertices projected with either view serve.
+/// `view` narrowed to the centred window `w` of its frame: draw_zbuffer() and draw_zbuffer_binned() given
+/// `out` and a frame of w.width columns draw the frame's columns [w.x0, w.x0 + w.width), the same bytes
+/// and counts as the whole frame there (the other draw calls are not checked for it). The projection
+/// does not depend on the width: vertices projected with either view serve.
 /// Errors: invalid_argument for a window that is not centred in view's frame (2 x0 + width != width).
 inline Status window_view(const View& view, const ColumnWindow& w, View& out) {
     if (w.x0 < 0 || w.width < 1 || int64_t{w.x0} * 2 + w.width != view.width) return Status::invalid_argument;
