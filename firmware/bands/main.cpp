@@ -20,7 +20,7 @@ namespace scene = hider::scenes::torus_160x128;
 #endif
 // 832 band pixels hold 8 rows of the torus's 104-column window (5 of the full width, should a frame need
 // it) and leave the 16 KB room for 49 carried slots: a continuation without a slot is set up again, which
-// costs more than a row (README.md, "Bands"; bands_p* on the big machine: other choices).
+// costs more than a row (README.md, "Bands": other choices, measured with BANDS_PIXELS and BANDS_SLOTS).
 #ifndef BANDS_SLOTS
 #define BANDS_SLOTS 49
 #endif

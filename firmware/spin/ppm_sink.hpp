@@ -85,10 +85,10 @@ private:
         const uint32_t x1 = uint32_t{x0} + width;
         for (uint16_t r = 0; r < count; ++r) {
             const uint16_t* src = rgb565 + size_t{r} * stride_px;
-            for (uint16_t at = 0; at < frame_width; at = static_cast<uint16_t>(at + chunk)) {
-                const uint16_t n = hider::min<uint16_t>(chunk, static_cast<uint16_t>(frame_width - at));
+            for (uint32_t at = 0; at < frame_width; at += chunk) {  // 32-bit: no wrap near 65,535 columns
+                const uint32_t n = hider::min<uint32_t>(chunk, frame_width - at);
                 uint8_t* dst = row_.data();
-                for (uint16_t x = at; x < at + n; ++x, dst += 3) {
+                for (uint32_t x = at; x < at + n; ++x, dst += 3) {
                     const hider::Rgb c = hider::Rgb565Format::unpack(x >= x0 && x < x1 ? src[x - x0] : fill);
                     dst[0] = c.r;
                     dst[1] = c.g;

@@ -225,19 +225,19 @@ struct ColumnWindow {
     int32_t width = 0;
 };
 
-/// The narrowest centred window of a `frame_width`-wide frame outside which the triangles over `verts`
-/// (projected vertices) cover no pixel, so a frame drawn from them is background there: a triangle covers
-/// only pixels whose centres lie inside it, so within the vertices' largest |x|, and the window's first
-/// and last column centres lie at or beyond that on either side (so each triangle meets the same set-up
-/// path as in the whole frame). The whole width when a vertex is outside a clip plane (clipping makes new
-/// vertices anywhere), when one reaches past a side, or for no vertices. Centred because screen
-/// coordinates count from the frame's centre: window_view() draws exactly these columns with every
-/// set-up and the vertex cache unchanged (an object off centre gets a wider window than its extent).
-/// Out of line: one tight loop a frame.
+/// The narrowest centred window of a `frame_width`-wide frame whose first and last column centres lie
+/// at or beyond every vertex of `verts` (projected vertices), with the largest |x| rounded up by at most
+/// one subpixel. A triangle covers only pixels whose centres lie inside it, so a frame drawn from these
+/// vertices is background outside the window, and each triangle meets the same set-up path as in the
+/// whole frame. The whole width when a vertex is outside a clip plane (clipping makes new vertices
+/// anywhere), when one reaches past a side, for no vertices, or for a width outside [1, kMaxFrameSide].
+/// Centred because screen coordinates count from the frame's centre: window_view() draws the window
+/// with every set-up and the vertex cache unchanged (an object off centre gets a wider window than its
+/// extent). Out of line: one tight loop a frame.
 __attribute__((noinline)) inline ColumnWindow centred_window(Span<const ScreenVertex> verts, int32_t frame_width) {
     const ColumnWindow whole{0, frame_width};
-    if (verts.empty() || frame_width < 1) return whole;
-    uint32_t far = 0;  // the largest |x|, less 1 where x < 0 (x ^ (x >> 31): one instruction)
+    if (verts.empty() || frame_width < 1 || frame_width > kMaxFrameSide) return whole;
+    uint32_t far = 0;  // the largest |x|, less 1 where that x is negative
     auto reach_of = [&far](const ScreenVertex& v) __attribute__((always_inline)) {
         const int32_t x = v.x;
         const uint32_t a = static_cast<uint32_t>(x ^ (x >> 31));
@@ -259,10 +259,9 @@ __attribute__((noinline)) inline ColumnWindow centred_window(Span<const ScreenVe
         reach_of(*v);
     }
     const int32_t reach = static_cast<int32_t>(far) + 1;  // >= |x| of every vertex (at most 2^15)
-    const int32_t origin = pixel_centre_origin(frame_width);
-    const int32_t left = (-reach - origin) >> kSubpixelBits;                                      // centre <= -reach
-    const int32_t right = frame_width - 1 - ((reach - origin + kSubpixel - 1) >> kSubpixelBits);  // centre >= reach
-    const int32_t margin = min(left, right);
+    // The last column centre at or right of +reach is the mirror of the first at or left of -reach (the
+    // centres sit symmetrically about 0), so one margin serves both sides.
+    const int32_t margin = (-reach - pixel_centre_origin(frame_width)) >> kSubpixelBits;
     return margin > 0 ? ColumnWindow{margin, frame_width - 2 * margin} : whole;
 }
 

@@ -8,14 +8,15 @@
 
 namespace hider::port {
 
-// A frame is sent as begin_frame, then write_rows for bands of full-width rows from top to bottom that cover
+// A frame is sent as begin_frame, then write_rows (or write_columns) for bands from top to bottom that cover
 // rows [0, height) exactly once, then end_frame. Each call returns false when the sink refuses it; after a
-// refused begin_frame the frame never opened, after a refused write_rows the caller still calls end_frame so
-// the sink can release its device. `rgb565` is borrowed for the call only; row r of the band starts at
-// rgb565 + r * stride_px. Plain function pointers plus a `user` context keep the struct usable from C.
-// write_columns is optional (null: the sink takes full-width rows only): a band of which only the columns
-// [x0, x0 + width) are in memory, every other pixel of its rows being `fill` (a renderer's column window,
-// <hider/view.hpp>'s centred_window(): the background outside it); it may stand for write_rows in any band.
+// refused begin_frame the frame never opened, after a refused band the caller still calls end_frame so the
+// sink can release its device. `rgb565` is borrowed for the call only; row r of the band starts at
+// rgb565 + r * stride_px. Plain function pointers plus a `user` context: a C-compatible layout.
+// write_columns is optional (null, the default: the sink takes full-width rows only): a band of which only
+// the columns [x0, x0 + width) are in memory, every other pixel of its rows being `fill` (a renderer's
+// column window, <hider/view.hpp>'s centred_window(): the background outside it); it may stand for
+// write_rows in any band.
 struct BandSink {
     void* user;
     bool (*begin_frame)(void* user, uint16_t width, uint16_t height);
@@ -33,19 +34,20 @@ inline bool is_complete(const BandSink& sink) {
 // Why BandSequenceChecker refused a call (ok = accepted).
 enum class [[nodiscard]] BandStatus : uint8_t {
     ok = 0,
-    not_in_frame,  // write_rows or end_frame without an open frame
+    not_in_frame,  // a band or end_frame without an open frame
     frame_open,    // begin_frame while a frame is open
-    bad_size,      // zero width or height, or a band of zero rows
+    bad_size,      // zero width or height, a band of zero rows, an empty window or one past the side
     out_of_order,  // y0 is not the row after the previous band (gap, overlap or repeat)
     past_end,      // the band runs past the frame's last row
-    bad_pixels,    // null pixel pointer or stride_px < width
+    bad_pixels,    // null pixel pointer or stride_px below the band's width (the frame's or the window's)
     incomplete,    // end_frame before every row arrived (the frame is closed anyway)
     too_large,     // the frame is wider or taller than the checker's limits
     not_ready,     // the sink's device is not ready (set by sinks, never by the checker)
 };
 
 // Tracks one frame's band sequence so a sink can refuse calls that break the BandSink contract. A refused
-// begin_frame or write_rows leaves the state unchanged; end_frame always closes the frame. 12 bytes, no heap.
+// begin_frame, write_rows or write_columns leaves the state unchanged; end_frame always closes the frame.
+// 12 bytes, no heap.
 class BandSequenceChecker {
 public:
     /// Makes a checker that refuses frames wider than `max_width` or taller than `max_height`.

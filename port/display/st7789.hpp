@@ -264,16 +264,22 @@ private:
         return true;
     }
 
+    // Rows of a checked band: columns [x0, x0 + width) from rgb565, the rest of each row `fill`.
+    void send_rows(uint16_t rows, uint16_t x0, uint16_t width, uint16_t fill, const uint16_t* rgb565, uint32_t stride_px) {
+        const size_t right = size_t{band_.width()} - x0 - width;
+        if (x0 == 0 && right == 0 && stride_px == width) return stream(rgb565, size_t{rows} * width);  // fullest chunks
+        for (uint16_t r = 0; r < rows; ++r) {
+            if (x0 != 0) stream_fill(fill, x0);
+            stream(rgb565 + size_t{r} * stride_px, width);
+            if (right != 0) stream_fill(fill, right);
+        }
+    }
+
     static bool sink_write_rows(void* user, uint16_t y0, uint16_t rows, const uint16_t* rgb565, uint32_t stride_px) {
         SpiTft& tft = *static_cast<SpiTft*>(user);
         tft.last_band_status_ = tft.band_.write_rows(y0, rows, rgb565, stride_px);
         if (tft.last_band_status_ != BandStatus::ok) return false;
-        const uint16_t width = tft.band_.width();
-        if (stride_px == width) {
-            tft.stream(rgb565, size_t{rows} * width);  // contiguous band: fewest, fullest chunks
-        } else {
-            for (uint16_t r = 0; r < rows; ++r) tft.stream(rgb565 + size_t{r} * stride_px, width);
-        }
+        tft.send_rows(rows, 0, tft.band_.width(), 0, rgb565, stride_px);
         return true;
     }
 
@@ -282,12 +288,7 @@ private:
         SpiTft& tft = *static_cast<SpiTft*>(user);
         tft.last_band_status_ = tft.band_.write_columns(y0, rows, x0, width, rgb565, stride_px);
         if (tft.last_band_status_ != BandStatus::ok) return false;
-        const size_t right = size_t{tft.band_.width()} - x0 - width;
-        for (uint16_t r = 0; r < rows; ++r) {
-            if (x0 != 0) tft.stream_fill(fill, x0);
-            tft.stream(rgb565 + size_t{r} * stride_px, width);
-            if (right != 0) tft.stream_fill(fill, right);
-        }
+        tft.send_rows(rows, x0, width, fill, rgb565, stride_px);
         return true;
     }
 

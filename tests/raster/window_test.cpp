@@ -14,6 +14,7 @@
 
 #include <doctest/doctest.h>
 
+#include "common/render.hpp"
 #include "support/reference.hpp"
 #include "support/projected.hpp"
 #include "support/soup.hpp"
@@ -47,8 +48,8 @@ bool holds(int32_t m, int32_t width, int32_t reach) {
 }
 
 /// The window's rule on `verts`: whole width for a clipped vertex or one reaching past a side; else a
-/// centred window holding every vertex, whose margin one larger would not hold them at a reach of one
-/// subpixel more (the rule rounds |x| up by at most one subpixel).
+/// centred window whose edge column centres hold every vertex, and whose margin one larger would not hold
+/// them at a reach of one subpixel more (the rule rounds |x| up by at most one subpixel).
 void check_rule(const std::vector<ScreenVertex>& verts, int32_t width, const ColumnWindow& w) {
     CAPTURE(width);
     CAPTURE(w.x0);
@@ -211,11 +212,33 @@ TEST_CASE("centred_window: the narrowest centred window holding every vertex, or
         check_rule(v, w320, w);
         CHECK(w.x0 == 0);
     }
-    // The torus's extent at 320x240: columns 63..255 of 320, a centred window of 194 (63 + 194 + 63).
-    v = {at_x(-1543), at_x(1530)};
+    // The torus's extent at 320x240 (x in [-1542, 1536]: pixel centres of columns 64..255 inside): the
+    // window's edge centres at or beyond it, columns 63..256.
+    v = {at_x(-1542), at_x(1536)};
     ColumnWindow w = centred_window({v.data(), v.size()}, w320);
     check_rule(v, w320, w);
-    // Every reach and a few widths (odd, even, 1): the rule, exhaustively.
+    CHECK(w.x0 == 63);
+    CHECK(w.width == 194);
+    // A clipped vertex anywhere (each lane of the four-a-turn loop and the tail): the whole width.
+    for (size_t n = 1; n <= 13; ++n)
+        for (size_t at = 0; at < n; ++at) {
+            CAPTURE(n);
+            CAPTURE(at);
+            v.assign(n, at_x(40));
+            v[at] = at_x(3, 0);
+            CHECK(centred_window({v.data(), v.size()}, w320).x0 == 0);
+            v[at] = at_x(-3);
+            CHECK(centred_window({v.data(), v.size()}, w320).x0 > 0);
+        }
+    // Widths outside [1, kMaxFrameSide]: the whole (given) width, no arithmetic on them.
+    v = {at_x(10)};
+    for (int32_t width : {0, -5, kMaxFrameSide + 1, INT32_MAX}) {
+        CAPTURE(width);
+        w = centred_window({v.data(), v.size()}, width);
+        CHECK(w.x0 == 0);
+        CHECK(w.width == width);
+    }
+    // Every reach on a few widths (odd, even, 1, the largest): the rule.
     long narrowed = 0;
     for (int32_t width : {1, 2, 3, 17, 160, 320, 1024})
         for (int32_t reach = 0; reach <= 8 * width + 24; ++reach)
@@ -311,4 +334,33 @@ TEST_CASE("windows of random soups, eyes inside and outside, in small frames: th
     CHECK(tally.narrowed > 500);
     CHECK(tally.whole > 500);
     CHECK(clipped_scenes > 200);
+}
+
+TEST_CASE("the tools' z-buffer render (RenderOptions::window) gives the whole frame's bytes and counts through the window") {
+    long narrowed = 0;
+    for (const char* name : {"torus.obj", "cow.obj", "teapot.obj"}) {
+        for (int band_rows : {0, 5}) {
+            tool::CameraArgs cam;
+            cam.width = 120;
+            cam.height = 90;
+            const tool::Scene s = test::load_model(name, cam);
+            tool::RenderOptions opt;
+            opt.band_rows = band_rows;
+            opt.background = kBackground;
+            tool::RenderResult whole, windowed;
+            std::string why;
+            REQUIRE(tool::render(s, opt, whole, why));
+            opt.window = true;
+            REQUIRE(tool::render(s, opt, windowed, why));
+            CAPTURE(name);
+            CAPTURE(band_rows);
+            CHECK(windowed.rgb == whole.rgb);
+            CHECK(windowed.pixels_covered == whole.pixels_covered);
+            CHECK(windowed.stats.fragments == whole.stats.fragments);
+            CHECK(windowed.stats.triangles_drawn == whole.stats.triangles_drawn);
+            const Projected p = project(s, true, Shade::headlight);
+            narrowed += centred_window({p.verts.data(), p.verts.size()}, s.width).x0 > 0;
+        }
+    }
+    CHECK(narrowed >= 4);  // the window is narrower than the frame on most of them
 }

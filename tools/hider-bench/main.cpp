@@ -42,6 +42,9 @@ const char* kUsage =
     "         and firmware/bsp's instruction counts under QEMU for each cross build tree\n"
     "       hider-bench raycast [--models DIR] [--valgrind PATH]\n"
     "         callgrind Ir per ray of mesh ray casting (torus, bunny), BVH against brute force\n"
+    "       hider-bench carry [--models DIR]\n"
+    "         the torus 320x240's triangles that a band renderer carries, by band height, and those that\n"
+    "         reach their middle row in a later band than their first (counted on the host)\n"
     "exit status: 0 ok, 2 error, 77 valgrind (targets: every cross build tree) not found\n";
 
 }  // namespace
@@ -134,6 +137,7 @@ int main(int argc, char** argv) {
     if (command == "raycast") return raycast_command(args);
     if (command == "raycast-run") return raycast_run_command(args);
     if (command == "bsp") return bsp_command(args);
+    if (command == "carry") return carry_command(args);
     if (command == "-h" || command == "--help") {
         std::cout << kUsage;
         return 0;
