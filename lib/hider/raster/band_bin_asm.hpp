@@ -1,7 +1,9 @@
-// bin_triangles()'s loop (band_lists.hpp) in Thumb-2 for ARMv7-M: the binning pass keeps its constants in
-// registers. It links the whole triangles and hands each one with a vertex outside a clip plane back to
-// C++. firmware/kernelcheck compares it with the C++ loop through the band renderer's output.
+// bin_triangles()'s loop (band_lists.hpp) in Thumb-2 for ARMv7-M and in Thumb-1 for ARMv6-M: the binning
+// pass keeps its constants in registers. It links the whole triangles and hands each one with a vertex
+// outside a clip plane back to C++. firmware/kernelcheck compares it with the C++ loop through the band
+// renderer's output.
 #pragma once
+#include <hider/asm_v6m.hpp>
 #include <hider/mesh.hpp>
 #include <hider/screen.hpp>
 
@@ -13,7 +15,7 @@ namespace detail {
 struct BinLoopArm {
     int32_t y_lift;             ///< 0: v = y - y_lift; row (v >> 4)
     int32_t v_last;             ///< 4: 16 height - 1: v clamped to [0, v_last], row to [0, height - 1]
-    uint32_t band_scale;        ///< 8: ceil(2^28 / band rows): band = v * band_scale >> 32 (umull)
+    uint32_t band_scale;        ///< 8: bin_scale(band rows)
     uint16_t* head;             ///< 12
     uint16_t* next;             ///< 16
     const Tri* tris;            ///< 20
@@ -36,6 +38,17 @@ static_assert(sizeof(Tri) == 6 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVe
 /// every v of a frame of up to kMaxFrameSide rows (v < 2^14, rows <= 2^10): one umull gives the band of
 /// a subpixel row, without first shifting it to a pixel row.
 constexpr uint32_t band_scale_v(uint32_t rows) { return ((uint32_t{1} << 28) + rows - 1) / rows; }
+
+/// BinLoopArm::band_scale for `rows` rows a band: band_scale_v() on ARMv7-M; elsewhere (ARMv6-M, which
+/// has no 32 x 32 -> 64 multiply) ceil(2^20 / rows): the band of pixel row r < 2^10 is r * it >> 20, as
+/// bin_triangles() computes it in C++.
+constexpr uint32_t bin_scale(uint32_t rows) {
+#if defined(HIDER_ARMV7M)
+    return band_scale_v(rows);
+#else
+    return ((uint32_t{1} << 20) + rows - 1) / rows;
+#endif
+}
 }  // namespace detail
 
 #if defined(HIDER_ARMV7M)
@@ -135,6 +148,151 @@ HIDER_NAKED inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
         "9:\n\t"
         "mov    r0, #0\n\t"
         "pop    {r4-r11, pc}\n");
+}
+#endif
+
+#if defined(HIDER_ARMV6M)
+/// HIDER_V6M_BIN_LINK: bin_triangles_v6m()'s loop from the byte offsets r0 r1 r2 of a drawable
+/// triangle's vertices on: the area, the cull, the link into its band's list, the step to the triangle
+/// below (back to local label 1; to the caller's local label 7, defined after it, when none is left).
+/// The top vertex's y is ay + min(0, by - ay, cy - ay), from the area's differences. Uses local labels
+/// 0, 2, 4, 5 and 6.
+#define HIDER_V6M_BIN_LINK \
+    "2:\n\t" \
+    "ldr    r0, [r6, r0]\n\t"           /* x | y << 16 of each */ \
+    "ldr    r1, [r6, r1]\n\t" \
+    "ldr    r2, [r6, r2]\n\t" \
+    "sxth   r3, r0\n\t"                 /* ax */ \
+    "asrs   r0, r0, #16\n\t"            /* ay */ \
+    "sxth   r7, r1\n\t" \
+    "subs   r7, r7, r3\n\t"             /* bx - ax */ \
+    "asrs   r1, r1, #16\n\t" \
+    "subs   r1, r1, r0\n\t"             /* by - ay */ \
+    "mov    r12, r7\n\t" \
+    "sxth   r7, r2\n\t" \
+    "subs   r7, r7, r3\n\t"             /* cx - ax */ \
+    "asrs   r2, r2, #16\n\t" \
+    "subs   r2, r2, r0\n\t"             /* cy - ay */ \
+    "muls   r7, r1, r7\n\t"             /* (cx - ax) (by - ay) */ \
+    "mov    r3, r12\n\t" \
+    "muls   r3, r2, r3\n\t"             /* (bx - ax) (cy - ay) */ \
+    "subs   r3, r3, r7\n\t"             /* signed_area() */ \
+    "beq    6f\n\t"                     /* no area: not drawn */ \
+    "cmp    r3, r8\n\t" \
+    "bgt    5f\n\t"                     /* culled */ \
+    "cmp    r1, r2\n\t" \
+    "ble    0f\n\t" \
+    "movs   r1, r2\n" \
+    "0:\n\t" \
+    "cmp    r1, #0\n\t" \
+    "bgt    0f\n\t" \
+    "adds   r0, r0, r1\n" \
+    "0:\n\t"                            /* r0: the top vertex's y */ \
+    "mov    r7, r10\n\t"                /* d */ \
+    "ldr    r3, [r7, #0]\n\t" \
+    "subs   r0, r0, r3\n\t"             /* v = y - y_lift */ \
+    "ldr    r3, [r7, #4]\n\t" \
+    "cmp    r0, r3\n\t" \
+    "bhi    4f\n"                        /* v < 0 or v > v_last: clamped */ \
+    "0:\n\t" \
+    "lsrs   r0, r0, #4\n\t"             /* its first row */ \
+    "ldr    r3, [r7, #8]\n\t" \
+    "muls   r0, r3, r0\n\t" \
+    "lsrs   r0, r0, #20\n\t"            /* its band */ \
+    "lsls   r0, r0, #1\n\t" \
+    "ldr    r3, [r7, #12]\n\t"          /* head */ \
+    "ldrh   r2, [r3, r0]\n\t" \
+    "strh   r4, [r3, r0]\n\t"           /* head[band] = t */ \
+    "ldr    r3, [r7, #16]\n\t"          /* next */ \
+    "lsls   r1, r4, #1\n\t" \
+    "strh   r2, [r3, r1]\n"              /* next[t] = the band's head before */ \
+    "6:\n\t" \
+    "subs   r4, r4, #1\n\t" \
+    "bpl    1b\n\t" \
+    "b      7f\n" \
+    "4:\n\t" \
+    "asrs   r0, r0, #31\n\t"            /* -1 below, 0 above */ \
+    "bics   r3, r0\n\t"                 /* 0 below, v_last above */ \
+    "movs   r0, r3\n\t" \
+    "b      0b\n" \
+    "5:\n\t" \
+    "add    r9, r11\n\t"                /* culled: one more */ \
+    "subs   r4, r4, #1\n\t" \
+    "bpl    1b\n\t"
+
+/// bin_triangles()'s loop in Thumb-1, as bin_triangles_v7m(): links triangles count - 1 down to 0 and
+/// counts the culled ones into d->culled; returns t + 1 for the first triangle t with a vertex outside a
+/// clip plane, 0 when done. Registers: r4 the triangle, r5 its Tri, r6 the vertices, r8 cull_above, r9
+/// the culled count, r10 d, r11 the constant 1, r12 scratch.
+HIDER_NAKED inline uint32_t bin_triangles_v6m(uint32_t, detail::BinLoopArm*) {
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        HIDER_V6M_SAVE_ALL
+        "subs   r4, r0, #1\n\t"
+        "bpl    11f\n\t"
+        "b      9f\n"                             // no triangle left
+        "11:\n\t"
+        "mov    r10, r1\n\t"
+        "ldr    r5, [r1, #20]\n\t"               // tris
+        "ldr    r6, [r1, #24]\n\t"               // verts
+        "ldr    r2, [r1, #28]\n\t"
+        "mov    r8, r2\n\t"                      // cull_above
+        "ldr    r2, [r1, #32]\n\t"
+        "mov    r9, r2\n\t"                      // culled
+        "movs   r2, #1\n\t"
+        "mov    r11, r2\n\t"
+        "movs   r2, #6\n\t"
+        "muls   r2, r0, r2\n\t"
+        "adds   r5, r5, r2\n\t"                  // tris + 6 (t + 1): pre-decremented
+        "ldr    r2, [r1, #36]\n\t"
+        "cmp    r2, #0\n\t"
+        "bne    3f\n"                             // every vertex projected: the loop without the clip test
+        "1:\n\t"
+        "subs   r5, r5, #6\n\t"
+        "ldrh   r0, [r5, #0]\n\t"
+        "ldrh   r1, [r5, #2]\n\t"
+        "ldrh   r2, [r5, #4]\n\t"
+        "lsls   r0, r0, #3\n\t"
+        "lsls   r1, r1, #3\n\t"
+        "lsls   r2, r2, #3\n\t"
+        "adds   r3, r0, #4\n\t"
+        "ldr    r3, [r6, r3]\n\t"
+        "cmp    r3, #0\n\t"
+        "beq    8f\n\t"                          // z = 0: outside a clip plane
+        "adds   r3, r1, #4\n\t"
+        "ldr    r3, [r6, r3]\n\t"
+        "cmp    r3, #0\n\t"
+        "beq    8f\n\t"
+        "adds   r3, r2, #4\n\t"
+        "ldr    r3, [r6, r3]\n\t"
+        "cmp    r3, #0\n\t"
+        "bne    2f\n"
+        "8:\n\t"                                 // back to C++ with t + 1
+        "mov    r1, r10\n\t"
+        "mov    r2, r9\n\t"
+        "str    r2, [r1, #32]\n\t"
+        "adds   r0, r4, #1\n\t"
+        "b      10f\n"
+        HIDER_V6M_BIN_LINK
+        "b      7f\n"
+        "3:\n"
+        "1:\n\t"
+        "subs   r5, r5, #6\n\t"
+        "ldrh   r0, [r5, #0]\n\t"
+        "ldrh   r1, [r5, #2]\n\t"
+        "ldrh   r2, [r5, #4]\n\t"
+        "lsls   r0, r0, #3\n\t"
+        "lsls   r1, r1, #3\n\t"
+        "lsls   r2, r2, #3\n"
+        HIDER_V6M_BIN_LINK
+        "7:\n\t"
+        "mov    r1, r10\n\t"
+        "mov    r2, r9\n\t"
+        "str    r2, [r1, #32]\n"
+        "9:\n\t"
+        "movs   r0, #0\n"
+        "10:\n\t"
+        HIDER_V6M_RESTORE_ALL);
 }
 #endif
 

@@ -107,9 +107,9 @@ __attribute__((always_inline)) inline ScreenXY screen_xy(const ScreenVertex& v) 
 /// holding its first row, back to front so each list runs in mesh order; counts culled, clipped and outside triangles as draw_zbuffer()
 /// does on a whole frame. `rows`: rows per band (band_scale = ceil(2^20 / rows): band = first row *
 /// band_scale >> 20, exact for frames of up to 1,024 rows). Out of line with few live values, so the loop stays in registers. kAsm: on
-/// ARMv7-M the whole triangles go through bin_triangles_v7m() (false keeps it out: kernelcheck compares
-/// both), without a clip test when every vertex is projected (all_projected()); returns that flag there
-/// for the band loop (0 elsewhere).
+/// ARMv7-M and ARMv6-M the whole triangles go through bin_triangles_v7m() or bin_triangles_v6m() (false
+/// keeps them out: kernelcheck compares both), without a clip test when every vertex is projected
+/// (all_projected()); returns that flag there (the ARMv7-M band loop uses it; 0 elsewhere).
 template <bool kAsm = true>
 __attribute__((noinline)) uint32_t bin_triangles(const View& view, const Mesh& mesh, Span<const ScreenVertex> verts, bool cull,
                                                  const BandBounds& bb, int32_t height, int32_t rows, uint16_t* next,
@@ -123,12 +123,17 @@ __attribute__((noinline)) uint32_t bin_triangles(const View& view, const Mesh& m
     const uint32_t band_scale = ((uint32_t{1} << 20) + static_cast<uint32_t>(rows) - 1) / static_cast<uint32_t>(rows);
     uint32_t culled = 0;
     const ClippedBinning clipped{view, mesh, verts, cull, bb, height, st};
-#if defined(HIDER_ARMV7M)
+#if defined(HIDER_ARMV7M) || defined(HIDER_ARMV6M)
     if constexpr (kAsm) {
         const uint32_t projected = all_projected(vp, mesh.positions.size());  // one scan a frame
-        BinLoopArm d{y_lift, height * kSubpixel - 1, band_scale_v(static_cast<uint32_t>(rows)), head, next,
+        BinLoopArm d{y_lift, height * kSubpixel - 1, bin_scale(static_cast<uint32_t>(rows)), head, next,
                      mesh.tris.data(), vp, cull_above, 0, projected};
-        for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); (i = bin_triangles_v7m(i, &d)) != 0;) {
+#if defined(HIDER_ARMV7M)
+        constexpr auto bin_loop = bin_triangles_v7m;
+#else
+        constexpr auto bin_loop = bin_triangles_v6m;
+#endif
+        for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); (i = bin_loop(i, &d)) != 0;) {
             --i;  // a vertex of triangle i lies outside a clip plane
             const int32_t first = first_row_clipped(clipped, i);
             if (first > last) continue;
