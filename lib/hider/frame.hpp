@@ -143,21 +143,57 @@ HIDER_NAKED inline void fill_words_v7m(AliasWord*, AliasWord*, uint32_t) {
         "pop    {r4-r11, pc}\n");
 }
 #elif defined(__arm__) && defined(__thumb__)
-/// Stores `word` to [p, end), a whole number of 56-word blocks: eight 7-register store-multiples a pass.
-HIDER_NAKED inline void fill_words_v6m(AliasWord*, AliasWord*, uint32_t) {
+/// Stores `word` to [p, blocks_end), a whole number of 56-word blocks (eight 7-register store-multiples
+/// a pass), then to the `tail` < 56 words after it: tail / 7 store-multiples, entered by a computed jump
+/// into their ladder, and single stores for the rest.
+HIDER_NAKED inline void fill_words_v6m(AliasWord*, AliasWord*, uint32_t, uint32_t) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r7, lr}\n\t"
         "mov    r12, r1\n\t"
+        "mov    lr, r3\n\t"
         ".irp   reg, r1, r3, r4, r5, r6, r7\n\t"
         "movs   \\reg, r2\n\t"
-        ".endr\n"
+        ".endr\n\t"
+        "cmp    r0, r12\n\t"
+        "beq    2f\n"
         "1:\n\t"
         ".rept  8\n\t"
         "stmia  r0!, {r1-r7}\n\t"
         ".endr\n\t"
         "cmp    r0, r12\n\t"
-        "bne    1b\n\t"
+        "bne    1b\n"
+        "2:\n\t"
+        "mov    r1, lr\n\t"               // the tail
+        "movs   r3, #37\n\t"
+        "muls   r3, r1, r3\n\t"
+        "lsrs   r3, r3, #8\n\t"           // c = tail / 7 (exact below 56)
+        "movs   r4, #7\n\t"
+        "muls   r4, r3, r4\n\t"
+        "subs   r1, r1, r4\n\t"
+        "mov    lr, r1\n\t"               // the single stores after them
+        "lsls   r3, r3, #1\n\t"
+        "adr    r4, 3f\n\t"
+        "adds   r4, r4, #14\n\t"
+        "subs   r4, r4, r3\n\t"           // the ladder's last c store-multiples
+        "mov    r12, r4\n\t"
+        ".irp   reg, r1, r3, r4\n\t"
+        "movs   \\reg, r2\n\t"
+        ".endr\n\t"
+        "mov    pc, r12\n\t"
+        ".balign 4\n"
+        "3:\n\t"
+        ".rept  7\n\t"
+        "stmia  r0!, {r1-r7}\n\t"
+        ".endr\n\t"
+        "mov    r1, lr\n\t"
+        "cmp    r1, #0\n\t"
+        "beq    5f\n"
+        "4:\n\t"
+        "stmia  r0!, {r2}\n\t"
+        "subs   r1, r1, #1\n\t"
+        "bne    4b\n"
+        "5:\n\t"
         "pop    {r4-r7, pc}\n");
 }
 #endif
@@ -180,13 +216,11 @@ inline void fill_words(void* p, size_t n, uint32_t word) {
     }
 #elif defined(__arm__) && defined(__thumb__)
     // Cortex-M0/M0+: eight 7-register store-multiples per 56 words (GCC -Os emits one str per word, and
-    // shorter store-multiples cost more per word).
-    if (size_t blocks = n / 56) {
-        __asm__("" : "+r"(blocks));  // n - 56 blocks below, not a second division for n % 56 (a library call here)
-        detail::fill_words_v6m(w, w + blocks * 56, word);
-        w += blocks * 56;
-        n -= blocks * 56;
-    }
+    // shorter store-multiples cost more per word), the tail in 7-word ones too. n / 56 without a library
+    // division below 2^16 words (exact there: every band and every frame up to 256 x 256).
+    const size_t blocks = n < 65536 ? ((n >> 3) * 9363) >> 16 : n / 56;
+    detail::fill_words_v6m(w, w + blocks * 56, word, static_cast<uint32_t>(n - blocks * 56));
+    return;
 #elif defined(__riscv) && __riscv_xlen == 32
     // RV32 has no store-multiple: 64 stores and one pointer step per 256 bytes (GCC's loop below spends
     // three more instructions per 8 words on its pointer and count).
