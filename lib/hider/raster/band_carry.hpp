@@ -216,7 +216,7 @@ private:
     /// set up in a free slot or the spare; true when it continues into the next band without a slot.
     __attribute__((always_inline)) bool whole(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                                               uint16_t tri) {
-        const int32_t area = TriangleRaster::signed_area(a, b, c);
+        const int32_t area = screen_area(a, b, c);
         const bool slot = cs_.free_top != free_base_;
         KernelTriangle& kt = slot ? pool_[cs_.free_top[-1]] : spare_;
         io_.area = area;

@@ -103,6 +103,12 @@ __attribute__((always_inline)) inline ScreenXY screen_xy(const ScreenVertex& v) 
 #endif
 }
 
+/// TriangleRaster::signed_area() through screen_xy().
+__attribute__((always_inline)) inline int32_t screen_area(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    const ScreenXY pa = screen_xy(a), pb = screen_xy(b), pc = screen_xy(c);
+    return (pb.x - pa.x) * (pc.y - pa.y) - (pc.x - pa.x) * (pb.y - pa.y);
+}
+
 /// Links every drawable triangle of the mesh (non-zero area, not culled) into the list of the band
 /// holding its first row, back to front so each list runs in mesh order; counts culled, clipped and outside triangles as draw_zbuffer()
 /// does on a whole frame. `rows`: rows per band (band_scale = ceil(2^20 / rows): band = first row *
@@ -154,15 +160,15 @@ __attribute__((noinline)) uint32_t bin_triangles(const View& view, const Mesh& m
         const ScreenVertex& c = vp[tri->v[2]];
         int32_t first;
         if (a.z != 0 && b.z != 0 && c.z != 0) {
-            const ScreenXY pa = screen_xy(a), pb = screen_xy(b), pc = screen_xy(c);
-            const int32_t area = (pb.x - pa.x) * (pc.y - pa.y) - (pc.x - pa.x) * (pb.y - pa.y);  // signed_area()
+            const int32_t area = screen_area(a, b, c);
             if (area == 0) continue;
             if (area > cull_above) {
                 ++culled;
                 continue;
             }
             // A box without a pixel centre of the frame is binned too: its set-up finds nothing to draw.
-            first = clamp((min(pa.y, min(pb.y, pc.y)) - y_lift) >> kSubpixelBits, int32_t{0}, last);
+            first = clamp((min(screen_xy(a).y, min(screen_xy(b).y, screen_xy(c).y)) - y_lift) >> kSubpixelBits, int32_t{0},
+                          last);
         } else {
             first = first_row_clipped(clipped, i);
             if (first > last) continue;
