@@ -125,13 +125,37 @@ namespace detail {
 using AliasWord = uint32_t __attribute__((may_alias));  // fills 16-bit buffers two elements per store
 
 #if defined(HIDER_ARMV7M)
-/// Stores `word` to [p, end), a whole number of 96-word blocks: eight 12-register store-multiples a pass.
-HIDER_NAKED inline void fill_words_v7m(AliasWord*, AliasWord*, uint32_t) {
+/// Stores `word` to [p, blocks_end), a whole number of 96-word blocks (eight 12-register
+/// store-multiples a pass), and first to the `tail` < 96 words after it: 8-register store-multiples,
+/// then 4, 2 and 1 words by the tail's low bits.
+HIDER_NAKED inline void fill_words_v7m(AliasWord*, AliasWord*, uint32_t, uint32_t) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"
+        ".irp   reg, r4, r5, r6, r7, r8, r9, r10, r11\n\t"
+        "mov    \\reg, r2\n\t"
+        ".endr\n\t"
+        "mov    r12, r1\n\t"              // the tail
+        "subs   r3, r3, #8\n\t"
+        "blt    3f\n"
+        "2:\n\t"
+        "stmia  r12!, {r4-r11}\n\t"
+        "subs   r3, r3, #8\n\t"
+        "bge    2b\n"
+        "3:\n\t"                          // r3's low three bits: the tail's
+        "tst    r3, #4\n\t"
+        "it     ne\n\t"
+        "stmiane r12!, {r4-r7}\n\t"
+        "tst    r3, #2\n\t"
+        "it     ne\n\t"
+        "stmiane r12!, {r4, r5}\n\t"
+        "tst    r3, #1\n\t"
+        "it     ne\n\t"
+        "strne  r4, [r12]\n\t"
+        "cmp    r0, r1\n\t"
+        "beq    5f\n\t"                   // no whole block
         "mov    r12, r1\n\t"
-        ".irp   reg, r1, r3, r4, r5, r6, r7, r8, r9, r10, r11, lr\n\t"
+        ".irp   reg, r1, r3, lr\n\t"
         "mov    \\reg, r2\n\t"
         ".endr\n"
         "1:\n\t"
@@ -139,7 +163,8 @@ HIDER_NAKED inline void fill_words_v7m(AliasWord*, AliasWord*, uint32_t) {
         "stmia  r0!, {r1-r11, lr}\n\t"
         ".endr\n\t"
         "cmp    r0, r12\n\t"
-        "bne    1b\n\t"
+        "bne    1b\n"
+        "5:\n\t"
         "pop    {r4-r11, pc}\n");
 }
 #elif defined(__arm__) && defined(__thumb__)
@@ -207,13 +232,10 @@ inline void fill_words(void* p, size_t n, uint32_t word) {
     detail::AliasWord* w = static_cast<detail::AliasWord*>(p);
 #if defined(HIDER_ARMV7M)
     // Cortex-M3/M4: eight 12-register store-multiples per 96 words (GCC -Os emits one str per word, and
-    // shorter store-multiples cost more per word).
-    if (size_t blocks = n / 96) {
-        detail::fill_words_v7m(w, w + blocks * 96, word);
-        w += blocks * 96;
-        n -= blocks * 96;
-        if (n == 0) return;  // whole blocks: the shipped frames and bands (320x240, 160 x 6 rows)
-    }
+    // shorter store-multiples cost more per word), the tail in store-multiples too.
+    const size_t blocks = n / 96;
+    detail::fill_words_v7m(w, w + blocks * 96, word, static_cast<uint32_t>(n - blocks * 96));
+    return;
 #elif defined(__arm__) && defined(__thumb__)
     // Cortex-M0/M0+: eight 7-register store-multiples per 56 words (GCC -Os emits one str per word, and
     // shorter store-multiples cost more per word), the tail in 7-word ones too. n / 56 without a library
