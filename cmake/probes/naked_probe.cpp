@@ -24,7 +24,7 @@ using namespace hider;
 #define HIDER_NAKED_ROUTINES                                                                           \
     X(kernel_setup_v6m) X(draw_flat_v6m) X(project_common_v6m) X(run_kernel_triangle_v6m)    \
     X(horizon::walk_kernel_v6m) X(horizon::level_pass_v6m) X(horizon::reciprocal_pass_v6m)            \
-    X(horizon::coordinate_pass_v6m) X(detail::fill_words_v6m) X(resume_carried_v6m)
+    X(horizon::coordinate_pass_v6m) X(detail::fill_words_v6m) X(resume_carried_v6m) X(bin_triangles_v6m)
 #elif defined(HIDER_RV32_ASM)
 #define HIDER_NAKED_ROUTINES X(kernel_setup_rv32) X(run_kernel_triangle_rv32) X(resume_carried_rv32)
 #else

@@ -93,8 +93,6 @@ inline Case make_case(Rng& rng, Buffers& b) {
     t.next_left = (rng.next() & 1u) != 0;
     make_edge(rng, t.next_left ? 21 : 20, t.next_left ? 38 : 50, cs.target.stride_bytes, t.next_x, t.next_g, t.next_a,
               t.next_m, t.next_step);
-    t.next_z = near ? k.lz + (rng.next() >> 20) : rng.next();
-    t.next_dz = near ? rng.next() >> rng.range(12, 31) : rng.next();
     cs.stop1 = rng.range(t.row - 1, t.end + 1);
     if ((rng.next() & 3u) == 0 && t.row < t.mid && t.mid < t.end) cs.stop1 = t.mid;
     cs.stop2 = rng.range(cs.stop1, t.end + 2);

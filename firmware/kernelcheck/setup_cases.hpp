@@ -88,10 +88,6 @@ inline uint32_t setup_digest(hider::KernelSetup s, const hider::KernelTriangle& 
                                  static_cast<uint32_t>(t.next_a), static_cast<uint32_t>(t.next_m),
                                  static_cast<uint32_t>(t.next_step)};
         for (uint32_t f : next) fnv.add(f);
-        if (t.next_left) {
-            fnv.add(t.next_z);
-            fnv.add(t.next_dz);
-        }
     }
     return fnv.h;
 }

@@ -52,7 +52,7 @@ static_assert(sizeof(void*) != 4 ||
                    offsetof(BandLoopArm, count_from) == 92 && offsetof(BandLoopArm, drawn) == 96 &&
                    offsetof(BandLoopArm, projected) == 100 && offsetof(BandLoopArm, head) == 104),
               "band loop layout: every offset the assembly uses");
-static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) == 96, "slot records are 96 bytes");
+static_assert(sizeof(void*) != 4 || sizeof(KernelTriangle) < 256, "slot records: one mov of their size");
 /// draw_band_v7m() hands a listed triangle back with this bit set when its set-up said generic.
 constexpr uint32_t kGenericHandBack = 0x10000;
 static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(KernelSetupIo, area) + sizeof(int32_t), "io area and out: one strd");
@@ -88,8 +88,8 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "beq    1f\n\t"                         // nothing carried
         "ldrb   r0, [r0]\n\t"
         "ldr    r1, [r5, #0]\n\t"
-        "add    r0, r0, r0, lsl #1\n\t"
-        "add    r0, r1, r0, lsl #5\n\t"
+        "mov    r2, %[rec]\n\t"
+        "mla    r0, r0, r2, r1\n\t"
         "ldrh   r6, [r0, %[tri]]\n"              // the next carried triangle
         "1:\n\t"
         "ldr    r0, [r5, #100]\n\t"             // the loop head: with the clip test unless every vertex
@@ -153,8 +153,8 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "beq    90f\n\t"                        // no free slot: back to C++ (the spare)
         "ldrb   r3, [r3, #-1]\n\t"              // the slot on top
         "ldr    r12, [r5, #0]\n\t"
-        "add    r3, r3, r3, lsl #1\n\t"
-        "add    r11, r12, r3, lsl #5\n\t"       // its record: pool + 96 s
+        "mov    r11, %[rec]\n\t"
+        "mla    r11, r3, r11, r12\n\t"         // its record: pool + s records
         // FaceShading::color565(), as in draw_flat_v7m: first, so that the set-up draws at once; the
         // vertices stay in r0 r1 r2, r9 lends itself and comes back from d.
         "add    r12, r4, r4, lsl #1\n\t"
@@ -208,8 +208,8 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "ldm    r12, {r0-r10, lr}\n"            // as at the end of a resume
         "61:\n\t"                               // r12 d, r0..r10 and lr its first twelve words (BandLoopArm)
         "ldrb   r11, [r5], #1\n\t"              // the slot
-        "add    r6, r11, r11, lsl #1\n\t"
-        "add    r0, r0, r6, lsl #5\n\t"         // its record: pool + 96 s
+        "mov    r6, %[rec]\n\t"
+        "mla    r0, r11, r6, r0\n\t"           // its record: pool + s records
         "ldrh   r6, [r0, %[tri]]\n\t"
         "cmp    r6, r4\n\t"
         "bhs    65f\n\t"                        // after the listed triangle: stop
@@ -262,7 +262,7 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "ldr    r9, [r5, #56]\n\t"              // d->next
         "ldr    pc, [r5, #104]\n"
         :
-        : [draw] "i"(kernel_draw_v7m),
+        : [draw] "i"(kernel_draw_v7m), [rec] "i"(sizeof(KernelTriangle)),
           [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
           [mid] "i"(offsetof(KernelTriangle, mid)), [end] "i"(offsetof(KernelTriangle, end)),
           [color] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, color)),

@@ -6,7 +6,7 @@
 namespace hider {
 
 #if defined(HIDER_RV32_ASM)
-static_assert(sizeof(KernelTriangle) == 96, "resume_carried_rv32() indexes slots as 3 x 32 bytes");
+static_assert(sizeof(KernelTriangle) < 2048, "resume_carried_rv32(): a slot's size in one li");
 
 /// resume_carried() in RV32IM. s4..s11: cur, cur_end, nxt, free_top, pool, limit, the band's first depth
 /// row, its end row; ra the stride; a3 the colour offset. Per record, run_kernel_triangle_rv32()'s
@@ -45,9 +45,8 @@ HIDER_NAKED inline uint32_t resume_carried_rv32(detail::CarriedSlots*, uint32_t,
         "20:\n\t"                           // a record
         "beq    s4, s5, 79f\n\t"
         "lbu    a1, 0(s4)\n\t"              // its slot
-        "slli   t1, a1, 1\n\t"
-        "add    t1, t1, a1\n\t"
-        "slli   t1, t1, 5\n\t"              // slot * 96
+        "li     t1, %[rec]\n\t"
+        "mul    t1, t1, a1\n\t"             // slot * the record's size
         "add    a0, s8, t1\n\t"
         "lhu    t2, %[tri](a0)\n\t"
         "bgeu   t2, s9, 80f\n\t"            // from the limit on: pending
@@ -141,7 +140,7 @@ HIDER_NAKED inline uint32_t resume_carried_rv32(detail::CarriedSlots*, uint32_t,
         "addi   sp, sp, 80\n\t"
         "ret\n"
         :
-        : [tri] "i"(offsetof(KernelTriangle, tri)), [row] "i"(offsetof(KernelTriangle, row)),
+        : [rec] "i"(sizeof(KernelTriangle)), [tri] "i"(offsetof(KernelTriangle, tri)), [row] "i"(offsetof(KernelTriangle, row)),
           [mid] "i"(offsetof(KernelTriangle, mid)), [end] "i"(offsetof(KernelTriangle, end)),
           [dzdx] "i"(offsetof(RowKernel, dzdx)), [color] "i"(offsetof(RowKernel, color)), HIDER_RV32_ROWS_OPERANDS);
 }

@@ -6,9 +6,9 @@
 namespace hider {
 
 #if defined(HIDER_ARMV6M)
-static_assert(sizeof(KernelTriangle) == 96 && offsetof(KernelTriangle, row) < 64 && offsetof(KernelTriangle, end) < 64 &&
+static_assert(sizeof(KernelTriangle) < 256 && offsetof(KernelTriangle, row) < 64 && offsetof(KernelTriangle, end) < 64 &&
                   offsetof(KernelTriangle, mid) < 64,
-              "resume_carried_v6m(): slots of 96 bytes, rows within ldrh's reach");
+              "resume_carried_v6m(): a slot's size in one movs, rows within ldrh's reach");
 
 /// resume_carried() in Thumb-1 for ARMv6-M. The row loop's registers are run_kernel_triangle_v6m()'s
 /// (HIDER_V6M_ROWS; r8 the colour offset, set once); the run's state lives on the stack: 0..8 the row
@@ -43,7 +43,7 @@ HIDER_NAKED inline uint32_t resume_carried_v6m(detail::CarriedSlots*, uint32_t, 
         "b      79f\n"                      // (79 and 80 lie past a conditional branch's reach)
         "21:\n\t"
         "ldrb   r5, [r6]\n\t"               // its slot
-        "movs   r4, #96\n\t"
+        "movs   r4, %[rec]\n\t"
         "muls   r4, r5, r4\n\t"
         "ldr    r0, [sp, #32]\n\t"
         "adds   r0, r0, r4\n\t"             // its record
@@ -150,7 +150,7 @@ HIDER_NAKED inline uint32_t resume_carried_v6m(detail::CarriedSlots*, uint32_t, 
         "add    sp, sp, #52\n\t"
         HIDER_V6M_RESTORE_ALL
         :
-        : [tri] "i"(offsetof(KernelTriangle, tri)), [row] "i"(offsetof(KernelTriangle, row)),
+        : [rec] "i"(sizeof(KernelTriangle)), [tri] "i"(offsetof(KernelTriangle, tri)), [row] "i"(offsetof(KernelTriangle, row)),
           [mid] "i"(offsetof(KernelTriangle, mid)), [end] "i"(offsetof(KernelTriangle, end)),
           [dzdx] "i"(offsetof(RowKernel, dzdx)), [color] "i"(offsetof(RowKernel, color)), HIDER_V6M_ROWS_OPERANDS);
 }

@@ -34,8 +34,7 @@ static_assert(sizeof(void*) != 4 || (offsetof(KernelTriangle, top) == 56 && offs
                   offsetof(RowKernel, dzdx) == 48 && offsetof(KernelTriangle, next_x) == 64 &&
                   offsetof(KernelTriangle, next_g) == 68 && offsetof(KernelTriangle, next_a) == 72 &&
                   offsetof(KernelTriangle, next_m) == 76 && offsetof(KernelTriangle, next_step) == 80 &&
-                  offsetof(KernelTriangle, next_z) == 84 && offsetof(KernelTriangle, next_dz) == 88 &&
-                  offsetof(KernelTriangle, next_left) == 94),
+                  offsetof(KernelTriangle, next_left) == 86),
               "kernel record layout (the Thumb-1 and RV32 set-ups)");
 
 }  // namespace hider

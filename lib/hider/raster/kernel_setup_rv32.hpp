@@ -419,17 +419,7 @@ HIDER_NAKED inline uint32_t kernel_setup_rv32(const ScreenVertex*, const ScreenV
         "sw     a3, 76(s1)\n\t"               // next_m
         "slli   a6, a4, 1\n\t"
         "add    a6, a6, t6\n\t"
-        "sw     a6, 80(s1)\n\t"               // next_step
-        "beqz   s2, 1f\n\t"
-        "mul    a6, t3, a0\n\t"
-        "mul    a7, t4, a5\n\t"
-        "add    a6, a6, a7\n\t"
-        "add    a6, a6, t5\n\t"
-        "sw     a6, 84(s1)\n\t"               // next_z
-        "mul    a6, t3, a4\n\t"
-        "add    a6, a6, t4\n\t"
-        "sw     a6, 88(s1)\n"                 // next_dz
-        "1:\n\t"
+        "sw     a6, 80(s1)\n\t"               // next_step (a left one's depth: the kernel's switch)
         "jr     t2\n"
         :
         : [y_first] "i"(offsetof(KernelBand, y_first)), [y_last] "i"(offsetof(KernelBand, y_last)),

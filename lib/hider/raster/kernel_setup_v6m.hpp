@@ -31,7 +31,7 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         ".equ hks_k_dzdx, %c[dzdx]\n\t" ".equ hks_k_next_x, %c[next_x]\n\t" ".equ hks_k_next_g, %c[next_g]\n\t"
         ".equ hks_k_next_a, %c[next_a]\n\t"
         ".equ hks_k_next_m, %c[next_m]\n\t" ".equ hks_k_next_step, %c[next_step]\n\t"
-        ".equ hks_k_next_z, %c[next_z]\n\t" ".equ hks_k_next_dz, %c[next_dz]\n\t"
+        ".equ hks_k_next_left, %c[next_left]\n\t"
         :
         : [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
           [mid] "i"(offsetof(KernelTriangle, mid)), [end] "i"(offsetof(KernelTriangle, end)),
@@ -44,7 +44,7 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
           [dzdx] "i"(offsetof(RowKernel, dzdx)), [next_x] "i"(offsetof(KernelTriangle, next_x)),
           [next_g] "i"(offsetof(KernelTriangle, next_g)), [next_a] "i"(offsetof(KernelTriangle, next_a)),
           [next_m] "i"(offsetof(KernelTriangle, next_m)), [next_step] "i"(offsetof(KernelTriangle, next_step)),
-          [next_z] "i"(offsetof(KernelTriangle, next_z)), [next_dz] "i"(offsetof(KernelTriangle, next_dz)));
+          [next_left] "i"(offsetof(KernelTriangle, next_left)));
     __asm__ volatile(
         ".syntax unified\n\t"
         ".equ hks_v0, 0\n\t" ".equ hks_v1, 4\n\t" ".equ hks_v2, 8\n\t" ".equ hks_area, 12\n\t"
@@ -328,7 +328,7 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         "2:\n\t"
         "ldr    r6, [sp, #hks_out]\n\t"
         "ldr    r0, [sp, #hks_odd]\n\t"
-        "movs   r1, #94\n\t"
+        "movs   r1, #hks_k_next_left\n\t"
         "strb   r0, [r6, r1]\n\t"             // next_left: the short edges are on the left when odd
         // The lower short edge from the middle row, when it starts inside [y0, y1).
         "ldr    r2, [sp, #hks_y0]\n\t"
@@ -444,12 +444,7 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         "bx     lr\n"
         "48:\n\t"                            // the next (lower short) edge, r2 = the middle row
         "hks_edge hks_k_next_x, hks_k_next_g, hks_k_next_a, hks_k_next_m, hks_k_next_step\n\t"
-        "ldr    r1, [sp, #hks_odd]\n\t"
-        "cmp    r1, #0\n\t"
-        "beq    1f\n\t"
-        "hks_depth hks_k_next_z, hks_k_next_dz\n"   // its depth when it is a left edge
-        "1:\n\t"
-        "bx     lr\n"
+        "bx     lr\n"                        // (a left one's depth: the kernel's switch)
         ".purgem hks_edge\n\t"
         ".purgem hks_depth\n"
         // floor(n / a) and n - floor(n / a) a for a > 0: r0 n, r1 a -> r0, r1. __aeabi_uidivmod (its

@@ -371,18 +371,7 @@ namespace hider {
     "ldr    r8, [r4, %[stride]]\n\t"                                                                 \
     "add    r8, r8, r12, lsl #1\n\t"      /* step = 2 q + stride */                                  \
     "add    r9, r6, %[next_a]\n\t"                                                                   \
-    "stm    r9, {r2, r3, r8}\n\t"                                                                    \
-    "ldr    r9, [sp, #24]\n\t"                                                                       \
-    "cmp    r9, #0\n\t"                                                                              \
-    "beq    17f\n\t"                                                                                 \
-    "ldm    sp, {r1, r2, r3, r5, r7}\n\t" /* the next left edge's depth and depth step */            \
-    "sub    r0, r0, r2\n\t"                                                                          \
-    "mla    r3, r1, r0, r3\n\t"                                                                      \
-    "ldr    r2, [sp, #20]\n\t"            /* mid */                                                  \
-    "sub    r2, r2, r7\n\t"                                                                          \
-    "mla    r3, r5, r2, r3\n\t"                                                                      \
-    "mla    r5, r1, r12, r5\n\t"                                                                     \
-    "strd   r3, r5, [r6, %[next_z]]\n\t"                                                          \
+    "stm    r9, {r2, r3, r8}\n\t"        /* a m step (a left one's depth: the kernel's switch) */    \
     "b      17f\n"
 
 #define HIDER_V7M_SETUP_EXITS \
@@ -421,7 +410,7 @@ namespace hider {
     [lx] "i"(offsetof(RowKernel, lx)), [lz] "i"(offsetof(RowKernel, lz)), [la] "i"(offsetof(RowKernel, la)), \
     [ldz] "i"(offsetof(RowKernel, ldz)), [rx] "i"(offsetof(RowKernel, rx)), [ra] "i"(offsetof(RowKernel, ra)), \
     [next_x] "i"(offsetof(KernelTriangle, next_x)), [next_a] "i"(offsetof(KernelTriangle, next_a)), \
-    [next_z] "i"(offsetof(KernelTriangle, next_z)), [next_left] "i"(offsetof(KernelTriangle, next_left))
+[next_left] "i"(offsetof(KernelTriangle, next_left))
 
 /// Returns the KernelSetup value. Stack while the plane is computed: sorted vertices and rows (10 words)
 /// below v0 v1 v2 |area| (4 words, the higher addresses); during the walkers the plane (5 words) below

@@ -105,10 +105,6 @@ __attribute__((always_inline)) inline KernelSetup kernel_setup_portable(const Sc
     if (upper && row_mid < y1) {  // the lower short edge, from the middle row on
         const EdgeWalker w = walker(xm, ym, xb, yb, row_mid);
         out.next_x = 2 * w.px; out.next_g = w.g - w.a; out.next_a = w.a; out.next_m = w.m; out.next_step = 2 * w.q + stride;
-        if (!long_left) {
-            out.next_z = plane.at(w.px, row_mid);
-            out.next_dz = plane.dzdy + plane.dzdx * static_cast<uint32_t>(w.q);
-        }
     }
     return KernelSetup::kernel;
 }

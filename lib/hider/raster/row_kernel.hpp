@@ -46,20 +46,33 @@ static_assert(sizeof(void*) != 4 || (offsetof(KernelTarget, stride_bytes) == 4),
 
 /// A triangle for the row kernel from row `row` on (kernel_triangle.hpp sets it up). Until `mid`, the
 /// short edge is the one above the middle vertex; from `mid` on, `next` (kernel form: x, g - a, a, m,
-/// step, and for a left edge its depth and depth step) replaces it. Rows end at `end`. The layout is
+/// step) replaces it. A left one takes its depth and depth step from the edge it replaces on the middle
+/// row, the depth plane being affine modulo 2^32 (next_edge_depth()). Rows end at `end`. The layout is
 /// the assembly's contract.
 struct KernelTriangle {
     RowKernel k;
     int16_t top;  ///< the triangle's first row, unclamped
     int16_t row, mid, end;
     int32_t next_x, next_g, next_a, next_m, next_step;
-    uint32_t next_z, next_dz;
     uint16_t tri;    ///< the mesh triangle (binned.hpp keeps carried set-ups in mesh order)
     bool next_left;  ///< `next` is the left edge (the long edge runs on the right)
 };
 static_assert(sizeof(void*) != 4 || (offsetof(KernelTriangle, top) == 56 && offsetof(KernelTriangle, next_x) == 64 &&
-                                     offsetof(KernelTriangle, next_left) == 94 && sizeof(KernelTriangle) == 96),
+                                     offsetof(KernelTriangle, next_step) == 80 && offsetof(KernelTriangle, tri) == 84 &&
+                                     offsetof(KernelTriangle, next_left) == 86 && sizeof(KernelTriangle) == 88),
               "kernel triangle layout");
+
+/// The depth and depth step of the lower short edge on the left, from the left edge it replaces on the
+/// middle row: z and dz of that edge there, its step and the new one (2 q + stride, the same stride),
+/// and the two edges' byte offsets in the row. The plane is affine modulo 2^32 (plane.hpp), so these
+/// are exactly plane.at() at the new edge and dz/dy + q dz/dx for its q.
+struct NextDepth {
+    uint32_t z, dz;
+};
+__attribute__((always_inline)) inline NextDepth next_edge_depth(uint32_t z, uint32_t dz, uint32_t dzdx, int32_t old_x,
+                                                                int32_t new_x, int32_t old_step, int32_t new_step) {
+    return {z + dzdx * static_cast<uint32_t>((new_x - old_x) >> 1), dz + dzdx * static_cast<uint32_t>((new_step - old_step) >> 1)};
+}
 
 /// The asm operands of the row loops' edge constants and lower short edge, by field (the Thumb-1 and RV32
 /// loops address them from the record; the Thumb-2 one from its right edge, HIDER_V7M_ROWS_OPERANDS).
@@ -70,8 +83,7 @@ static_assert(sizeof(void*) != 4 || (offsetof(KernelTriangle, top) == 56 && offs
     [rstep] "i"(offsetof(RowKernel, rstep)), [n_left] "i"(offsetof(KernelTriangle, next_left)),            \
     [n_x] "i"(offsetof(KernelTriangle, next_x)), [n_g] "i"(offsetof(KernelTriangle, next_g)),              \
     [n_a] "i"(offsetof(KernelTriangle, next_a)), [n_m] "i"(offsetof(KernelTriangle, next_m)),              \
-    [n_step] "i"(offsetof(KernelTriangle, next_step)), [n_z] "i"(offsetof(KernelTriangle, next_z)),        \
-    [n_dz] "i"(offsetof(KernelTriangle, next_dz))
+    [n_step] "i"(offsetof(KernelTriangle, next_step))
 
 /// The row loop in C++: `rows` >= 1 rows from depth row `zrow` of target `t`; leaves k's edges and
 /// depth on the next row and returns that row's depth pointer.
@@ -138,9 +150,10 @@ inline uint16_t* run_kernel_triangle_portable(KernelTriangle& t, uint16_t* zrow,
         if (t.mid < t.end) {  // on the middle row (perhaps a later call's first): the lower short edge takes over
             RowKernel& k = t.k;
             if (t.next_left) {
+                const NextDepth d = next_edge_depth(k.lz, k.ldz, k.dzdx, k.lx, t.next_x, k.lstep, t.next_step);
                 k.lx = t.next_x; k.lg = t.next_g; k.la = t.next_a; k.lm = t.next_m; k.lstep = t.next_step;
-                k.lz = t.next_z;
-                k.ldz = t.next_dz;
+                k.lz = d.z;
+                k.ldz = d.dz;
             } else {
                 k.rx = t.next_x; k.rg = t.next_g; k.ra = t.next_a; k.rm = t.next_m; k.rstep = t.next_step;
             }

@@ -75,15 +75,22 @@ namespace hider {
     "lw     s3, %[n_g](a0)\n\t"                                                                       \
     "lw     a1, %[n_a](a0)\n\t"                                                                       \
     "beqz   s1, 9f\n\t"                                                                               \
-    "mv     a4, s2\n\t"                 /* the lower edge on the left */                              \
+    "sub    s1, s2, a4\n\t"             /* the lower edge on the left */                              \
+    "srai   s1, s1, 1\n\t"              /* its px less the old edge's */                              \
+    "mul    s1, s1, t6\n\t"                                                                           \
+    "add    a6, a6, s1\n\t"             /* its z (next_edge_depth()) */                               \
+    "mv     a4, s2\n\t"                                                                               \
     "mv     a5, s3\n\t"                                                                               \
-    "lw     a6, %[n_z](a0)\n\t"                                                                       \
     "sw     a1, %[la](a0)\n\t"                                                                        \
     "lw     t1, %[n_m](a0)\n\t"                                                                       \
     "sw     t1, %[lm](a0)\n\t"                                                                        \
-    "lw     t2, %[n_step](a0)\n\t"                                                                    \
+    "lw     s1, %[n_step](a0)\n\t"                                                                    \
+    "sub    s2, s1, t2\n\t"                                                                           \
+    "srai   s2, s2, 1\n\t"              /* its q less the old edge's */                               \
+    "mul    s2, s2, t6\n\t"                                                                           \
+    "add    t3, t3, s2\n\t"             /* its depth step */                                          \
+    "mv     t2, s1\n\t"                                                                               \
     "sw     t2, %[lstep](a0)\n\t"                                                                     \
-    "lw     t3, %[n_dz](a0)\n\t"                                                                      \
     "sw     t3, %[ldz](a0)\n\t"                                                                       \
     "j      10f\n"                                                                                    \
     "9:\n\t"                                                                                          \

@@ -66,17 +66,28 @@ namespace hider {
     "cmp    r6, #0\n\t"                                                                               \
     "ldr    r6, [sp]\n\t"               /* the middle row */                                          \
     "beq    9f\n\t"                                                                                   \
-    "ldr    r1, [r0, %[n_x]]\n\t"       /* the lower edge on the left */                              \
-    "adds   r1, r1, r6\n\t"                                                                           \
+    "ldr    r2, [r0, %[n_x]]\n\t"       /* the lower edge on the left */                              \
+    "adds   r2, r2, r6\n\t"                                                                           \
+    "subs   r1, r2, r1\n\t"                                                                           \
+    "asrs   r1, r1, #1\n\t"             /* its px less the old edge's */                              \
+    "mov    r6, r9\n\t"                                                                               \
+    "muls   r1, r6, r1\n\t"                                                                           \
+    "adds   r3, r3, r1\n\t"             /* its z (next_edge_depth()) */                               \
+    "movs   r1, r2\n\t"                                                                               \
+    "ldr    r2, [r0, %[n_step]]\n\t"                                                                  \
+    "ldr    r6, [r0, %[lstep]]\n\t"                                                                   \
+    "str    r2, [r0, %[lstep]]\n\t"                                                                   \
+    "subs   r2, r2, r6\n\t"                                                                           \
+    "asrs   r2, r2, #1\n\t"             /* its q less the old edge's */                               \
+    "mov    r6, r9\n\t"                                                                               \
+    "muls   r2, r6, r2\n\t"                                                                           \
+    "ldr    r6, [r0, %[ldz]]\n\t"                                                                     \
+    "adds   r2, r2, r6\n\t"                                                                           \
+    "str    r2, [r0, %[ldz]]\n\t"       /* its depth step */                                          \
     "ldr    r2, [r0, %[n_a]]\n\t"                                                                     \
     "str    r2, [r0, %[la]]\n\t"                                                                      \
     "ldr    r2, [r0, %[n_m]]\n\t"                                                                     \
     "str    r2, [r0, %[lm]]\n\t"                                                                      \
-    "ldr    r2, [r0, %[n_step]]\n\t"                                                                  \
-    "str    r2, [r0, %[lstep]]\n\t"                                                                   \
-    "ldr    r2, [r0, %[n_dz]]\n\t"                                                                    \
-    "str    r2, [r0, %[ldz]]\n\t"                                                                     \
-    "ldr    r3, [r0, %[n_z]]\n\t"                                                                     \
     "ldr    r2, [r0, %[n_g]]\n\t"                                                                     \
     "b      10f\n"                                                                                    \
     "9:\n\t"                                                                                          \
@@ -144,7 +155,9 @@ HIDER_NAKED inline uint16_t* run_kernel_triangle_v6m(KernelTriangle*, uint16_t*,
         "mov    r6, r2\n"                   // stop = min(end, row_stop)
         "1:\n\t"
         "subs   r2, r6, r4\n\t"             // n rows
-        "ble    95f\n\t"
+        "bgt    94f\n\t"
+        "b      95f\n"                     // (past a conditional branch's reach)
+        "94:\n\t"
         "strh   r6, [r0, %[row]]\n\t"       // the row after this call
         HIDER_V6M_PHASES
         "2:\n\t"

@@ -30,7 +30,7 @@ namespace hider {
 /// compare) enters a straight run of 16 pixels by a table branch at the (17 - n)-th and falls out of it
 /// into the edge steps; a longer one takes a 16-pixel loop entered Duff-style, a reversed one (rp < lp)
 /// none. Uses local labels 71..79, 98, 99, 100..116 and 200..215, and the operands ra, n_left, n_x, n_g, n_a,
-/// n_z, n_dz.
+/// lstep_ra.
 #define HIDER_V7M_ROWS \
     "72:\n\t"                                /* row */ \
     "sub    r11, r4, r1\n\t"                 /* rp - lp: twice the pixels */ \
@@ -88,12 +88,18 @@ namespace hider {
     "cmp    r9, #0\n\t" \
     "beq    77f\n\t" \
     "ldr    r9, [r0, %[n_x]]\n\t"            /* the lower edge on the left */ \
-    "add    r1, r12, r9\n\t" \
-    "ldr    r2, [r0, %[n_g]]\n\t" \
-    "ldr    r3, [r0, %[n_z]]\n\t" \
+    "add    r9, r12, r9\n\t" \
+    "sub    r1, r9, r1\n\t" \
+    "asr    r1, r1, #1\n\t"                  /* its px less the old edge's */ \
+    "mla    r3, r1, r8, r3\n\t"              /* its z (next_edge_depth()) */ \
+    "mov    r1, r9\n\t" \
     "add    r9, r0, %[n_a]\n\t" \
     "ldm    r9, {r9, r11, r12}\n\t"          /* a m step */ \
-    "ldr    lr, [r0, %[n_dz]]\n\t" \
+    "ldrd   r2, lr, [r0, %[lstep_ra]]\n\t"   /* the old step and depth step */ \
+    "sub    r2, r12, r2\n\t" \
+    "asr    r2, r2, #1\n\t"                  /* its q less the old edge's */ \
+    "mla    lr, r2, r8, lr\n\t"              /* its depth step */ \
+    "ldr    r2, [r0, %[n_g]]\n\t" \
     "stmdb  r0, {r9, r11, r12, lr}\n\t"      /* la lm lstep ldz */ \
     "b      79f\n" \
     "77:\n\t" \
@@ -153,8 +159,7 @@ namespace hider {
     [n_x] "i"(offsetof(KernelTriangle, next_x) - offsetof(RowKernel, ra)), \
     [n_g] "i"(offsetof(KernelTriangle, next_g) - offsetof(RowKernel, ra)), \
     [n_a] "i"(offsetof(KernelTriangle, next_a) - offsetof(RowKernel, ra)), \
-    [n_z] "i"(offsetof(KernelTriangle, next_z) - offsetof(RowKernel, ra)), \
-    [n_dz] "i"(offsetof(KernelTriangle, next_dz) - offsetof(RowKernel, ra))
+    [lstep_ra] "i"(offsetof(RowKernel, lstep) - offsetof(RowKernel, ra))
 
 /// Thumb-2. In the row loop: r0 the right edge's constants (offset 36) with the left edge's just below
 /// (load-multiple decrement-before) and `next` above, r1..r5 lp lg lz rp rg, r6 rows left in this
