@@ -19,11 +19,11 @@ namespace scene = hider::scenes::city_street_160x128;
 namespace scene = hider::scenes::torus_160x128;
 #endif
 // 1,040 band pixels hold 10 rows of the torus's 104-column window (6 of the full width, should a frame
-// need it) and leave the 16 KB room for 44 carried slots: a continuation without a slot is set up again,
+// need it) and leave the 16 KB room for 45 carried slots: a continuation without a slot is set up again,
 // which costs more than a row (README.md, "Bands": other choices, measured with BANDS_PIXELS and
 // BANDS_SLOTS).
 #ifndef BANDS_SLOTS
-#define BANDS_SLOTS 44
+#define BANDS_SLOTS 45
 #endif
 #ifndef BANDS_PIXELS
 #define BANDS_PIXELS 1040

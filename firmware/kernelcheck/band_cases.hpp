@@ -6,7 +6,8 @@
 // 3 elements longer than the frame's width (the
 // band buffer's stride: the pads must stay as they are), with 0 to 5 carried slots: set-ups are carried,
 // resumed, refused a slot and set up again. run_band_cases() draws each case through `draw` (on ARMv7-M
-// with the assembly band loop, on ARMv6-M and RV32 with the assembly resumes) and `twin` (the C++ loop) and digests every band, the frame's statistics
+// with the assembly band loop and binning pass, on ARMv6-M with the assembly resumes and binning pass, on
+// RV32 with the assembly resumes) and `twin` (the C++ loops) and digests every band, the frame's statistics
 // and the carried-slot figures.
 #pragma once
 #include <hider/raster/binned.hpp>

@@ -17,9 +17,10 @@
 //   without the assembly draw loop (Thumb-1 on ARMv6-M, Thumb-2 on ARMv7-M; on RV32 both are the C++
 //   loop): same frame and counts.
 // - kernelcheck::kBandCases random small scenes (band_cases.hpp) through the band renderer with and
-//   without the assembly band loop (Thumb-2 on ARMv7-M; on ARMv6-M and RV32 the C++ loop with the
-//   resumes in assembly, resume_carried_v6m() and resume_carried_rv32()), in bands of 1
-//   to 6 rows with 0 to 5 carried slots: same bands and counts.
+//   without the assembly band loop and binning pass (Thumb-2 on ARMv7-M; on ARMv6-M and RV32 the C++
+//   loop with the resumes in assembly, resume_carried_v6m() and resume_carried_rv32(), and on ARMv6-M
+//   the Thumb-1 binning pass, bin_triangles_v6m()), in bands of 1 to 6 rows with 0 to 5 carried
+//   slots: same bands and counts.
 // - kernelcheck::kResumeCases random runs of carried set-ups (resume_cases.hpp) through the M0+ and RV32
 //   assembly resumes (resume_carried_v6m(), resume_carried_rv32(); elsewhere resume_carried() twice) and
 //   resume_carried(): same buffers, slot lists, pending triangle and onward states.

@@ -168,6 +168,20 @@ HIDER_NAKED inline void fill_words_v7m(AliasWord*, AliasWord*, uint32_t, uint32_
         "pop    {r4-r11, pc}\n");
 }
 #elif defined(__arm__) && defined(__thumb__)
+/// n / 56 for n < 2^16 by a multiply (ARMv6-M has no divide instruction): fill_words()'s blocks.
+constexpr uint32_t v6m_blocks_of_56(uint32_t n) { return ((n >> 3) * 9363) >> 16; }
+
+/// fill_words()'s divisions by multiplies on ARMv6-M, checked for every value they meet: its blocks
+/// (v6m_blocks_of_56()) and fill_words_v6m()'s tail / 7 = (37 tail) >> 8 for a tail below 56.
+constexpr bool v6m_fill_divisions_exact() {
+    for (uint32_t n = 0; n < 65536; ++n)
+        if (v6m_blocks_of_56(n) != n / 56) return false;
+    for (uint32_t t = 0; t < 56; ++t)
+        if (((t * 37) >> 8) != t / 7) return false;
+    return true;
+}
+static_assert(v6m_fill_divisions_exact(), "fill_words_v6m()'s multiplies divide exactly");
+
 /// Stores `word` to [p, blocks_end), a whole number of 56-word blocks (eight 7-register store-multiples
 /// a pass), then to the `tail` < 56 words after it: tail / 7 store-multiples, entered by a computed jump
 /// into their ladder, and single stores for the rest.
@@ -238,9 +252,10 @@ inline void fill_words(void* p, size_t n, uint32_t word) {
     return;
 #elif defined(__arm__) && defined(__thumb__)
     // Cortex-M0/M0+: eight 7-register store-multiples per 56 words (GCC -Os emits one str per word, and
-    // shorter store-multiples cost more per word), the tail in 7-word ones too. n / 56 without a library
-    // division below 2^16 words (exact there: every band and every frame up to 256 x 256).
-    const size_t blocks = n < 65536 ? ((n >> 3) * 9363) >> 16 : n / 56;
+    // shorter store-multiples cost more per word), the tail in 7-word ones too. n / 56 by a multiply
+    // below 2^16 words, exact there (a 320 x 240 frame's 16-bit buffers hold 38,400 each), else the
+    // library's division.
+    const size_t blocks = n < 65536 ? detail::v6m_blocks_of_56(static_cast<uint32_t>(n)) : n / 56;
     detail::fill_words_v6m(w, w + blocks * 56, word, static_cast<uint32_t>(n - blocks * 56));
     return;
 #elif defined(__riscv) && __riscv_xlen == 32

@@ -39,16 +39,6 @@ static_assert(sizeof(Tri) == 6 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVe
 /// a subpixel row, without first shifting it to a pixel row.
 constexpr uint32_t band_scale_v(uint32_t rows) { return ((uint32_t{1} << 28) + rows - 1) / rows; }
 
-/// BinLoopArm::band_scale for `rows` rows a band: band_scale_v() on ARMv7-M; elsewhere (ARMv6-M, which
-/// has no 32 x 32 -> 64 multiply) ceil(2^20 / rows): the band of pixel row r < 2^10 is r * it >> 20, as
-/// bin_triangles() computes it in C++.
-constexpr uint32_t bin_scale(uint32_t rows) {
-#if defined(HIDER_ARMV7M)
-    return band_scale_v(rows);
-#else
-    return ((uint32_t{1} << 20) + rows - 1) / rows;
-#endif
-}
 }  // namespace detail
 
 #if defined(HIDER_ARMV7M)
@@ -149,6 +139,12 @@ HIDER_NAKED inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
         "mov    r0, #0\n\t"
         "pop    {r4-r11, pc}\n");
 }
+
+namespace detail {
+/// The chip's binning loop (bin_triangles()'s kAsm path) and its BinLoopArm::band_scale for `rows` rows a band.
+inline uint32_t bin_triangles_asm(uint32_t count, BinLoopArm* d) { return bin_triangles_v7m(count, d); }
+constexpr uint32_t bin_scale(uint32_t rows) { return band_scale_v(rows); }
+}  // namespace detail
 #endif
 
 #if defined(HIDER_ARMV6M)
@@ -223,7 +219,7 @@ HIDER_NAKED inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
 /// bin_triangles()'s loop in Thumb-1, as bin_triangles_v7m(): links triangles count - 1 down to 0 and
 /// counts the culled ones into d->culled; returns t + 1 for the first triangle t with a vertex outside a
 /// clip plane, 0 when done. Registers: r4 the triangle, r5 its Tri, r6 the vertices, r8 cull_above, r9
-/// the culled count, r10 d, r11 the constant 1, r12 scratch.
+/// the culled count, r10 d, r11 the constant 1, r0-r3, r7 and r12 scratch.
 HIDER_NAKED inline uint32_t bin_triangles_v6m(uint32_t, detail::BinLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
@@ -294,6 +290,14 @@ HIDER_NAKED inline uint32_t bin_triangles_v6m(uint32_t, detail::BinLoopArm*) {
         "10:\n\t"
         HIDER_V6M_RESTORE_ALL);
 }
+
+namespace detail {
+/// The chip's binning loop (bin_triangles()'s kAsm path) and its BinLoopArm::band_scale for `rows` rows a
+/// band: ceil(2^20 / rows) (no 32 x 32 -> 64 multiply here), the band of pixel row r < 2^10 being
+/// r * it >> 20, as bin_triangles() computes it in C++.
+inline uint32_t bin_triangles_asm(uint32_t count, BinLoopArm* d) { return bin_triangles_v6m(count, d); }
+constexpr uint32_t bin_scale(uint32_t rows) { return ((uint32_t{1} << 20) + rows - 1) / rows; }
+}  // namespace detail
 #endif
 
 }  // namespace hider

@@ -134,12 +134,7 @@ __attribute__((noinline)) uint32_t bin_triangles(const View& view, const Mesh& m
         const uint32_t projected = all_projected(vp, mesh.positions.size());  // one scan a frame
         BinLoopArm d{y_lift, height * kSubpixel - 1, bin_scale(static_cast<uint32_t>(rows)), head, next,
                      mesh.tris.data(), vp, cull_above, 0, projected};
-#if defined(HIDER_ARMV7M)
-        constexpr auto bin_loop = bin_triangles_v7m;
-#else
-        constexpr auto bin_loop = bin_triangles_v6m;
-#endif
-        for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); (i = bin_loop(i, &d)) != 0;) {
+        for (uint32_t i = static_cast<uint32_t>(mesh.tris.size()); (i = bin_triangles_asm(i, &d)) != 0;) {
             --i;  // a vertex of triangle i lies outside a clip plane
             const int32_t first = first_row_clipped(clipped, i);
             if (first > last) continue;

@@ -442,7 +442,7 @@ HIDER_NAKED inline uint32_t kernel_setup_v6m(const ScreenVertex*, const ScreenVe
         "46:\n\t"                            // the right edge
         "hks_edge hks_k_rx, hks_k_rg, hks_k_ra, hks_k_rm, hks_k_rstep\n\t"
         "bx     lr\n"
-        "48:\n\t"                            // the next (lower short) edge, r2 = the middle row
+        "48:\n\t"                            // the next (lower short) edge
         "hks_edge hks_k_next_x, hks_k_next_g, hks_k_next_a, hks_k_next_m, hks_k_next_step\n\t"
         "bx     lr\n"                        // (a left one's depth: the kernel's switch)
         ".purgem hks_edge\n\t"

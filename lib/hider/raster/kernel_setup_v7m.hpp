@@ -410,7 +410,7 @@ namespace hider {
     [lx] "i"(offsetof(RowKernel, lx)), [lz] "i"(offsetof(RowKernel, lz)), [la] "i"(offsetof(RowKernel, la)), \
     [ldz] "i"(offsetof(RowKernel, ldz)), [rx] "i"(offsetof(RowKernel, rx)), [ra] "i"(offsetof(RowKernel, ra)), \
     [next_x] "i"(offsetof(KernelTriangle, next_x)), [next_a] "i"(offsetof(KernelTriangle, next_a)), \
-[next_left] "i"(offsetof(KernelTriangle, next_left))
+    [next_left] "i"(offsetof(KernelTriangle, next_left))
 
 /// Returns the KernelSetup value. Stack while the plane is computed: sorted vertices and rows (10 words)
 /// below v0 v1 v2 |area| (4 words, the higher addresses); during the walkers the plane (5 words) below
