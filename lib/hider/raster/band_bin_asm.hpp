@@ -148,6 +148,16 @@ constexpr uint32_t bin_scale(uint32_t rows) { return band_scale_v(rows); }
 #endif
 
 #if defined(HIDER_ARMV6M)
+/// HIDER_V6M_BIN_FETCH: the triangle below r5 (r5 steps down to it): its vertices' byte offsets in r0 r1 r2.
+#define HIDER_V6M_BIN_FETCH \
+    "subs   r5, r5, #6\n\t" \
+    "ldrh   r0, [r5, #0]\n\t" \
+    "ldrh   r1, [r5, #2]\n\t" \
+    "ldrh   r2, [r5, #4]\n\t" \
+    "lsls   r0, r0, #3\n\t" \
+    "lsls   r1, r1, #3\n\t" \
+    "lsls   r2, r2, #3\n\t"
+
 /// HIDER_V6M_BIN_LINK: bin_triangles_v6m()'s loop from the byte offsets r0 r1 r2 of a drawable
 /// triangle's vertices on: the area, the cull, the link into its band's list, the step to the triangle
 /// below (back to local label 1; to the caller's local label 7, defined after it, when none is left).
@@ -244,13 +254,7 @@ HIDER_NAKED inline uint32_t bin_triangles_v6m(uint32_t, detail::BinLoopArm*) {
         "cmp    r2, #0\n\t"
         "bne    3f\n"                             // every vertex projected: the loop without the clip test
         "1:\n\t"
-        "subs   r5, r5, #6\n\t"
-        "ldrh   r0, [r5, #0]\n\t"
-        "ldrh   r1, [r5, #2]\n\t"
-        "ldrh   r2, [r5, #4]\n\t"
-        "lsls   r0, r0, #3\n\t"
-        "lsls   r1, r1, #3\n\t"
-        "lsls   r2, r2, #3\n\t"
+        HIDER_V6M_BIN_FETCH
         "adds   r3, r0, #4\n\t"
         "ldr    r3, [r6, r3]\n\t"
         "cmp    r3, #0\n\t"
@@ -273,13 +277,7 @@ HIDER_NAKED inline uint32_t bin_triangles_v6m(uint32_t, detail::BinLoopArm*) {
         "b      7f\n"
         "3:\n"
         "1:\n\t"
-        "subs   r5, r5, #6\n\t"
-        "ldrh   r0, [r5, #0]\n\t"
-        "ldrh   r1, [r5, #2]\n\t"
-        "ldrh   r2, [r5, #4]\n\t"
-        "lsls   r0, r0, #3\n\t"
-        "lsls   r1, r1, #3\n\t"
-        "lsls   r2, r2, #3\n"
+        HIDER_V6M_BIN_FETCH
         HIDER_V6M_BIN_LINK
         "7:\n\t"
         "mov    r1, r10\n\t"
