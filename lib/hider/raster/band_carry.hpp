@@ -52,6 +52,7 @@ public:
         kband_.color_less_2 = loop_.color_less_2;
         loop_.stride_bytes = bt_.target.stride_bytes;
         loop_.pool = pool_;
+        loop_.record_size = sizeof(KernelTriangle);
         loop_.free_base = free_base_;
         loop_.projected = projected;
         loop_.depth = band_.depth;

@@ -503,7 +503,7 @@ HIDER_NAKED inline uint32_t kernel_draw_v7m(const ScreenVertex*, const ScreenVer
         :
         : HIDER_V7M_SETUP_OPERANDS, [b_stop] "i"(offsetof(KernelBand, stop)),
           [b_color] "i"(offsetof(KernelBand, color_less_2)),
-          HIDER_V7M_ROWS_OPERANDS);
+          HIDER_V7M_ROWS_OPERANDS, HIDER_V7M_ROWS_STACK(0));
 }
 #endif
 

@@ -23,14 +23,15 @@ namespace hider {
 
 /// HIDER_V7M_ROWS: the row loop of run_kernel_triangle_v7m(), shared with draw_band_v7m()'s resumes
 /// (band_loop_asm.hpp) and kernel_draw_v7m(). Entry: r0 the record + ra, r1..r5 lp lg lz rp rg, r6 rows
-/// before a switch, r7 the colour offset less 2, r8 dzdx, r10 the colour; at sp the middle row's depth
-/// pointer, the rows after the switch (-1: none) and the depth row after the last. Exit: the record (r0)
+/// before a switch, r7 the colour offset less 2, r8 dzdx, r10 the colour; on the stack (its callers'
+/// HIDER_V7M_ROWS_STACK) the middle row's depth pointer, the rows after the switch (-1: none; -1 again
+/// after a switch) and the depth row after the last. Exit: the record (r0)
 /// holds the next row's edges and depth, r12 that row's depth pointer (every other register clobbered).
 /// r6 must be at least 1 (the row loop tests after its first row). A span of 0 to 16 pixels (one unsigned
 /// compare) enters a straight run of 16 pixels by a table branch at the (17 - n)-th and falls out of it
 /// into the edge steps; a longer one takes a 16-pixel loop entered Duff-style, a reversed one (rp < lp)
-/// none. Uses local labels 71..79, 98, 99, 100..116 and 200..215, and the operands ra, n_left, n_x, n_g, n_a,
-/// lstep_ra.
+/// none. Uses local labels 71..79, 98, 99, 100..116 and 200..215, the operands ra, n_left, n_x, n_g, n_a,
+/// lstep_ra, and rows_sp, rows_sp4, rows_sp8 (HIDER_V7M_ROWS_STACK).
 #define HIDER_V7M_ROWS \
     "72:\n\t"                                /* row */ \
     "sub    r11, r4, r1\n\t"                 /* rp - lp: twice the pixels */ \
@@ -80,10 +81,10 @@ namespace hider {
     "76:\n\t" \
     "subs   r6, r6, #1\n\t" \
     "bne    72b\n\t" \
-    "ldr    r6, [sp, #4]\n\t"                /* rows after the switch */ \
+    "ldr    r6, [sp, %[rows_sp4]]\n\t"      /* rows after the switch */ \
     "cmp    r6, #0\n\t" \
     "blt    78f\n\t"                         /* no switch in this call */ \
-    "ldr    r12, [sp]\n\t"                   /* the middle row */ \
+    "ldr    r12, [sp, %[rows_sp]]\n\t"      /* the middle row */ \
     "ldrb   r9, [r0, %[n_left]]\n\t" \
     "cmp    r9, #0\n\t" \
     "beq    77f\n\t" \
@@ -111,7 +112,7 @@ namespace hider {
     "stm    r0, {r9, r11, r12}\n"            /* ra rm rstep */ \
     "79:\n\t" \
     "mov    r9, #-1\n\t" \
-    "str    r9, [sp, #4]\n\t"                /* switched */ \
+    "str    r9, [sp, %[rows_sp4]]\n\t"      /* switched */ \
     "cmp    r6, #0\n\t" \
     "bne    72b\n\t" \
     "b      78f\n" \
@@ -147,11 +148,15 @@ namespace hider {
     "bne    100b\n\t"                        \
     "b      74b\n"                            \
     "78:\n\t" \
-    "ldr    r12, [sp, #8]\n\t"               /* the depth row after the last */ \
+    "ldr    r12, [sp, %[rows_sp8]]\n\t"     /* the depth row after the last */ \
     "sub    r1, r1, r12\n\t"                 /* back to offsets in that row */ \
     "sub    r4, r4, r12\n\t" \
     "sub    r0, r0, %[ra]\n\t" \
     "stm    r0, {r1-r5}\n\t"
+
+/// HIDER_V7M_ROWS_STACK(at): where HIDER_V7M_ROWS finds its three stack words (the middle row's depth
+/// pointer, the rows after the switch, the depth row after the last): at sp + at, + 4, + 8.
+#define HIDER_V7M_ROWS_STACK(at) [rows_sp] "i"(at), [rows_sp4] "i"((at) + 4), [rows_sp8] "i"((at) + 8)
 
 /// HIDER_V7M_ROWS's operands relative to ra (its callers give [ra] too).
 #define HIDER_V7M_ROWS_OPERANDS \
@@ -215,7 +220,7 @@ HIDER_NAKED inline uint16_t* run_kernel_triangle_v7m(KernelTriangle*, uint16_t*,
         : [row] "i"(offsetof(KernelTriangle, row)), [mid] "i"(offsetof(KernelTriangle, mid)),
           [end] "i"(offsetof(KernelTriangle, end)), [dzdx] "i"(offsetof(RowKernel, dzdx)),
           [ra] "i"(offsetof(RowKernel, ra)),
-          HIDER_V7M_ROWS_OPERANDS);
+          HIDER_V7M_ROWS_OPERANDS, HIDER_V7M_ROWS_STACK(0));
 }
 #endif
 
