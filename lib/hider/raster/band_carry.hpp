@@ -93,7 +93,11 @@ private:
         band_.y1 = y1;
         band_bb_.y_first = y0 * kSubpixel + band_bb_.y_origin;
         band_bb_.y_last = (y1 - 1) * kSubpixel + band_bb_.y_origin;
-        clear_band(background);
+        // Nothing listed and nothing carried: nothing draws into this band. Its memory needs no clear when
+        // the band before it was such a band too (done() leaves a band as it was).
+        const bool empty = head_[b] == kNoTriangle && cs_.cur == cs_.cur_end;
+        if (!clean_) clear_band(background);
+        clean_ = empty;
         kband_.row_from = y0;
         bt_.row_end = y1;
         count_from_ = y0 == 0 ? INT32_MIN : y0;
@@ -102,7 +106,7 @@ private:
         const uint8_t* const band_cur = cs_.cur;
         uint8_t* const band_nxt = cs_.nxt;
 #if defined(HIDER_ARMV7M)
-        if (use_asm_) {  // the band in assembly but for the listed triangles it hands back
+        if (use_asm_ && !empty) {  // the band in assembly but for the listed triangles it hands back
             loop_.y0 = y0;
             loop_.y1 = y1;
             kband_.depth_origin = reinterpret_cast<uintptr_t>(band_.depth) -
@@ -127,7 +131,7 @@ private:
             cs_.cur = loop_.cur;
         } else
 #endif
-        {
+        if (!empty) {
             uint32_t pending = pending_carried(cs_);
             for (uint32_t t = head_[b];;) {
                 if (pending < t) pending = resume(t);  // the carried triangles before t, in mesh order
@@ -299,6 +303,7 @@ private:
     int32_t count_from_ = 0;  // a set-up counts as drawn in this band from this top row on (INT32_MIN: band 0)
     bool continues_ = false;
     bool packed_ = false;  // clear_band(): rows packed and both buffers word-aligned
+    bool clean_ = false;   // the band memory holds only the background (a band with nothing to draw)
 #if defined(HIDER_ARMV7M)
     bool use_asm_ = false;
     BandLoopArm loop_{};
