@@ -73,8 +73,9 @@ static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(Ker
 /// slot, a generic set-up: with kGenericHandBack set), the carried ones before it resumed. Every listed
 /// triangle has a non-zero area and is not culled (bin_triangles()). Registers: r4 the listed triangle,
 /// r5 d, r6 the next carried triangle (0xFFFF: none), r7 the vertices, r8 the triangles, r9 d->next (the
-/// listed triangle's Tri until its colour), r10 the area, r11 the slot's record; the slot words (cur, nxt, free_top, free_base, the record size and
-/// pool) in the stack's copy of d's first twelve words. The loop comes back to its head through d->head:
+/// listed triangle's Tri until its colour), r10 the area, r11 the slot's record; the slot words (cur,
+/// nxt, free_top, free_base, the record size and pool) in the stack's copy of d's first twelve words
+/// (kBandLoopFrame: the copy, the row loop's words, the stride, d). The loop comes back to its head through d->head:
 /// without the clip test when d->projected. A run of resumes keeps its state in that copy (the listed
 /// triangle as the limit, cur, nxt and free_top stored with one stm per record, each record's slot pushed
 /// onto nxt or free_top before its rows), reloads it with one ldm after each record and draws each
