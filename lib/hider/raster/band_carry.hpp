@@ -93,8 +93,8 @@ private:
         band_.y1 = y1;
         band_bb_.y_first = y0 * kSubpixel + band_bb_.y_origin;
         band_bb_.y_last = (y1 - 1) * kSubpixel + band_bb_.y_origin;
-        // Nothing listed and nothing carried: nothing draws into this band. Its memory needs no clear when
-        // the band before it was such a band too (done() leaves a band as it was).
+        // Nothing listed and nothing carried: nothing draws into this band, and the band after it finds the
+        // background this one's clear left (done() leaves a band as it was): it skips its clear.
         const bool empty = head_[b] == kNoTriangle && cs_.cur == cs_.cur_end;
         if (!clean_) clear_band(background);
         clean_ = empty;

@@ -19,7 +19,7 @@ struct BandLoopArm {
     uint8_t* nxt;                     ///< 4, in and out: the next band's slots (r1)
     uint8_t* free_top;                ///< 8, in and out (r2)
     const uint8_t* free_base;         ///< 12: the free-slot stack's bottom (r3)
-    uint32_t limit;                   ///< 16: set by draw_band_v7m(): where a run of resumes stops (r4)
+    uint32_t limit;                   ///< 16: where a run of resumes stops (r4; set in the stack's copy only)
     int32_t y0;                       ///< 20: the band's first row (r5)
     const uint8_t* cur_end;           ///< 24 (r6)
     intptr_t color_less_2;            ///< 28: target.color_offset - 2 (the row loop's post-increment) (r7)
@@ -59,38 +59,35 @@ static_assert(sizeof(void*) != 4 ||
                    offsetof(BandLoopArm, drawn) == 100 && offsetof(BandLoopArm, projected) == 104 &&
                    offsetof(BandLoopArm, head) == 108),
               "band loop layout: every offset the assembly uses (the first twelve words in register order)");
-static_assert(kBandLoopRows == 48 && kBandLoopStride == 60 && kBandLoopD == 64 && kBandLoopFrame == 68,
-              "draw_band_v7m()'s frame: the offsets its assembly uses");
 /// draw_band_v7m() hands a listed triangle back with this bit set when its set-up said generic.
 constexpr uint32_t kGenericHandBack = 0x10000;
 static_assert(sizeof(void*) != 4 || offsetof(KernelSetupIo, out) == offsetof(KernelSetupIo, area) + sizeof(int32_t), "io area and out: one strd");
 }  // namespace detail
 
 #if defined(HIDER_ARMV7M)
-/// Draws the band from listed triangle t on (following d->next), resuming every carried set-up from
-/// d->cur whose triangle comes before the next listed one; returns kNoTriangle when the list and the
-/// carried set-ups are done, else a listed triangle it hands back (a vertex outside a clip plane, no free
-/// slot, a generic set-up: with kGenericHandBack set), the carried ones before it resumed. Every listed
-/// triangle has a non-zero area and is not culled (bin_triangles()). Registers: r4 the listed triangle,
-/// r5 d, r6 the next carried triangle (0xFFFF: none), r7 the vertices, r8 the triangles, r9 d->next (the
-/// listed triangle's Tri until its colour), r10 the area, r11 the slot's record; the slot words (cur,
-/// nxt, free_top, free_base, the record size and pool) in the stack's copy of d's first twelve words
-/// (kBandLoopFrame: the copy, the row loop's words, the stride, d). The loop comes back to its head through d->head:
-/// without the clip test when d->projected. A run of resumes keeps its state in that copy (the listed
-/// triangle as the limit, cur, nxt and free_top stored with one stm per record, each record's slot pushed
-/// onto nxt or free_top before its rows), reloads it with one ldm after each record and draws each
-/// record's rows with run_kernel_triangle_v7m()'s row loop (HIDER_V7M_ROWS) inline: every one is on the
-/// band's first row, and one that continues ends on the band's last, so the depth row after it is the
-/// band's (the row loop's words set once a call). A resume leaves the record's `row` as it was: nothing
-/// reads it again in this loop.
+/// Draws the band from listed triangle t on (following d->next), resuming every carried set-up from d->cur
+/// whose triangle comes before the next listed one; returns kNoTriangle when the list and the carried set-ups
+/// are done, else a listed triangle it hands back (a vertex outside a clip plane, no free slot, a generic
+/// set-up: with kGenericHandBack set), the carried ones before it resumed. Every listed triangle has a
+/// non-zero area and is not culled (bin_triangles()). Registers: r4 the listed triangle, r5 d, r6 the next
+/// carried triangle (0xFFFF: none), r7 the vertices, r8 the triangles, r9 d->next (the listed triangle's Tri
+/// until its colour), r10 the area, r11 the slot's record; the slot words (cur, nxt, free_top, free_base, the
+/// record size and pool) in the stack's copy of d's first twelve words (kBandLoopFrame: the copy, the row
+/// loop's words, the stride, d). The loop comes back to its head through d->head: without the clip test when
+/// d->projected. A run of resumes keeps its state in that copy (the listed triangle as the limit, cur, nxt
+/// and free_top stored with one stm per record, each record's slot pushed onto nxt or free_top before its
+/// rows), reloads it with one ldm after each record and draws each record's rows with
+/// run_kernel_triangle_v7m()'s row loop (HIDER_V7M_ROWS) inline: every one is on the band's first row, and
+/// one that continues ends on the band's last, so the depth row after it is the band's (the row loop's words
+/// set once a call). A resume leaves the record's `row` as it was: nothing reads it again in this loop.
 HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
     __asm__ volatile(
         ".syntax unified\n\t"
         "push   {r4-r11, lr}\n\t"
-        "sub    sp, #68\n\t"
+        "sub    sp, %[frame]\n\t"
         "mov    r4, r0\n\t"
         "mov    r5, r1\n\t"
-        "str    r5, [sp, #64]\n\t"
+        "str    r5, [sp, %[d_sp]]\n\t"
         "ldm    r5, {r0-r3, r6-r12, lr}\n\t"    // d's first twelve words, onto the stack
         "stm    sp, {r0-r3, r6-r12, lr}\n\t"    // (r7 y0, r8 cur_end, r10 record size, r11 pool, r12 y1)
         "ldr    r3, [r5, #48]\n\t"
@@ -98,18 +95,18 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "mla    r12, r12, r3, lr\n\t"           // the depth row after its last
         "mov    r6, #-1\n\t"                    // no switch pending
         "strd   r6, r12, [sp, %[rows_sp4]]\n\t"
-        "str    r3, [sp, #60]\n\t"
+        "str    r3, [sp, %[stride_sp]]\n\t"
         "movw   r6, #0xFFFF\n\t"
         "cmp    r0, r8\n\t"                     // cur, cur_end
         "beq    1f\n\t"                         // nothing carried
         "ldrb   r0, [r0]\n\t"
         "mla    r0, r0, r10, r11\n\t"
-        "ldrh   r6, [r0, %[tri]]\n"              // the next carried triangle
+        "ldrh   r6, [r0, %[tri]]\n"             // the next carried triangle
         "1:\n\t"
         "ldr    r8, [r5, #52]\n\t"
         "ldr    r7, [r5, #56]\n\t"
         "ldr    r9, [r5, #60]\n\t"
-        "ldr    r0, [r5, #104]\n\t"     // the loop head: with the clip test unless every vertex
+        "ldr    r0, [r5, #104]\n\t"             // the loop head: with the clip test unless every vertex
         "cbnz   r0, 25f\n\t"                    // is projected (a Thumb address: the loop comes back
         "movw   r0, #:lower16:(21f + 1)\n\t"    // through it with a load into pc)
         "movt   r0, #:upper16:(21f + 1)\n\t"
@@ -139,7 +136,7 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "cbz    r3, 91f\n\t"
         "b      4f\n"
         "91:\n\t"
-        "b      90f\n"                           // within the reach of cbz
+        "b      90f\n"                          // within the reach of cbz
         "24:\n\t"                               // every vertex projected: no clip test
         "cmp    r4, r6\n\t"
         "bhs    50f\n\t"
@@ -165,18 +162,18 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "sxth   r11, r11\n\t"
         "sub    r11, r11, lr\n\t"               // cx - ax
         "mls    r10, r11, r12, r10\n\t"         // signed_area(a, b, c)
-        "ldrd   r3, r12, [sp, #8]\n\t" // free_top, free_base
+        "ldrd   r3, r12, [sp, #8]\n\t"          // free_top, free_base
         "cmp    r3, r12\n\t"
         "beq    90f\n\t"                        // no free slot: back to C++ (the spare)
         "ldrb   r3, [r3, #-1]\n\t"              // the slot on top
-        "ldrd   r11, r12, [sp, #32]\n\t"     // record size, pool
+        "ldrd   r11, r12, [sp, #32]\n\t"        // record size, pool
         "mla    r11, r3, r11, r12\n\t"          // its record: pool + s records
         // FaceShading::color565(), as in draw_flat_v7m: first, so that the set-up draws at once; the
         // vertices stay in r0 r1 r2, r9 (the triangle) lends itself and comes back from d.
         "ldr    r3, [r5, #68]\n\t"
         "add    r12, r9, r3\n\t"                // the triangle's normal
         HIDER_V7M_COLOR565_IN(r12, r9, r3, lr)
-        "ldrd   r9, r3, [r5, #60]\n\t"      // d->next, d->io
+        "ldrd   r9, r3, [r5, #60]\n\t"          // d->next, d->io
         "str    r12, [r11, %[color]]\n\t"       // k.color
         "strh   r4, [r11, %[tri]]\n\t"          // the mesh triangle
         "strd   r10, r11, [r3, %[io_area]]\n\t" // io->area, io->out
@@ -187,21 +184,21 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "bne    92f\n"                          // generic: back to C++, flagged
         "8:\n\t"                                // the next listed triangle
         "ldrh   r4, [r9, r4, lsl #1]\n\t"
-        "ldr    pc, [r5, #108]\n"             // the loop head
+        "ldr    pc, [r5, #108]\n"               // the loop head
         "3:\n\t"
         "ldrsh  r0, [r11, %[top]]\n\t"
-        "ldrd   r1, r2, [r5, #96]\n\t" // count_from, drawn
+        "ldrd   r1, r2, [r5, #96]\n\t"          // count_from, drawn
         "cmp    r0, r1\n\t"
         "itt    ge\n\t"
         "addge  r2, r2, #1\n\t"
-        "strge  r2, [r5, #100]\n\t"         // drawn: its first row is in this band
+        "strge  r2, [r5, #100]\n\t"             // drawn: its first row is in this band
         // A set-up without a row in the band is rare: it returns at once and the test below keeps the
         // slot free.
         "ldrsh  r0, [r11, %[row]]\n\t"
         "ldrsh  r1, [r11, %[end]]\n\t"
         "cmp    r0, r1\n\t"
         "bge    8b\n\t"                         // done in this band: the slot stays free
-        "ldrd   r2, r0, [sp, #4]\n\t"       // nxt, free_top
+        "ldrd   r2, r0, [sp, #4]\n\t"           // nxt, free_top
         "ldrb   r1, [r0, #-1]!\n\t"             // the slot leaves the free stack
         "strb   r1, [r2], #1\n\t"               // for the next band
         "strd   r2, r0, [sp, #4]\n\t"
@@ -212,7 +209,7 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "ldm    sp, {r0, r1, r2}\n\t"           // cur, nxt, free_top: back to d
         "stm    r5, {r0, r1, r2}\n\t"
         "mov    r0, r4\n\t"
-        "add    sp, #68\n\t"
+        "add    sp, %[frame]\n\t"
         "pop    {r4-r11, pc}\n"
 
         "50:\n\t"                               // resume the carried set-ups before r4
@@ -245,7 +242,7 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "bgt    62f\n\t"                        // the middle row lies past this band
         "sub    r2, r6, r1\n\t"                 // rows after the switch
         "mov    r6, r1\n\t"
-        "ldr    r3, [sp, #60]\n\t"
+        "ldr    r3, [sp, %[stride_sp]]\n\t"
         "mla    r1, r1, r3, lr\n\t"             // the middle row's depth row
         "strd   r1, r2, [sp, %[rows_sp]]\n"
         "62:\n\t"
@@ -260,13 +257,14 @@ HIDER_NAKED inline uint32_t draw_band_v7m(uint32_t, detail::BandLoopArm*) {
         "bne    61b\n\t"
         "movw   r6, #0xFFFF\n"                  // all resumed
         "66:\n\t"                               // r6 the next carried triangle, r4 the listed one
-        "ldr    r5, [sp, #64]\n\t"
+        "ldr    r5, [sp, %[d_sp]]\n\t"
         "ldr    r8, [r5, #52]\n\t"
         "ldr    r7, [r5, #56]\n\t"
         "ldr    r9, [r5, #60]\n\t"
         "ldr    pc, [r5, #108]\n"
         :
-        : [draw] "i"(kernel_draw_v7m), HIDER_V7M_ROWS_STACK(detail::kBandLoopRows),
+        : [draw] "i"(kernel_draw_v7m), HIDER_V7M_ROWS_STACK(detail::kBandLoopRows), [frame] "i"(detail::kBandLoopFrame),
+          [d_sp] "i"(detail::kBandLoopD), [stride_sp] "i"(detail::kBandLoopStride),
           [top] "i"(offsetof(KernelTriangle, top)), [row] "i"(offsetof(KernelTriangle, row)),
           [mid] "i"(offsetof(KernelTriangle, mid)), [end] "i"(offsetof(KernelTriangle, end)),
           [color] "i"(offsetof(KernelTriangle, k) + offsetof(RowKernel, color)),

@@ -110,8 +110,9 @@ FrameStats draw_binned(const View& view, const Mesh& mesh, Span<const ScreenVert
 /// Draws `mesh` band by band: for each band of `buffers.y1` rows (buffers: a view of rows [0, y1) whose
 /// memory, `buffers.stride` elements a row, is reused for every band), clears it to `background`, draws
 /// every triangle's rows in it and calls done(band), a FrameView of the band's rows; done() returns
-/// false to stop the frame, and must only read the band: a band nothing draws into (no triangle listed or
-/// carried there) after another such band may not be cleared again. `verts` as for draw_zbuffer(). Same
+/// false to stop the frame, and must only read the band: a band after one that nothing drew into (no
+/// triangle listed or carried there) may find that band's background instead of a clear of its own (a
+/// done() that converts pixels in place, a byte swap for SPI, must convert a copy). `verts` as for draw_zbuffer(). Same
 /// bytes as clear() + draw_zbuffer() on the whole frame; statistics as the whole frame's. `bs`, if
 /// given, receives this frame's carried-slot figures (it is reset, not added to). Errors: invalid_argument (unusable buffers: among them a
 /// band taller than the frame, y1 > height, which is refused rather than clamped; a mesh of more

@@ -48,7 +48,8 @@ static_assert(sizeof(void*) != 4 || (offsetof(KernelTarget, stride_bytes) == 4),
 /// short edge is the one above the middle vertex; from `mid` on, `next` (kernel form: x, g - a, a, m,
 /// step) replaces it. A left one takes its depth and depth step from the edge it replaces on the middle
 /// row, the depth plane being affine modulo 2^32 (next_edge_depth()). Rows end at `end`. The layout is
-/// the assembly's contract.
+/// the assembly's contract. (The ARMv7-M band loop's resumes leave `row` as it was, and the edges of a
+/// triangle that ends in the band as they come: nothing reads them again there.)
 struct KernelTriangle {
     RowKernel k;
     int16_t top;  ///< the triangle's first row, unclamped
