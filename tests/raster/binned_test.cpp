@@ -178,6 +178,57 @@ TEST_CASE("binned bands give exactly the whole frame on scenes that clip: throug
     CHECK(clipped > 300);  // the scenes do clip
 }
 
+TEST_CASE("binned bands after empty bands: gaps between objects, above and below them") {
+    // Two tori one above the other, with empty rows above, between and below them: a band after one into
+    // which nothing is listed or carried skips its clear (that band's clear left the background), and the
+    // first empty band after drawn rows must clear. Every band height and slot count against the frame.
+    tool::CameraArgs cam = torus_view();
+    cam.width = 40;
+    cam.height = 160;
+    const tool::Scene one = test::load_model("torus.obj", cam);
+    tool::Scene s = one;
+    s.positions.clear();
+    s.tris.clear();
+    s.normals.clear();
+    s.ids.clear();
+    for (const int32_t dy : {-1, 1}) {
+        const auto base = static_cast<uint16_t>(s.positions.size());
+        for (Vec3q16 v : one.positions) {
+            v.y = Q16::from_raw(v.y.raw() + dy * (Q16::kOne + Q16::kOne / 4));  // 1.25 world units up or down
+            s.positions.push_back(v);
+        }
+        for (Tri t : one.tris) {
+            for (uint16_t& k : t.v) k = static_cast<uint16_t>(k + base);
+            s.tris.push_back(t);
+        }
+        s.normals.insert(s.normals.end(), one.normals.begin(), one.normals.end());
+        for (uint32_t id : one.ids) s.ids.push_back(id + (dy > 0 ? static_cast<uint32_t>(one.tris.size()) : 0u));
+    }
+    // The frame's rows that draw nothing: some above, some below and a run between the tori.
+    FrameStats st;
+    const Projected p = project(s, true, Shade::headlight);
+    const auto full = whole_frame<Rgb565Format, uint16_t>(s, p, st);
+    const uint16_t bg = Rgb565Format::pack(kBackground);
+    std::vector<bool> empty_row(static_cast<size_t>(s.height));
+    for (int32_t y = 0; y < s.height; ++y)
+        empty_row[static_cast<size_t>(y)] = std::all_of(full.begin() + y * s.width, full.begin() + (y + 1) * s.width,
+                                                        [bg](uint16_t px) { return px == bg; });
+    int32_t first = 0, last = s.height - 1, gap = 0, run = 0;
+    while (first < s.height && empty_row[static_cast<size_t>(first)]) ++first;
+    while (last >= 0 && empty_row[static_cast<size_t>(last)]) --last;
+    for (int32_t y = first; y <= last; ++y) {
+        run = empty_row[static_cast<size_t>(y)] ? run + 1 : 0;
+        gap = std::max(gap, run);
+    }
+    CAPTURE(first);
+    CAPTURE(last);
+    REQUIRE(first >= 8);
+    REQUIRE(s.height - 1 - last >= 8);
+    REQUIRE(gap >= 8);  // two empty bands of up to 4 rows between the tori
+    for (const bool cull : {true, false})
+        (void)check_bands<Rgb565Format, uint16_t>("two tori", s, cull, Shade::headlight, {1, 2, 3, 4});
+}
+
 TEST_CASE("binned bands honour a band buffer's stride: rows of width + pad, the pad untouched") {
     // The RGB565 kernel path drew rows stride apart but cleared and handed done() rows width apart: a
     // frame shifted by a column per row, with status ok (found by a red-team fuzzer).
