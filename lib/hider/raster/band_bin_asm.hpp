@@ -34,6 +34,15 @@ static_assert(sizeof(Tri) == 6 && sizeof(ScreenVertex) == 8 && offsetof(ScreenVe
                   offsetof(ScreenVertex, z) == 4 && kSubpixelBits == 4,
               "the binning loop's strides and offsets, and band_scale_v()'s 2^28 = 2^32 / 16");
 
+/// BinLoopArm's offsets as operands of the binning loops: b_lift, b_vlast, b_scale, b_head, b_next,
+/// b_tris, b_verts, b_cull, b_culled, b_projected.
+#define HIDER_BIN_LOOP_OPERANDS                                                                           \
+    [b_lift] "i"(offsetof(detail::BinLoopArm, y_lift)), [b_vlast] "i"(offsetof(detail::BinLoopArm, v_last)), \
+    [b_scale] "i"(offsetof(detail::BinLoopArm, band_scale)), [b_head] "i"(offsetof(detail::BinLoopArm, head)), \
+    [b_next] "i"(offsetof(detail::BinLoopArm, next)), [b_tris] "i"(offsetof(detail::BinLoopArm, tris)),       \
+    [b_verts] "i"(offsetof(detail::BinLoopArm, verts)), [b_cull] "i"(offsetof(detail::BinLoopArm, cull_above)), \
+    [b_culled] "i"(offsetof(detail::BinLoopArm, culled)), [b_projected] "i"(offsetof(detail::BinLoopArm, projected))
+
 /// ceil(2^28 / rows): floor(v * it / 2^32) is floor(v / (16 rows)) for every v < 2^32 / (16 rows), so for
 /// every v of a frame of up to kMaxFrameSide rows (v < 2^14, rows <= 2^10): one umull gives the band of
 /// a subpixel row, without first shifting it to a pixel row.
@@ -102,13 +111,13 @@ HIDER_NAKED inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
         "subs   r4, r0, #1\n\t"
         "bmi    9f\n\t"                          // no triangle left
         "mov    r11, r1\n\t"
-        "ldrd   r5, r6, [r11, #20]\n\t"          // tris, verts
-        "ldrd   r8, r9, [r11, #28]\n\t"          // cull_above, culled
+        "ldrd   r5, r6, [r11, %[b_tris]]\n\t"    // tris, verts
+        "ldrd   r8, r9, [r11, %[b_cull]]\n\t"    // cull_above, culled
         "add    r0, r0, r0, lsl #1\n\t"
         "add    r5, r5, r0, lsl #1\n\t"          // tris + 6 (t + 1): pre-decremented
         "add    r7, r6, #2\n\t"
         "add    r10, r6, #4\n\t"
-        "ldr    r0, [r11, #36]\n\t"
+        "ldr    r0, [r11, %[b_projected]]\n\t"
         "cmp    r0, #0\n\t"
         "bne    3f\n"                            // every vertex projected: the loop without the clip test
         "1:\n\t"
@@ -122,7 +131,7 @@ HIDER_NAKED inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
         "ldr    r3, [r10, r2, lsl #3]\n\t"
         "cbnz   r3, 2f\n"
         "8:\n\t"                                 // back to C++ with t + 1
-        "str    r9, [r11, #32]\n\t"
+        "str    r9, [r11, %[b_culled]]\n\t"
         "add    r0, r4, #1\n\t"
         "pop    {r4-r11, pc}\n"
         HIDER_V7M_BIN_LINK
@@ -134,10 +143,12 @@ HIDER_NAKED inline uint32_t bin_triangles_v7m(uint32_t, detail::BinLoopArm*) {
         "ldrh   r2, [r5, #4]\n"
         HIDER_V7M_BIN_LINK
         "7:\n\t"
-        "str    r9, [r11, #32]\n"
+        "str    r9, [r11, %[b_culled]]\n"
         "9:\n\t"
         "mov    r0, #0\n\t"
-        "pop    {r4-r11, pc}\n");
+        "pop    {r4-r11, pc}\n"
+        :
+        : HIDER_BIN_LOOP_OPERANDS);
 }
 
 namespace detail {
@@ -162,7 +173,7 @@ constexpr uint32_t bin_scale(uint32_t rows) { return band_scale_v(rows); }
 /// triangle's vertices on: the area, the cull, the link into its band's list, the step to the triangle
 /// below (back to local label 1; to the caller's local label 7, defined after it, when none is left).
 /// The top vertex's y is ay + min(0, by - ay, cy - ay), from the area's differences. Uses local labels
-/// 0, 2, 4, 5 and 6.
+/// 0, 2, 4, 5 and 6, and HIDER_BIN_LOOP_OPERANDS.
 #define HIDER_V6M_BIN_LINK \
     "2:\n\t" \
     "ldr    r0, [r6, r0]\n\t"           /* x | y << 16 of each */ \
@@ -195,21 +206,21 @@ constexpr uint32_t bin_scale(uint32_t rows) { return band_scale_v(rows); }
     "adds   r0, r0, r1\n" \
     "0:\n\t"                            /* r0: the top vertex's y */ \
     "mov    r7, r10\n\t"                /* d */ \
-    "ldr    r3, [r7, #0]\n\t" \
+    "ldr    r3, [r7, %[b_lift]]\n\t" \
     "subs   r0, r0, r3\n\t"             /* v = y - y_lift */ \
-    "ldr    r3, [r7, #4]\n\t" \
+    "ldr    r3, [r7, %[b_vlast]]\n\t" \
     "cmp    r0, r3\n\t" \
     "bhi    4f\n"                        /* v < 0 or v > v_last: clamped */ \
     "0:\n\t" \
     "lsrs   r0, r0, #4\n\t"             /* its first row */ \
-    "ldr    r3, [r7, #8]\n\t" \
+    "ldr    r3, [r7, %[b_scale]]\n\t" \
     "muls   r0, r3, r0\n\t" \
     "lsrs   r0, r0, #20\n\t"            /* its band */ \
     "lsls   r0, r0, #1\n\t" \
-    "ldr    r3, [r7, #12]\n\t"          /* head */ \
+    "ldr    r3, [r7, %[b_head]]\n\t"    /* head */ \
     "ldrh   r2, [r3, r0]\n\t" \
     "strh   r4, [r3, r0]\n\t"           /* head[band] = t */ \
-    "ldr    r3, [r7, #16]\n\t"          /* next */ \
+    "ldr    r3, [r7, %[b_next]]\n\t"    /* next */ \
     "lsls   r1, r4, #1\n\t" \
     "strh   r2, [r3, r1]\n"              /* next[t] = the band's head before */ \
     "6:\n\t" \
@@ -239,18 +250,18 @@ HIDER_NAKED inline uint32_t bin_triangles_v6m(uint32_t, detail::BinLoopArm*) {
         "b      9f\n"                             // no triangle left
         "11:\n\t"
         "mov    r10, r1\n\t"
-        "ldr    r5, [r1, #20]\n\t"               // tris
-        "ldr    r6, [r1, #24]\n\t"               // verts
-        "ldr    r2, [r1, #28]\n\t"
+        "ldr    r5, [r1, %[b_tris]]\n\t"         // tris
+        "ldr    r6, [r1, %[b_verts]]\n\t"        // verts
+        "ldr    r2, [r1, %[b_cull]]\n\t"
         "mov    r8, r2\n\t"                      // cull_above
-        "ldr    r2, [r1, #32]\n\t"
+        "ldr    r2, [r1, %[b_culled]]\n\t"
         "mov    r9, r2\n\t"                      // culled
         "movs   r2, #1\n\t"
         "mov    r11, r2\n\t"
         "movs   r2, #6\n\t"
         "muls   r2, r0, r2\n\t"
         "adds   r5, r5, r2\n\t"                  // tris + 6 (t + 1): pre-decremented
-        "ldr    r2, [r1, #36]\n\t"
+        "ldr    r2, [r1, %[b_projected]]\n\t"
         "cmp    r2, #0\n\t"
         "bne    3f\n"                             // every vertex projected: the loop without the clip test
         "1:\n\t"
@@ -270,7 +281,7 @@ HIDER_NAKED inline uint32_t bin_triangles_v6m(uint32_t, detail::BinLoopArm*) {
         "8:\n\t"                                 // back to C++ with t + 1
         "mov    r1, r10\n\t"
         "mov    r2, r9\n\t"
-        "str    r2, [r1, #32]\n\t"
+        "str    r2, [r1, %[b_culled]]\n\t"
         "adds   r0, r4, #1\n\t"
         "b      10f\n"
         HIDER_V6M_BIN_LINK
@@ -282,11 +293,13 @@ HIDER_NAKED inline uint32_t bin_triangles_v6m(uint32_t, detail::BinLoopArm*) {
         "7:\n\t"
         "mov    r1, r10\n\t"
         "mov    r2, r9\n\t"
-        "str    r2, [r1, #32]\n"
+        "str    r2, [r1, %[b_culled]]\n"
         "9:\n\t"
         "movs   r0, #0\n"
         "10:\n\t"
-        HIDER_V6M_RESTORE_ALL);
+        HIDER_V6M_RESTORE_ALL
+        :
+        : HIDER_BIN_LOOP_OPERANDS);
 }
 
 namespace detail {
