@@ -103,10 +103,12 @@ __attribute__((always_inline)) inline ScreenXY screen_xy(const ScreenVertex& v) 
 #endif
 }
 
-/// TriangleRaster::signed_area() through screen_xy().
+/// TriangleRaster::signed_area() of three screen_xy() points, or of three vertices through screen_xy().
+__attribute__((always_inline)) inline int32_t screen_area(const ScreenXY& a, const ScreenXY& b, const ScreenXY& c) {
+    return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+}
 __attribute__((always_inline)) inline int32_t screen_area(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-    const ScreenXY pa = screen_xy(a), pb = screen_xy(b), pc = screen_xy(c);
-    return (pb.x - pa.x) * (pc.y - pa.y) - (pc.x - pa.x) * (pb.y - pa.y);
+    return screen_area(screen_xy(a), screen_xy(b), screen_xy(c));
 }
 
 /// Links every drawable triangle of the mesh (non-zero area, not culled) into the list of the band
@@ -155,15 +157,15 @@ __attribute__((noinline)) uint32_t bin_triangles(const View& view, const Mesh& m
         const ScreenVertex& c = vp[tri->v[2]];
         int32_t first;
         if (a.z != 0 && b.z != 0 && c.z != 0) {
-            const int32_t area = screen_area(a, b, c);
+            const ScreenXY pa = screen_xy(a), pb = screen_xy(b), pc = screen_xy(c);
+            const int32_t area = screen_area(pa, pb, pc);
             if (area == 0) continue;
             if (area > cull_above) {
                 ++culled;
                 continue;
             }
             // A box without a pixel centre of the frame is binned too: its set-up finds nothing to draw.
-            first = clamp((min(screen_xy(a).y, min(screen_xy(b).y, screen_xy(c).y)) - y_lift) >> kSubpixelBits, int32_t{0},
-                          last);
+            first = clamp((min(pa.y, min(pb.y, pc.y)) - y_lift) >> kSubpixelBits, int32_t{0}, last);
         } else {
             first = first_row_clipped(clipped, i);
             if (first > last) continue;
